@@ -1,0 +1,32 @@
+// The elastic-coordinate interface of DESIGN.md §2. A flexible body places a material point at
+// r = R + A(θ)(ū0 + S(x) Φ η); an ElasticCoordinates type supplies everything the floating-frame
+// body needs about η: its size, the inertia invariants projected on Φ, the stiffness ΦᵀKΦ, the
+// geometric stiffness ΦᵀK_gΦ per unit axial force, the shape rows of a point, and the map back
+// to nodal DOFs. nodal/ (Φ = I, sparse) and modal/ (dense, small) implement it; the body is
+// written once as a template over this concept.
+#pragma once
+
+#include <Eigen/Dense>
+#include <concepts>
+
+namespace ffrf::fem {
+
+template <class C>
+concept ElasticCoordinates = requires(const C& coords, double x, const Eigen::VectorXd& eta) {
+  { coords.size() } -> std::convertible_to<Eigen::Index>;
+  { coords.mass() } -> std::convertible_to<double>;
+  { coords.first_moment() } -> std::convertible_to<Eigen::Vector2d>;
+  { coords.second_moment() } -> std::convertible_to<double>;
+  coords.shape_integral();   // 2×n  ∫ρ S Φ
+  coords.u0_dot_shape();     // 1×n  ∫ρ ū0ᵀ S Φ
+  coords.u0_cross_shape();   // 1×n  ∫ρ ū0ᵀ Ĩ S Φ
+  coords.mass_ff();          // n×n  Φᵀ M_ff Φ
+  coords.skew_ff();          // n×n  Φᵀ (∫ρ SᵀĨS) Φ
+  coords.stiffness();        // n×n  Φᵀ K Φ
+  coords.unit_geometric_stiffness();  // n×n  Φᵀ K_g(P = 1 N) Φ
+  coords.displacement_rows(x);        // 2×n  S(x) Φ
+  coords.rotation_row(x);             // 1×n  R(x) Φ
+  { coords.to_nodal(eta) } -> std::convertible_to<Eigen::VectorXd>;  // q_n = Φ η
+};
+
+}  // namespace ffrf::fem
