@@ -3,7 +3,9 @@
 // solver (production), Spectra's shift-invert solver (cross-check) or a dense Eigen solver
 // (reference for small problems). Eigen solvers see only matrices, never the beam.
 // All solvers return the nev eigenvalues nearest the shift σ, ascending, with eigenvectors
-// M-normalized (φᵀMφ = 1) and their sign fixed so that the entry of largest magnitude is > 0.
+// M-normalized (φᵀMφ = 1) and their sign fixed so that the entry of largest magnitude is > 0
+// (of entries equal in magnitude to a relative 1e-6, the first one, so that ± pairs of equal
+// size in symmetric modes give the same sign whichever solver ran).
 #pragma once
 
 #include <Eigen/Dense>
@@ -55,6 +57,10 @@ EigenPairs solve_generalized(const SparseMatrix& stiffness, const SparseMatrix& 
 // M-normalizes, fixes signs and sorts pairs ascending.
 int resolve_ncv(const EigenRequest& request, Eigen::Index n);
 void validate_request(const EigenRequest& request, Eigen::Index n);
+// Checks that K and M are square, of the same size and non-empty (throws EigenSolverError).
+void validate_matrices(const SparseMatrix& stiffness, const SparseMatrix& mass);
+// The message shared by the shift-invert solvers when K − σM cannot be factored.
+std::string singular_shift_message(double sigma);
 void normalize_and_sort(const SparseMatrix& mass, Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors);
 
 }  // namespace ffrf::modal
