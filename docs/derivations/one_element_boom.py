@@ -16,6 +16,7 @@ Derived from the definitions only:
     Q_v = -Mdot qdot + dT/dq                        with  M qddot = ... + Q_v  (paper eq. 20.c, 21)
     Q_g = int rho L^T (0, -g) dx   (virtual work)   and  -dV/dq, V = g int rho y dx
     Q_F = L(xi = 1)^T F            (point force F, global frame, at the tip; paper eq. 13, 38)
+and re-assembled from the general FFRF blocks of docs/theory.md section 2 (inertia invariants),
 then compared term by term with the printed eqs. 28.c-28.d, 38-39 and 42 (the misprints found
 are listed in docs/theory.md section 4 and printed below), and cross-checked numerically:
     (a) M against T by Gauss quadrature (velocities by complex-step differentiation of r), and
@@ -86,6 +87,32 @@ Qg = integ(L.T * sp.Matrix([0, -g])).applyfunc(sp.simplify)       # virtual work
 V = g * integ(r[1])
 assert sp.simplify(Qg + sp.Matrix([V.diff(qk) for qk in q])) == sp.zeros(6, 1)
 assert sp.simplify(Qg + g * M[1, :].T) == sp.zeros(6, 1)           # Q_g = -g * (row y of M)
+
+# the general FFRF blocks of docs/theory.md section 2, written with the inertia invariants
+# (Phi = I): they must reproduce M and Q_v derived above from T directly
+m_ = integ(sp.Integer(1)); s0_ = integ(u0); J0_ = integ((u0.T*u0)[0])
+Sb_ = integ(Sxi); d_ = integ(u0.T*Sxi); c_ = integ(u0.T*It*Sxi)
+Mff_ = integ(Sxi.T*Sxi); Sk_ = integ(Sxi.T*It*Sxi)
+qfd = sp.Matrix([q1d, q2d, q3d])
+Minv = sp.zeros(6, 6)
+Minv[0:2, 0:2] = m_*sp.eye(2)
+Minv[0:2, 2] = A*It*(s0_ + Sb_*qf)
+Minv[0:2, 3:6] = A*Sb_
+Minv[2, 2] = J0_ + 2*(d_*qf)[0] + (qf.T*Mff_*qf)[0]
+Minv[2, 3:6] = -(c_ + qf.T*Sk_)
+Minv[3:6, 3:6] = Mff_
+for i in range(6):
+    for j in range(i):
+        Minv[i, j] = Minv[j, i]
+assert sp.simplify(Minv - M) == sp.zeros(6, 6)
+Qinv = sp.zeros(6, 1)
+Qinv[0:2, 0] = thd**2*A*(s0_ + Sb_*qf) - 2*thd*A*It*Sb_*qfd
+Qinv[2, 0] = -2*thd*((d_ + qf.T*Mff_)*qfd)[0]
+Qinv[3:6, 0] = thd**2*(d_.T + Mff_*qf) - 2*thd*Sk_*qfd
+assert sp.simplify(Qinv - Qv) == sp.zeros(6, 1)
+assert sp.simplify(Qg - sp.Matrix([0, -m_*g, -g*(A*It*(s0_ + Sb_*qf))[1], *(-g*(A*Sb_)[1, :])])) \
+    == sp.zeros(6, 1)
+print("general FFRF blocks in terms of the invariants (theory.md section 2): reproduce M, Q_v, Q_g")
 
 Ltip = L.subs(xi, 1)
 QF = (Ltip.T * sp.Matrix([Fx, Fy])).applyfunc(sp.simplify)
