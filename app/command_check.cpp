@@ -1,0 +1,53 @@
+// `ffrf check SCENE`: validates a scene file against the scene schema and prints every problem
+// as `FILE:LINE: key = value: message (valid range ...)` (exit 2), or a one-line summary (exit 0).
+#include <fmt/format.h>
+
+#include <memory>
+#include <string>
+
+#include "app/commands.hpp"
+#include "cases/scene_loader.hpp"
+
+namespace ffrf::app {
+namespace {
+
+std::string summary(const cases::Scene& scene) {
+  const fem::BeamMesh& mesh = scene.boom.mesh;
+  std::string text = fmt::format("boom {:g} m, {:g} t, {} elements", mesh.length, mesh.total_mass() / 1e3,
+                                 mesh.element_count);
+  if (!scene.is_crane()) return fmt::format("single beam: {}, {}", text, fem::to_string(scene.boom.boundary));
+  text = fmt::format("crane: hull {:g} t, {} at {:g} deg, cargo {:g} t, wire {:g} m", scene.hull->mass / 1e3, text,
+                     scene.boom.mount->angle * 180.0 / 3.14159265358979323846, scene.cargo->mass / 1e3,
+                     scene.wire->unstretched_length);
+  if (scene.wave) {
+    text += fmt::format(", wave {:g} m / {:g} s {}", scene.wave->height, scene.wave->period,
+                        scene.wave->direction == cases::WaveDirection::following ? "following" : "head");
+  } else {
+    text += ", calm water";
+  }
+  return text;
+}
+
+}  // namespace
+
+Command add_check_command(CLI::App& parent) {
+  auto scene_path = std::make_shared<std::string>();
+  CLI::App* sub = parent.add_subcommand("check", "Validate a scene file and list every problem");
+  sub->add_option("scene", *scene_path, "Scene file (TOML)")->required();
+  return {sub, [scene_path] {
+            try {
+              const cases::Scene scene = cases::load_scene(*scene_path);
+              fmt::print("{}: OK ({}{})\n", *scene_path, scene.name.empty() ? "" : scene.name + ": ", summary(scene));
+              return exit_ok;
+            } catch (const cases::SceneError& error) {
+              for (const cases::SceneProblem& problem : error.problems()) {
+                fmt::print(stderr, "{}\n", cases::format_problem(problem));
+              }
+              fmt::print(stderr, "{}: {} problem{}\n", *scene_path, error.problems().size(),
+                         error.problems().size() == 1 ? "" : "s");
+              return exit_bad_input;
+            }
+          }};
+}
+
+}  // namespace ffrf::app

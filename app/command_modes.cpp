@@ -1,0 +1,133 @@
+// `ffrf modes SCENE`: natural frequencies and mode shapes of the scene's boom, next to the
+// analytic Euler–Bernoulli values. Text table, --json on stdout, --out DIR with CSV, JSON and
+// gnuplot charts (written completely or not at all).
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/commands.hpp"
+#include "app/gnuplot.hpp"
+#include "app/modes_analysis.hpp"
+#include "app/modes_report.hpp"
+#include "app/output_directory.hpp"
+#include "cases/scene_loader.hpp"
+
+namespace ffrf::app {
+namespace {
+
+struct ModesOptions {
+  std::string scene;
+  std::optional<int> elements;
+  std::optional<int> modes;
+  std::string boundary;
+  std::string solver = "arpack";
+  bool json = false;
+  std::string out;
+};
+
+constexpr int default_elastic_modes = 6;
+
+void progress(const std::string& message) {
+  if (::isatty(STDERR_FILENO) != 0) fmt::print(stderr, "\r\033[K{}", message);
+}
+void progress_done() {
+  if (::isatty(STDERR_FILENO) != 0) fmt::print(stderr, "\r\033[K");
+}
+
+int bad_input(const std::string& message) {
+  fmt::print(stderr, "ffrf modes: error: {}\n", message);
+  return exit_bad_input;
+}
+
+void write_outputs(StagedDirectory& out, const ModesResult& result, const ModesContext& context) {
+  const std::string terminal = png_terminal();
+  out.write("modes.csv", mode_shapes_csv(result));
+  out.write("frequencies.csv", frequencies_csv(result));
+  const auto convergence = frequency_convergence(result.mesh, result.boundary, result.solver, [](int elements) {
+    progress(fmt::format("convergence study: N = {} ...", elements));
+  });
+  progress_done();
+  out.write("frequency_convergence.csv", convergence_csv(convergence));
+  out.write("mode_shapes.gp", mode_shapes_script(result, terminal));
+  out.write("frequency_convergence.gp", convergence_script(result, terminal));
+  run_gnuplot(out.staging(), "mode_shapes.gp");
+  run_gnuplot(out.staging(), "frequency_convergence.gp");
+  out.write("summary.json", modes_json(result, context, convergence));
+  out.commit();
+}
+
+int run_modes(const ModesOptions& options) {
+  cases::Scene scene;
+  try {
+    scene = cases::load_scene(options.scene);
+  } catch (const cases::SceneError& error) {
+    for (const auto& problem : error.problems()) fmt::print(stderr, "{}\n", cases::format_problem(problem));
+    return exit_bad_input;
+  }
+  fem::BeamMesh mesh = scene.boom.mesh;
+  if (options.elements) {
+    if (*options.elements < 1) {
+      return bad_input(fmt::format("--elements {} is not a valid element count (valid range [1, inf))", *options.elements));
+    }
+    mesh.element_count = *options.elements;
+  }
+  fem::Boundary boundary = scene.boom.boundary;
+  if (!options.boundary.empty()) {
+    const auto parsed = fem::parse_boundary(options.boundary);
+    if (!parsed) {
+      return bad_input(fmt::format("--boundary {}: unknown boundary condition; choose one of {}", options.boundary,
+                                   fem::boundary_choices()));
+    }
+    boundary = *parsed;
+  }
+  const auto solver = modal::parse_eigen_solver(options.solver);
+  if (!solver) {
+    return bad_input(fmt::format("--solver {}: unknown solver; choose one of {}", options.solver,
+                                 modal::eigen_solver_choices()));
+  }
+  const int dof = free_dof_count(mesh, boundary);
+  const int count = options.modes.value_or(std::min(dof - 1, default_elastic_modes + fem::rigid_mode_count(boundary)));
+  if (count < 1) return bad_input(fmt::format("--modes {} is not a valid mode count (valid range [1, {}])", count, dof - 1));
+  if (count >= dof) {
+    return bad_input(fmt::format("--modes {} exceeds the {} modes available from the {} free DOFs of N = {} {} "
+                                 "(valid range [1, {}])",
+                                 count, dof - 1, dof, mesh.element_count, fem::to_string(boundary), dof - 1));
+  }
+
+  // The input is valid: from here on, DIR's old completeness marker no longer describes DIR.
+  std::optional<StagedDirectory> out;
+  if (!options.out.empty()) out.emplace(options.out, "summary.json");
+
+  progress(fmt::format("solving {} modes, N = {} ({} DOFs) ...", count, mesh.element_count, dof));
+  const ModesResult result = solve_modes(mesh, boundary, *solver, count);
+  progress_done();
+  const ModesContext context{options.scene, scene.name};
+  if (out) write_outputs(*out, result, context);
+  fmt::print("{}", options.json ? modes_json(result, context, {}) : modes_table(result, context));
+  if (!options.out.empty() && !options.json) fmt::print("\nwrote {}\n", options.out);
+  return exit_ok;
+}
+
+}  // namespace
+
+Command add_modes_command(CLI::App& parent) {
+  auto options = std::make_shared<ModesOptions>();
+  CLI::App* sub = parent.add_subcommand("modes", "Natural frequencies and mode shapes of the boom vs Euler–Bernoulli");
+  sub->add_option("scene", options->scene, "Scene file (TOML)")->required();
+  sub->add_option("--elements,-N", options->elements, "Number of beam elements (default: boom.elements of the scene)");
+  sub->add_option("--modes,-k", options->modes, "Number of modes (default: 6, plus the rigid modes for free-free)");
+  sub->add_option("--boundary", options->boundary,
+                  "Boundary condition " + fem::boundary_choices() + " (default: boom.boundary of the scene)");
+  sub->add_option("--solver", options->solver, "Eigen solver " + modal::eigen_solver_choices())
+      ->capture_default_str();
+  sub->add_flag("--json", options->json, "Print the results as JSON on stdout");
+  sub->add_option("--out", options->out,
+                  "Write modes.csv, frequencies.csv, frequency_convergence.csv, summary.json and PNG charts "
+                  "(with their gnuplot scripts) into this directory");
+  return {sub, [options] { return run_modes(*options); }};
+}
+
+}  // namespace ffrf::app

@@ -1,0 +1,24 @@
+// The subcommands of the `ffrf` program. Each registers its options on the parent CLI11 app and
+// returns the function that runs it after parsing; the function returns the process exit code:
+// 0 success, 1 a computation or output failed, 2 bad input (scene file or command line).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace ffrf::app {
+
+inline constexpr int exit_ok = 0;
+inline constexpr int exit_failure = 1;
+inline constexpr int exit_bad_input = 2;
+
+struct Command {
+  CLI::App* subcommand;
+  std::function<int()> run;
+};
+
+Command add_check_command(CLI::App& parent);            // command_check.cpp
+Command add_modes_command(CLI::App& parent);            // command_modes.cpp
+Command add_scene_reference_command(CLI::App& parent);  // command_scene_reference.cpp
+
+}  // namespace ffrf::app
