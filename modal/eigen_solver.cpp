@@ -113,7 +113,8 @@ void validate_matrices(const SparseMatrix& stiffness, const SparseMatrix& mass) 
 std::string singular_shift_message(double sigma) {
   std::ostringstream why;
   why << "K − σM is singular at σ = " << sigma
-      << ": choose a shift that is not an eigenvalue (a negative shift for free–free beams)";
+      << ": choose a shift that is not an eigenvalue (a negative shift for free–free beams); on a very "
+         "fine mesh a small |σ| is rounded away next to K's large entries, so try a larger |σ| or fewer elements";
   return why.str();
 }
 
