@@ -11,6 +11,7 @@
 #include <map>
 #include <string>
 #include <tuple>
+#include <unistd.h>
 #include <vector>
 
 #include "fem/assembly.hpp"
@@ -51,6 +52,9 @@ void solve_beam_modes(benchmark::State& state, EigenSolverKind kind, int element
 // reporter prints.
 class TableCollector : public benchmark::ConsoleReporter {
  public:
+  // Colours only on a terminal, so that a redirected log stays plain text.
+  TableCollector() : ConsoleReporter(isatty(STDOUT_FILENO) ? OO_ColorTabular : OO_Tabular) {}
+
   using Key = std::tuple<std::string, int, double>;
   std::map<Key, double> milliseconds;
 
