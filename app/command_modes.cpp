@@ -45,6 +45,7 @@ int bad_input(const std::string& message) {
 void write_outputs(StagedDirectory& out, const ModesResult& result, const ModesContext& context) {
   const std::string terminal = png_terminal();
   out.write("modes.csv", mode_shapes_csv(result));
+  out.write("mode_shapes_sampled.csv", sampled_shapes_csv(result));
   out.write("frequencies.csv", frequencies_csv(result));
   const auto convergence = frequency_convergence(result.mesh, result.boundary, result.solver, [](int elements) {
     progress(fmt::format("convergence study: N = {} ...", elements));
@@ -125,7 +126,8 @@ Command add_modes_command(CLI::App& parent) {
       ->capture_default_str();
   sub->add_flag("--json", options->json, "Print the results as JSON on stdout");
   sub->add_option("--out", options->out,
-                  "Write modes.csv, frequencies.csv, frequency_convergence.csv, summary.json and PNG charts "
+                  "Write modes.csv, mode_shapes_sampled.csv, frequencies.csv, frequency_convergence.csv, summary.json and "
+                  "PNG charts "
                   "(with their gnuplot scripts) into this directory");
   return {sub, [options] { return run_modes(*options); }};
 }

@@ -72,9 +72,9 @@ std::string mode_shapes_script(const ModesResult& r, const std::string& terminal
   std::vector<std::string> curves;
   for (std::size_t j = 0; j < r.modes.size(); ++j) {
     if (r.modes[j].kind != fem::ModeKind::bending) continue;
-    // modes.csv: column 1 is x_m, then u, v, phi per mode: v of mode j+1 is column 3 j + 3.
-    curves.push_back(fmt::format("'modes.csv' skip 1 using 1:{} with linespoints pt 7 ps 0.5 title 'bending {} ({:.4g} Hz)'",
-                                 3 * j + 3, r.modes[j].order, r.modes[j].angular_frequency / (2 * 3.14159265358979323846)));
+    // mode_shapes_sampled.csv: column 1 is x_m, then v of mode j+1 in column j + 2.
+    curves.push_back(fmt::format("'mode_shapes_sampled.csv' skip 1 using 1:{} with lines lw 2 title 'bending {} ({:.4g} Hz)'",
+                                 j + 2, r.modes[j].order, r.modes[j].angular_frequency / (2 * 3.14159265358979323846)));
   }
   if (curves.empty()) {
     script += "set label 'no bending modes among the computed modes' at graph 0.5, 0.5 center\n"

@@ -1,10 +1,12 @@
 // Text, JSON and CSV renderings of a ModesResult.
 #include "app/modes_report.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <numbers>
 
 #include "app/json_writer.hpp"
+#include "fem/point_shape.hpp"
 
 namespace ffrf::app {
 namespace {
@@ -120,6 +122,22 @@ std::string mode_shapes_csv(const ModesResult& r) {
     for (const Eigen::VectorXd& shape : full) {
       out += fmt::format(",{:.10e},{:.10e},{:.10e}", shape(3 * node), shape(3 * node + 1), shape(3 * node + 2));
     }
+    out += '\n';
+  }
+  return out;
+}
+
+std::string sampled_shapes_csv(const ModesResult& r) {
+  const auto count = r.pairs.eigenvectors.cols();
+  std::string out = "x_m";
+  for (Eigen::Index j = 0; j < count; ++j) out += fmt::format(",mode{}_v_per_sqrtkg", j + 1);
+  out += '\n';
+  const int intervals = std::min(8 * r.mesh.element_count, 1000);
+  for (int i = 0; i <= intervals; ++i) {
+    const double x = i == intervals ? r.mesh.length : r.mesh.length * i / intervals;
+    const Eigen::RowVectorXd v = fem::point_shape(r.mesh, r.dofs, x).displacement.row(1) * r.pairs.eigenvectors;
+    out += fmt::format("{:.10g}", x);
+    for (Eigen::Index j = 0; j < count; ++j) out += fmt::format(",{:.10e}", v(j));
     out += '\n';
   }
   return out;

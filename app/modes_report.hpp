@@ -22,6 +22,9 @@ std::string modes_json(const ModesResult& result, const ModesContext& context,
 std::string frequencies_csv(const ModesResult& result);
 // x_m, then modeJ_u_per_sqrtkg, modeJ_v_per_sqrtkg, modeJ_phi_rad_per_sqrtkg per mode, at the nodes.
 std::string mode_shapes_csv(const ModesResult& result);
+// x_m, then modeJ_v_per_sqrtkg per mode: the transverse shape v(x) between the nodes by the
+// element's Hermite shape functions (8 points per element, at most 1000 intervals); for charts.
+std::string sampled_shapes_csv(const ModesResult& result);
 std::string convergence_csv(const std::vector<ConvergencePoint>& convergence);
 
 }  // namespace ffrf::app

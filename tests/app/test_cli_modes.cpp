@@ -67,7 +67,7 @@ TEST(CliModes, OutWritesCsvJsonAndPngCharts) {
   const fs::path out = dir / "modes out";
   const RunResult r = run_ffrf("modes " + source_file("cases/cantilever.toml") + " --out '" + out.string() + "'", dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* name : {"modes.csv", "frequencies.csv", "frequency_convergence.csv", "summary.json",
+  for (const char* name : {"modes.csv", "mode_shapes_sampled.csv", "frequencies.csv", "frequency_convergence.csv", "summary.json",
                            "mode_shapes.gp", "frequency_convergence.gp"}) {
     EXPECT_GT(fs::file_size(out / name), 0u) << name;
   }
