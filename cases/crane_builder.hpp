@@ -1,0 +1,52 @@
+// Turns a loaded crane scene (cases/scene.hpp) into the coupled system of coupling/: the boom's
+// nodal-space beam model, its elastic coordinates (rigid, nodal or modal), the hull's box section
+// relative to G1, added mass and radiation damping from the scene's multiples and fractions of
+// critical, the wire's damping, the wave. Documented modelling choices: docs/theory.md §7.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "cases/scene.hpp"
+#include "coupling/crane_model.hpp"
+#include "coupling/crane_system.hpp"
+#include "modal/eigen_solver.hpp"
+#include "modal/modal_coordinates.hpp"
+#include "nodal/nodal_coordinates.hpp"
+
+namespace ffrf::cases {
+
+enum class BoomKind { rigid, nodal, modal };
+std::string_view to_string(BoomKind kind);
+std::optional<BoomKind> parse_boom_kind(std::string_view text);
+std::string boom_kind_choices();  // "rigid|nodal|modal"
+
+struct BoomChoice {
+  BoomKind kind = BoomKind::nodal;
+  int elements = 16;          // N (the mesh the modes are computed on, for modal)
+  int modes = 4;              // k vibration modes (modal)
+  bool static_modes = false;  // add the tip static correction modes (modal)
+  modal::EigenSolverKind solver = modal::EigenSolverKind::arpack;
+  std::string label() const;  // "rigid", "nodal N=16", "modal k=4+static (N=16)"
+};
+
+// The beam of the boom, clamped at its root (the floating-frame reference condition).
+std::shared_ptr<const fem::BeamModel> boom_beam(const Scene& scene, int elements);
+
+// Stiffness-proportional structural damping β = 2ζ/ω1 with ω1 the analytic first clamped–free
+// bending frequency: the same for every mesh and coordinate choice, so models compare on equal terms.
+double boom_stiffness_damping(const Scene& scene);
+
+// Throws SceneError when the scene is not a crane scene or the hull cannot float the load.
+template <fem::ElasticCoordinates Coords>
+coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords);
+
+// Elastic coordinates for a choice (the rigid boom is modal coordinates with an empty basis).
+modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice);
+
+// The whole system for a choice, ready for static equilibrium and integration.
+std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice);
+
+}  // namespace ffrf::cases

@@ -1,0 +1,64 @@
+// What the solvers (KINSOL, CVODE, IDA, generalized-α) see of the crane: an abstract set of
+// equations in two coordinate sets, so the solvers need not know the elastic coordinates.
+//  * Minimal coordinates z = (hull x, y, θ | cargo x, y, θ | η): the boom frame is eliminated by
+//    the clamp at B; M_z(z) z̈ = Q_z(z, ż, t) is solved for z̈ (ODE). Without hull DOFs when the
+//    hull is held fixed.
+//  * Full coordinates q = (hull | cargo | boom R_B, θ_B, η) with the clamp as 3 constraints
+//    C(q) = 0 and Lagrange multipliers: M(q) q̈ = Q(q, q̇, t) − C_qᵀ λ (paper eqs. 17, 22, 31–34).
+#pragma once
+
+#include <Eigen/Dense>
+
+namespace ffrf::coupling {
+
+// One output sample: what a time-series row and the static report show.
+struct CraneOutputs {
+  Eigen::Vector3d hull = Eigen::Vector3d::Zero();        // G1 x [m], y [m], pitch [rad]
+  Eigen::Vector3d cargo = Eigen::Vector3d::Zero();       // G2 x [m], y [m], pitch [rad]
+  Eigen::Vector2d tip_deflection = Eigen::Vector2d::Zero();  // elastic (u, v) at A′ in the boom frame [m]
+  double wire_tension = 0.0;                             // [N]
+  double wire_length = 0.0;                              // [m]
+  Eigen::Vector3d joint_reaction = Eigen::Vector3d::Zero();  // on the boom at B: Fx, Fy [N] (global), M [N m]
+  double constraint_residual = 0.0;                      // |C(q)| (0 in minimal coordinates) [m]
+  double kinetic_energy = 0.0;                           // [J] (added mass included)
+  double gravity_energy = 0.0;                           // [J]
+  double strain_energy = 0.0;                            // [J]
+  double wire_energy = 0.0;                              // [J]
+  double spring_energy = 0.0;                            // mooring + support springs [J]
+};
+
+class CraneEquations {
+ public:
+  using ConstRef = Eigen::Ref<const Eigen::VectorXd>;
+  using Ref = Eigen::Ref<Eigen::VectorXd>;
+  virtual ~CraneEquations() = default;
+
+  // --- minimal coordinates (ODE) ---
+  virtual int minimal_size() const = 0;
+  virtual Eigen::VectorXd initial_guess() const = 0;  // rest pose before static equilibrium
+  virtual void minimal_accelerations(double t, ConstRef z, ConstRef z_dot, Ref z_ddot) = 0;
+  virtual void static_residual(ConstRef z, Ref residual) = 0;  // Q_z at rest, calm water
+  virtual Eigen::VectorXd static_residual_scale() const = 0;   // 1 / typical force per row
+  virtual Eigen::VectorXd coordinate_scale() const = 0;        // typical size of each z
+  virtual CraneOutputs minimal_outputs(double t, ConstRef z, ConstRef z_dot) = 0;
+
+  // --- full coordinates with the clamp as constraints (DAE) ---
+  virtual int full_size() const = 0;
+  static constexpr int constraint_count = 3;
+  virtual void full_from_minimal(ConstRef z, ConstRef z_dot, Ref q, Ref v) const = 0;
+  virtual void full_mass_times(ConstRef q, ConstRef a, Ref out) = 0;       // M(q) a
+  virtual void full_forces(double t, ConstRef q, ConstRef v, Ref out) = 0;  // Q(q, v, t)
+  virtual void constraint(ConstRef q, Ref c) const = 0;                     // C(q)
+  virtual void constraint_jacobian(ConstRef q, Eigen::MatrixXd& jacobian) const = 0;  // C_q (3 × n)
+  virtual void constraint_rate_terms(ConstRef q, ConstRef v, Ref gamma) const = 0;    // −(C_q v)_q v
+  virtual Eigen::MatrixXd full_mass_matrix(ConstRef q) = 0;
+  virtual CraneOutputs full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) = 0;
+
+  // Wire slack indicator ℓ − L0 [m] (root function for event location).
+  virtual double wire_stretch_minimal(ConstRef z) = 0;
+  virtual double wire_stretch_full(ConstRef q) = 0;
+  // Elastic coordinate count (0 for the rigid boom).
+  virtual int elastic_size() const = 0;
+};
+
+}  // namespace ffrf::coupling

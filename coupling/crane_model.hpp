@@ -1,0 +1,61 @@
+// The floating crane as constant data (the "model", Pinocchio style): hull G1, elastic boom on a
+// floating frame clamped to the hull at B, cargo G2 on a wire rope from the boom tip A′ to the hook
+// C, and the environment. Built once from a scene (cases/crane_builder.hpp); read-only in a run.
+// Planar, SI units, y up, angles counter-clockwise (DESIGN.md §3).
+#pragma once
+
+#include <Eigen/Dense>
+#include <optional>
+
+#include "coupling/airy_wave.hpp"
+#include "coupling/floating_frame_body.hpp"
+#include "coupling/hull_pressure.hpp"
+
+namespace ffrf::coupling {
+
+struct HullModel {
+  double mass = 0.0;                                        // without the boom [kg]
+  double pitch_inertia = 0.0;                               // about G1 [kg m²]
+  BoxHullSection section{};                                 // box, hull frame at G1
+  Eigen::Vector3d added_mass = Eigen::Vector3d::Zero();     // A11, A33, A55 (surge, heave, pitch)
+  Eigen::Vector3d radiation_damping = Eigen::Vector3d::Zero();  // B11, B33, B55 [N s/m, N m s/rad]
+  double mooring_stiffness = 0.0;                           // surge spring [N/m], anchored at x = 0
+  bool hydrostatics = true;                                 // pressure integration on/off
+  // Linear support springs towards `support_pose` (surge, heave, pitch): test scenes that hold the
+  // hull without water. Zero = none.
+  Eigen::Vector3d support_stiffness = Eigen::Vector3d::Zero();
+  Eigen::Vector3d support_pose = Eigen::Vector3d::Zero();  // also the pose of a fixed hull
+  bool fixed = false;  // hull held at its initial pose (its coordinates removed)
+};
+
+struct BoomMountModel {
+  Eigen::Vector2d root = Eigen::Vector2d::Zero();  // B relative to G1, hull frame [m]
+  double angle = 0.0;                              // boom frame angle relative to the hull [rad]
+};
+
+struct CargoModel {
+  double mass = 0.0;                              // [kg]
+  double pitch_inertia = 0.0;                     // about G2 [kg m²]
+  Eigen::Vector2d hook = Eigen::Vector2d::Zero(); // C relative to G2, cargo frame [m]
+};
+
+struct WireModel {
+  double unstretched_length = 0.0;  // L0 [m]
+  double stiffness = 0.0;           // [N/m]
+  double damping = 0.0;             // [N s/m]
+};
+
+template <fem::ElasticCoordinates Coords>
+struct CraneModel {
+  HullModel hull;
+  BoomMountModel mount;
+  FloatingFrameBody<Coords> boom;
+  BodyPoint boom_tip;  // A′ (x = L)
+  CargoModel cargo;
+  WireModel wire;
+  double gravity = 9.81;
+  double water_density = 1025.0;
+  std::optional<AiryWave> wave;  // empty: calm water
+};
+
+}  // namespace ffrf::coupling

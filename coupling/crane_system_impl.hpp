@@ -1,0 +1,84 @@
+// Template definitions of the crane equations (coupling/crane_system.hpp); included only by
+// coupling/crane_system.cpp, which instantiates them for the nodal and the modal coordinates.
+#pragma once
+
+#include <Eigen/SparseCholesky>
+#include <cmath>
+#include <stdexcept>
+#include <type_traits>
+
+#include "coupling/crane_system.hpp"
+#include "coupling/wire_rope.hpp"
+
+namespace ffrf::coupling::detail {
+
+template <class Matrix>
+using MassFactor = std::conditional_t<std::is_base_of_v<Eigen::SparseMatrixBase<Matrix>, Matrix>,
+                                      Eigen::SimplicialLDLT<Matrix>, Eigen::LDLT<Eigen::MatrixXd>>;
+
+template <fem::ElasticCoordinates Coords>
+class CraneSystem final : public CraneEquations {
+ public:
+  explicit CraneSystem(CraneModel<Coords> model);
+
+  int minimal_size() const override { return cargo_at_ + 3 + n_; }
+  Eigen::VectorXd initial_guess() const override;
+  void minimal_accelerations(double t, ConstRef z, ConstRef z_dot, Ref z_ddot) override;
+  void static_residual(ConstRef z, Ref residual) override;
+  Eigen::VectorXd static_residual_scale() const override;
+  Eigen::VectorXd coordinate_scale() const override;
+  CraneOutputs minimal_outputs(double t, ConstRef z, ConstRef z_dot) override;
+
+  int full_size() const override { return cargo_at_ + 6 + n_; }
+  void full_from_minimal(ConstRef z, ConstRef z_dot, Ref q, Ref v) const override;
+  void full_mass_times(ConstRef q, ConstRef a, Ref out) override;
+  void full_forces(double t, ConstRef q, ConstRef v, Ref out) override;
+  void constraint(ConstRef q, Ref c) const override;
+  void constraint_jacobian(ConstRef q, Eigen::MatrixXd& jacobian) const override;
+  void constraint_rate_terms(ConstRef q, ConstRef v, Ref gamma) const override;
+  Eigen::MatrixXd full_mass_matrix(ConstRef q) override;
+  CraneOutputs full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) override;
+  double wire_stretch_minimal(ConstRef z) override;
+  double wire_stretch_full(ConstRef q) override;
+  int elastic_size() const override { return n_; }
+
+ private:
+  bool hull_free() const { return !m_.hull.fixed; }
+  Eigen::Vector3d hull_rigid_inertia() const;  // (m1 + A11, m1 + A33, I1 + A55)
+  Eigen::Vector3d cargo_inertia() const { return {m_.cargo.mass, m_.cargo.mass, m_.cargo.pitch_inertia}; }
+  // Boom frame (R_B, θ_B) and its velocity from the hull pose and velocity (the clamp at B).
+  void mount_boom(const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v);
+  // Loads on hull, cargo and boom (boom_q_, boom_v_ must be set) at time t.
+  void evaluate_loads(double t, const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v,
+                      const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool with_wave);
+  // Minimal-coordinate generalized forces (hull rows through Jᵀ, convective term included).
+  void minimal_forces(double t, ConstRef z, ConstRef z_dot, bool with_wave);
+  void split_minimal(ConstRef z, ConstRef z_dot, Eigen::Vector3d& hull_q, Eigen::Vector3d& hull_v) const;
+  CraneOutputs common_outputs(const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v,
+                              const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v);
+  void boom_tip_kinematics(const Eigen::Vector3d& cargo_q, Eigen::Vector2d& tip, Eigen::Vector2d& hook) const;
+
+  CraneModel<Coords> m_;
+  int n_;
+  int cargo_at_;  // index of the cargo block (0 with a fixed hull, 3 otherwise)
+  MassFactor<typename Coords::Matrix> elastic_mass_factor_;
+  // workspace (allocated once)
+  Eigen::VectorXd boom_q_, boom_v_, boom_force_;
+  Eigen::Vector2d mount_offset_ = Eigen::Vector2d::Zero();  // A(θ1) b
+  Eigen::Vector3d hull_force_ = Eigen::Vector3d::Zero(), cargo_force_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d hull_rhs_ = Eigen::Vector3d::Zero();
+  Eigen::VectorXd elastic_rhs_;
+  Eigen::Matrix3d boom_reference_mass_ = Eigen::Matrix3d::Zero();
+  Eigen::Matrix<double, 3, Eigen::Dynamic> boom_coupling_;
+  Eigen::Matrix<double, 3, Eigen::Dynamic> hull_elastic_mass_;
+  Eigen::Matrix<double, Eigen::Dynamic, 3> schur_columns_;
+  Eigen::VectorXd schur_rhs_;
+  Eigen::Vector2d convective_ = Eigen::Vector2d::Zero();  // J̇ż for R_B
+  Eigen::Vector3d joint_reaction_ = Eigen::Vector3d::Zero();
+  WireState wire_;
+};
+
+}  // namespace ffrf::coupling::detail
+
+#include "coupling/crane_system_minimal.ipp"
+#include "coupling/crane_system_full.ipp"

@@ -1,0 +1,235 @@
+// Crane equations, part 1: loads on the bodies and the minimal-coordinate ODE.
+// Velocity transformation of the clamp at B: Ṙ_B = ṙ1 + θ̇1 Ĩ A1 b, θ̇_B = θ̇1, so with
+// J_r = [[1, 0, −(A1 b)_y], [0, 1, (A1 b)_x], [0, 0, 1]] and J̇ż = (−θ̇1² A1 b, 0):
+//   hull rows:    (M_h + J_rᵀ M_RR J_r) z̈_h + J_rᵀ M_Rf η̈ = Q_h + J_rᵀ (Q_B,ref − M_B,ref,R J̇ż)
+//   elastic rows: M_fR J_r z̈_h + M_ff η̈ = Q_B,f − M_fR,R J̇ż
+// solved by the Schur complement of the constant M_ff (factored once).
+#pragma once
+
+namespace ffrf::coupling::detail {
+
+template <fem::ElasticCoordinates Coords>
+CraneSystem<Coords>::CraneSystem(CraneModel<Coords> model)
+    : m_(std::move(model)),
+      n_(static_cast<int>(m_.boom.elastic_size())),
+      cargo_at_(m_.hull.fixed ? 0 : 3),
+      boom_q_(3 + n_), boom_v_(3 + n_), boom_force_(3 + n_), elastic_rhs_(n_),
+      boom_coupling_(3, n_), hull_elastic_mass_(3, n_), schur_columns_(n_, 3), schur_rhs_(n_) {
+  if (n_ > 0) {
+    elastic_mass_factor_.compute(m_.boom.coords().mass_ff());
+    if (elastic_mass_factor_.info() != Eigen::Success) {
+      throw std::runtime_error("the boom's elastic mass matrix is not positive definite: check the section's mass per length");
+    }
+  }
+}
+
+template <fem::ElasticCoordinates Coords>
+Eigen::Vector3d CraneSystem<Coords>::hull_rigid_inertia() const {
+  return Eigen::Vector3d(m_.hull.mass, m_.hull.mass, m_.hull.pitch_inertia) + m_.hull.added_mass;
+}
+
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::mount_boom(const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v) {
+  mount_offset_ = rotation(hull_q(2)) * m_.mount.root;
+  boom_q_.head<2>() = hull_q.head<2>() + mount_offset_;
+  boom_q_(2) = hull_q(2) + m_.mount.angle;
+  boom_v_.head<2>() = hull_v.head<2>() + hull_v(2) * perp(mount_offset_);
+  boom_v_(2) = hull_v(2);
+}
+
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v,
+                                         const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool with_wave) {
+  const double g = m_.gravity;
+  const HullModel& hull = m_.hull;
+  hull_force_ = Eigen::Vector3d(0.0, -hull.mass * g, 0.0);
+  if (hull.hydrostatics) {
+    const AiryWave* wave = (with_wave && m_.wave) ? &*m_.wave : nullptr;
+    const HullLoad load = hull_pressure_load(hull.section, wave, m_.water_density, g, hull_q.head<2>(), hull_q(2), t);
+    hull_force_.head<2>() += load.force;
+    hull_force_(2) += load.moment;
+  }
+  hull_force_ -= hull.radiation_damping.cwiseProduct(hull_v);
+  hull_force_(0) -= hull.mooring_stiffness * hull_q(0);
+  hull_force_ -= hull.support_stiffness.cwiseProduct(hull_q - hull.support_pose);
+
+  cargo_force_ = Eigen::Vector3d(0.0, -m_.cargo.mass * g, 0.0);
+
+  m_.boom.quadratic_velocity(boom_q_, boom_v_, boom_force_);
+  m_.boom.add_gravity(boom_q_, Eigen::Vector2d(0.0, -g), boom_force_);
+  m_.boom.add_elastic_force(boom_q_, boom_v_, boom_force_);
+
+  const Eigen::Vector2d tip = m_.boom.position(boom_q_, m_.boom_tip);
+  const Eigen::Vector2d tip_v = m_.boom.velocity(boom_q_, boom_v_, m_.boom_tip);
+  const Eigen::Vector2d hook_arm = rotation(cargo_q(2)) * m_.cargo.hook;
+  const Eigen::Vector2d hook = cargo_q.head<2>() + hook_arm;
+  const Eigen::Vector2d hook_v = cargo_v.head<2>() + cargo_v(2) * perp(hook_arm);
+  wire_ = wire_state(m_.wire, tip, tip_v, hook, hook_v);
+  const Eigen::Vector2d pull = wire_.tension * wire_.direction;  // on the tip, towards the hook
+  m_.boom.add_point_force(boom_q_, m_.boom_tip, pull, boom_force_);
+  cargo_force_.head<2>() -= pull;
+  cargo_force_(2) -= cross(hook_arm, pull);
+}
+
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::split_minimal(ConstRef z, ConstRef z_dot, Eigen::Vector3d& hull_q, Eigen::Vector3d& hull_v) const {
+  if (hull_free()) {
+    hull_q = z.head<3>();
+    hull_v = z_dot.head<3>();
+  } else {
+    hull_q = m_.hull.support_pose;
+    hull_v.setZero();
+  }
+}
+
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::minimal_forces(double t, ConstRef z, ConstRef z_dot, bool with_wave) {
+  Eigen::Vector3d hull_q, hull_v;
+  split_minimal(z, z_dot, hull_q, hull_v);
+  mount_boom(hull_q, hull_v);
+  boom_q_.tail(n_) = z.tail(n_);
+  boom_v_.tail(n_) = z_dot.tail(n_);
+  evaluate_loads(t, hull_q, hull_v, z.segment<3>(cargo_at_), z_dot.segment<3>(cargo_at_), with_wave);
+  m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_);
+  convective_ = -hull_v(2) * hull_v(2) * mount_offset_;
+  const Eigen::Vector3d boom_reference_rhs = boom_force_.head<3>() - boom_reference_mass_.leftCols<2>() * convective_;
+  elastic_rhs_.noalias() = boom_force_.tail(n_) - boom_coupling_.topRows<2>().transpose() * convective_;
+  Eigen::Matrix3d jr = Eigen::Matrix3d::Identity();
+  jr(0, 2) = -mount_offset_.y();
+  jr(1, 2) = mount_offset_.x();
+  hull_rhs_ = hull_force_ + jr.transpose() * boom_reference_rhs;
+  hull_elastic_mass_.noalias() = jr.transpose() * boom_coupling_;
+}
+
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z_dot, Ref z_ddot) {
+  minimal_forces(t, z, z_dot, true);
+  z_ddot.segment<3>(cargo_at_) = cargo_force_.cwiseQuotient(cargo_inertia());
+  Eigen::Vector3d hull_a = Eigen::Vector3d::Zero();
+  if (n_ > 0) schur_rhs_ = elastic_mass_factor_.solve(elastic_rhs_);
+  if (hull_free()) {
+    Eigen::Matrix3d jr = Eigen::Matrix3d::Identity();
+    jr(0, 2) = -mount_offset_.y();
+    jr(1, 2) = mount_offset_.x();
+    Eigen::Matrix3d schur = Eigen::Matrix3d(hull_rigid_inertia().asDiagonal()) + jr.transpose() * boom_reference_mass_ * jr;
+    Eigen::Vector3d rhs = hull_rhs_;
+    if (n_ > 0) {
+      schur_columns_ = elastic_mass_factor_.solve(Eigen::MatrixXd(hull_elastic_mass_.transpose()));
+      schur -= hull_elastic_mass_ * schur_columns_;
+      rhs -= hull_elastic_mass_ * schur_rhs_;
+    }
+    hull_a = schur.ldlt().solve(rhs);
+    z_ddot.head<3>() = hull_a;
+    if (n_ > 0) z_ddot.tail(n_) = schur_rhs_ - schur_columns_ * hull_a;
+  } else if (n_ > 0) {
+    z_ddot.tail(n_) = schur_rhs_;
+  }
+  // Joint reaction on the boom at B: M_B q̈_B − Q_B over the frame rows (force, moment about B).
+  Eigen::Vector3d frame_a;
+  frame_a.head<2>() = hull_a.head<2>() + hull_a(2) * perp(mount_offset_) + convective_;
+  frame_a(2) = hull_a(2);
+  joint_reaction_ = boom_reference_mass_ * frame_a - boom_force_.head<3>();
+  if (n_ > 0) joint_reaction_ += boom_coupling_ * z_ddot.tail(n_);
+}
+
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::static_residual(ConstRef z, Ref residual) {
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(z.size());
+  minimal_forces(0.0, z, zero, false);
+  if (hull_free()) residual.head<3>() = hull_rhs_;
+  residual.segment<3>(cargo_at_) = cargo_force_;
+  residual.tail(n_) = elastic_rhs_;
+}
+
+template <fem::ElasticCoordinates Coords>
+Eigen::VectorXd CraneSystem<Coords>::initial_guess() const {
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(minimal_size());
+  const Eigen::Vector3d hull_q = m_.hull.support_pose;
+  if (hull_free()) z.head<3>() = hull_q;
+  // Cargo hanging straight below the undeformed tip, wire stretched by the cargo's weight.
+  const Eigen::Vector2d root = hull_q.head<2>() + rotation(hull_q(2)) * m_.mount.root;
+  const Eigen::Vector2d tip = root + rotation(hull_q(2) + m_.mount.angle) * m_.boom_tip.undeformed;
+  const double stretch = m_.wire.stiffness > 0.0 ? m_.cargo.mass * m_.gravity / m_.wire.stiffness : 0.0;
+  const Eigen::Vector2d hook = tip - Eigen::Vector2d(0.0, m_.wire.unstretched_length + stretch);
+  z.segment<2>(cargo_at_) = hook - m_.cargo.hook;
+  return z;
+}
+
+template <fem::ElasticCoordinates Coords>
+Eigen::VectorXd CraneSystem<Coords>::static_residual_scale() const {
+  // 1 / (weight of the inertia on each row over 1 m): forces of order M_ii g.
+  Eigen::VectorXd scale(minimal_size());
+  const double g = m_.gravity;
+  if (hull_free()) {
+    const double total = m_.hull.mass + m_.boom.coords().mass() + m_.cargo.mass;
+    scale.head<3>() = Eigen::Vector3d(1.0 / (total * g), 1.0 / (total * g), 1.0 / ((m_.hull.pitch_inertia + 1.0) * g));
+  }
+  scale.segment<3>(cargo_at_) = cargo_inertia().cwiseInverse() / g;
+  const Eigen::MatrixXd elastic_mass(m_.boom.coords().mass_ff());
+  for (int i = 0; i < n_; ++i) scale(cargo_at_ + 3 + i) = 1.0 / (elastic_mass(i, i) * g);
+  return scale;
+}
+
+template <fem::ElasticCoordinates Coords>
+Eigen::VectorXd CraneSystem<Coords>::coordinate_scale() const {
+  Eigen::VectorXd scale = Eigen::VectorXd::Constant(minimal_size(), 1.0);
+  if (hull_free()) scale(2) = 0.01;
+  scale(cargo_at_ + 2) = 0.01;
+  scale.tail(n_).setConstant(0.01);
+  return scale;
+}
+
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::boom_tip_kinematics(const Eigen::Vector3d& cargo_q, Eigen::Vector2d& tip, Eigen::Vector2d& hook) const {
+  tip = m_.boom.position(boom_q_, m_.boom_tip);
+  hook = cargo_q.head<2>() + rotation(cargo_q(2)) * m_.cargo.hook;
+}
+
+template <fem::ElasticCoordinates Coords>
+double CraneSystem<Coords>::wire_stretch_minimal(ConstRef z) {
+  Eigen::Vector3d hull_q, hull_v;
+  split_minimal(z, z, hull_q, hull_v);
+  mount_boom(hull_q, Eigen::Vector3d::Zero());
+  boom_q_.tail(n_) = z.tail(n_);
+  Eigen::Vector2d tip, hook;
+  boom_tip_kinematics(z.segment<3>(cargo_at_), tip, hook);
+  return (hook - tip).norm() - m_.wire.unstretched_length;
+}
+
+template <fem::ElasticCoordinates Coords>
+CraneOutputs CraneSystem<Coords>::minimal_outputs(double t, ConstRef z, ConstRef z_dot) {
+  Eigen::VectorXd z_ddot(z.size());
+  minimal_accelerations(t, z, z_dot, z_ddot);
+  Eigen::Vector3d hull_q, hull_v;
+  split_minimal(z, z_dot, hull_q, hull_v);
+  CraneOutputs out = common_outputs(hull_q, hull_v, z.segment<3>(cargo_at_), z_dot.segment<3>(cargo_at_));
+  out.joint_reaction = joint_reaction_;
+  out.constraint_residual = 0.0;
+  return out;
+}
+
+template <fem::ElasticCoordinates Coords>
+CraneOutputs CraneSystem<Coords>::common_outputs(const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v,
+                                                 const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v) {
+  CraneOutputs out;
+  out.hull = hull_q;
+  out.cargo = cargo_q;
+  out.tip_deflection = m_.boom_tip.shape * boom_q_.tail(n_);
+  out.wire_tension = wire_.tension;
+  out.wire_length = wire_.length;
+  const double g = m_.gravity;
+  out.kinetic_energy = 0.5 * hull_v.dot(hull_rigid_inertia().cwiseProduct(hull_v)) * (hull_free() ? 1.0 : 0.0) +
+                       0.5 * cargo_v.dot(cargo_inertia().cwiseProduct(cargo_v)) + m_.boom.kinetic_energy(boom_q_, boom_v_);
+  out.gravity_energy = (hull_free() ? m_.hull.mass * g * hull_q(1) : 0.0) + m_.cargo.mass * g * cargo_q(1) +
+                       m_.boom.gravity_potential(boom_q_, Eigen::Vector2d(0.0, -g));
+  out.strain_energy = m_.boom.strain_energy(boom_q_);
+  out.wire_energy = wire_energy(m_.wire, wire_.length);
+  if (hull_free()) {
+    const Eigen::Vector3d d = hull_q - m_.hull.support_pose;
+    out.spring_energy = 0.5 * m_.hull.mooring_stiffness * hull_q(0) * hull_q(0) +
+                        0.5 * d.dot(m_.hull.support_stiffness.cwiseProduct(d));
+  }
+  return out;
+}
+
+}  // namespace ffrf::coupling::detail

@@ -1,0 +1,52 @@
+// Integrator names, solver failures and the terminal progress line.
+#include "coupling/simulation.hpp"
+
+#include <cstdio>
+
+#include "coupling/sundials_support.hpp"
+
+namespace ffrf::coupling {
+
+std::string_view to_string(Integrator integrator) {
+  switch (integrator) {
+    case Integrator::ida: return "ida";
+    case Integrator::cvode: return "cvode";
+  }
+  return "?";
+}
+
+std::optional<Integrator> parse_integrator(std::string_view text) {
+  for (Integrator i : {Integrator::ida, Integrator::cvode}) {
+    if (text == to_string(i)) return i;
+  }
+  return std::nullopt;
+}
+
+std::string integrator_choices() { return "ida|cvode"; }
+
+SolverFailure::SolverFailure(std::string solver, std::string cause, double time, std::string remedy)
+    : std::runtime_error(solver + " failed at t = " + std::to_string(time) + " s: " + cause + ". Try: " + remedy),
+      solver_(std::move(solver)), cause_(std::move(cause)), remedy_(std::move(remedy)), time_(time) {}
+
+RunResult integrate(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings) {
+  return settings.kind == Integrator::ida ? integrate_lagrange(equations, z0, settings)
+                                          : integrate_minimal(equations, z0, settings);
+}
+
+namespace sundials {
+
+void Progress::update(double t) {
+  if (!enabled_) return;
+  const int percent = static_cast<int>(100.0 * t / end_);
+  if (percent == last_percent_) return;
+  last_percent_ = percent;
+  std::fprintf(stderr, "\r%s: t = %7.2f / %.2f s (%3d %%)", label_, t, end_, percent);
+  std::fflush(stderr);
+}
+
+void Progress::finish() {
+  if (enabled_) std::fprintf(stderr, "\r\033[K");
+}
+
+}  // namespace sundials
+}  // namespace ffrf::coupling

@@ -1,0 +1,65 @@
+// KINSOL adapter for the static equilibrium Q_z(z, 0) = 0 (see header).
+#include "coupling/static_equilibrium.hpp"
+
+#include <kinsol/kinsol.h>
+#include <kinsol/kinsol_ls.h>
+
+#include <chrono>
+
+#include "coupling/simulation.hpp"
+#include "coupling/sundials_support.hpp"
+
+namespace ffrf::coupling {
+namespace {
+
+int static_forces(N_Vector u, N_Vector f, void* user) {
+  auto* equations = static_cast<CraneEquations*>(user);
+  auto residual = sundials::Vector::view(f);
+  equations->static_residual(sundials::Vector::view(u), residual);
+  return residual.allFinite() ? 0 : 1;
+}
+
+}  // namespace
+
+StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eigen::VectorXd& guess, double tolerance) {
+  const auto start = std::chrono::steady_clock::now();
+  const int n = equations.minimal_size();
+  sundials::Context context;
+  sundials::Vector u(n, context.ctx), u_scale(n, context.ctx), f_scale(n, context.ctx);
+  u.map() = guess;
+  u_scale.map() = equations.coordinate_scale().cwiseInverse();
+  f_scale.map() = equations.static_residual_scale();
+
+  std::unique_ptr<void, void (*)(void*)> memory(KINCreate(context.ctx), [](void* p) { KINFree(&p); });
+  void* kinsol = memory.get();
+  sundials::DenseSolver linear(u.v, context.ctx);
+  if (KINInit(kinsol, static_forces, u.v) != KIN_SUCCESS || KINSetUserData(kinsol, &equations) != KIN_SUCCESS ||
+      KINSetLinearSolver(kinsol, linear.solver, linear.matrix) != KIN_SUCCESS ||
+      KINSetFuncNormTol(kinsol, tolerance) != KIN_SUCCESS || KINSetScaledStepTol(kinsol, 1e-14) != KIN_SUCCESS ||
+      KINSetMaxSetupCalls(kinsol, 1) != KIN_SUCCESS || KINSetNumMaxIters(kinsol, 200) != KIN_SUCCESS) {
+    throw SolverFailure("KINSOL", "set-up failed", 0.0, "report this as a bug");
+  }
+  const int flag = KINSol(kinsol, u.v, KIN_LINESEARCH, u_scale.v, f_scale.v);
+  StaticEquilibrium result;
+  KINGetNumNonlinSolvIters(kinsol, &result.newton_iterations);
+  KINGetNumFuncEvals(kinsol, &result.function_evaluations);
+  Eigen::VectorXd residual(n);
+  equations.static_residual(u.map(), residual);
+  result.scaled_residual = residual.cwiseProduct(f_scale.map()).cwiseAbs().maxCoeff();
+  if (flag < 0 || !(result.scaled_residual < 1e3 * tolerance)) {
+    throw SolverFailure("KINSOL (static equilibrium)",
+                        std::string(flag < 0 ? KINGetReturnFlagName(flag) : "no convergence") +
+                            " after " + std::to_string(result.newton_iterations) + " Newton iterations, scaled residual " +
+                            std::to_string(result.scaled_residual),
+                        0.0,
+                        "check that the hull can float the load (mass vs. buoyancy), that the wire is not slack at rest "
+                        "(cargo hanging) and that the boom is not near buckling");
+  }
+  result.z = u.map();
+  const Eigen::VectorXd rest = Eigen::VectorXd::Zero(n);
+  result.outputs = equations.minimal_outputs(0.0, result.z, rest);
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace ffrf::coupling

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Shared set-up for the README's two commands: installs the Debian 12 packages that are missing,
+# then configures and builds ffrf (Release) in ./build. Idempotent; quiet when nothing is missing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(build-essential cmake pkg-config libeigen3-dev libarpack2-dev libspectra-dev libsundials-dev
+          libsuitesparse-dev libtomlplusplus-dev libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
+          gnuplot-nox)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "ffrf set-up: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+werror=OFF
+[ "${CI:-}" = "true" ] && werror=ON
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DFFRF_WERROR="$werror" > build.log 2>&1 || { cat build.log; exit 1; }
+cmake --build build -j"$(nproc)" >> build.log 2>&1 || { tail -n 60 build.log; echo "build failed: full log in build.log"; exit 1; }
+echo "ffrf set-up: built in ./build (log: build.log)"
