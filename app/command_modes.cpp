@@ -105,6 +105,7 @@ int run_modes(const ModesOptions& options) {
   progress(fmt::format("solving {} modes, N = {} ({} DOFs) ...", count, mesh.element_count, dof));
   const ModesResult result = solve_modes(mesh, boundary, *solver, count);
   progress_done();
+  for (const std::string& warning : result.warnings) fmt::print(stderr, "ffrf modes: warning: {}\n", warning);
   const ModesContext context{options.scene, scene.name};
   if (out) write_outputs(*out, result, context);
   fmt::print("{}", options.json ? modes_json(result, context, {}) : modes_table(result, context));

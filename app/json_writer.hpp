@@ -1,5 +1,5 @@
 // A minimal streaming JSON writer (objects, arrays, strings, numbers, booleans, null) with
-// two-space indentation. Numbers are written with 17 significant digits (exact round trip);
+// two-space indentation. Numbers are written in the shortest form that reads back exactly;
 // NaN and infinity, which JSON cannot represent, are written as null.
 #pragma once
 
@@ -29,7 +29,7 @@ class JsonWriter {
   JsonWriter& value(const char* text) { return value(std::string_view(text)); }
   JsonWriter& value(bool flag) { return raw(flag ? "true" : "false"); }
   JsonWriter& value(int number) { return raw(fmt::format("{}", number)); }
-  JsonWriter& value(double number) { return std::isfinite(number) ? raw(fmt::format("{:.17g}", number)) : null(); }
+  JsonWriter& value(double number) { return std::isfinite(number) ? raw(fmt::format("{}", number)) : null(); }
   JsonWriter& value(const std::optional<double>& number) { return number ? value(*number) : null(); }
   JsonWriter& null() { return raw("null"); }
 

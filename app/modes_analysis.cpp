@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fmt/format.h>
 
 #include "fem/analytic_beam.hpp"
 #include "fem/assembly.hpp"
@@ -41,8 +42,18 @@ ModesResult solve_modes(const fem::BeamMesh& mesh, fem::Boundary boundary, modal
   const double solve_seconds = seconds_since(solve_start);
 
   auto modes = modal::classify_modes(mesh, boundary, matrices.dofs, matrices.mass, pairs.eigenvalues, pairs.eigenvectors);
+  std::vector<std::string> warnings;
+  const auto rigid_found = std::count_if(modes.begin(), modes.end(),
+                                         [](const modal::ClassifiedMode& m) { return m.kind == fem::ModeKind::rigid; });
+  const int rigid_expected = std::min(count, fem::rigid_mode_count(boundary));
+  if (rigid_found != rigid_expected) {
+    warnings.push_back(fmt::format(
+        "expected {} rigid-body modes, found {}: the lowest eigenvalues are spoiled by rounding (K is too "
+        "ill-conditioned at N = {} for double precision); these frequencies are not reliable; use fewer elements",
+        rigid_expected, rigid_found, mesh.element_count));
+  }
   return {mesh,          boundary, solver, std::move(matrices.dofs), request.sigma, std::move(pairs), std::move(modes),
-          assembly_seconds, solve_seconds};
+          assembly_seconds, solve_seconds, std::move(warnings)};
 }
 
 std::vector<ConvergencePoint> frequency_convergence(const fem::BeamMesh& mesh, fem::Boundary boundary,

@@ -6,6 +6,7 @@
 #include <array>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "fem/boundary.hpp"
@@ -25,6 +26,7 @@ struct ModesResult {
   std::vector<modal::ClassifiedMode> modes;
   double assembly_seconds;
   double solve_seconds;
+  std::vector<std::string> warnings;  // results to distrust, in words
 };
 
 // Shift for the shift-invert solvers: 0 when the boundary condition suppresses the rigid modes;

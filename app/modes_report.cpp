@@ -66,6 +66,9 @@ std::string modes_json(const ModesResult& r, const ModesContext& context,
   json.field("iterations", r.pairs.stats.iterations).field("operator_applications", r.pairs.stats.operator_applications);
   json.field("converged", r.pairs.stats.converged);
   json.end_object();
+  json.key("warnings").begin_array();
+  for (const std::string& warning : r.warnings) json.value(warning);
+  json.end_array();
   json.key("frequencies_hz").begin_array();
   for (const modal::ClassifiedMode& mode : r.modes) json.value(hertz(mode.angular_frequency));
   json.end_array();
