@@ -9,10 +9,12 @@ namespace ffrf::modal {
 std::vector<ClassifiedMode> classify_modes(const fem::BeamMesh& mesh, fem::Boundary boundary, const fem::DofMap& dofs,
                                            const Eigen::SparseMatrix<double>& mass, const Eigen::VectorXd& eigenvalues,
                                            const Eigen::MatrixXd& eigenvectors) {
-  const fem::BeamSection& s = mesh.section;
-  // ω² below this is a rigid-body mode: 1e-6 of the bending scale EI/(ρA L⁴) (the first elastic
-  // ω² of any boundary condition here is at least 3.5² times that scale).
-  const double rigid_limit = 1e-6 * s.bending_rigidity() / (s.mass_per_length * std::pow(mesh.length, 4));
+  // ω² below this is a rigid-body mode: 1 % of the first analytic elastic ω² of the boundary
+  // condition (FE frequencies converge from above, so every elastic FE mode lies above it). A
+  // relative gap, not an absolute threshold: on fine meshes (N ≳ 1000) round-off in K − σM lifts
+  // the rigid modes' ω² far above zero, yet still orders of magnitude below the first elastic one.
+  const double first_elastic = fem::analytic_bending_modes(mesh, boundary, 1)[0].angular_frequency;
+  const double rigid_limit = 1e-2 * first_elastic * first_elastic;
   Eigen::VectorXd axial_mask = Eigen::VectorXd::Zero(dofs.free_count());
   for (int i = 0; i < dofs.free_count(); ++i) {
     if (dofs.free_to_full[static_cast<std::size_t>(i)] % 3 == static_cast<int>(fem::NodeDof::axial)) axial_mask(i) = 1.0;
