@@ -46,8 +46,9 @@ HullLoad hull_pressure_load(const BoxHullSection& hull, const AiryWave* wave, do
 // C55 is the pitch stiffness about the centre of flotation (mid-length: waterplane inertia about
 // its own centre), i.e. the uncoupled pitch stiffness used to size critical damping. About G1,
 // x_f = (aft_x + fore_x)/2 forward of it, the pressure integral gives instead
-// C55 + ρ g B L x_f² and the heave–pitch couplings C35 = C53 = −ρ g B L x_f (both dF_y/dθ and
-// dM/dy equal −ρ g B L x_f). Throws std::invalid_argument if V ≤ 0 or T ≥ deck_y − keel_y.
+// C55 + ρ g B L x_f² and the heave–pitch couplings C35 = C53 = +ρ g B L x_f (C = −∂Q/∂q; pitch
+// bow-up positive, so ∂F_y/∂θ = ∂M/∂y = −ρ g B L x_f). C55 < 0 (unstable) is returned as is.
+// Throws std::invalid_argument if V ≤ 0, T ≥ deck_y − keel_y or the box is degenerate.
 Eigen::Vector2d box_hydrostatic_stiffness(const BoxHullSection& hull, double water_density, double gravity,
                                           double displaced_volume, double center_of_gravity_above_keel);
 
