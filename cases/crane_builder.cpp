@@ -127,6 +127,7 @@ modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& 
     modal::ModalBasisRequest request;
     request.vibration_modes = choice.modes;
     request.static_correction = choice.static_modes;
+    if (choice.static_modes) request.loads = modal::tip_and_body_unit_loads(beam->mesh);
     request.solver = choice.solver;
     basis = modal::make_modal_basis(beam->mesh, beam->dofs, beam->stiffness, beam->mass, request);
   }

@@ -27,7 +27,7 @@ struct BoomChoice {
   BoomKind kind = BoomKind::nodal;
   int elements = 16;          // N (the mesh the modes are computed on, for modal)
   int modes = 4;              // k vibration modes (modal)
-  bool static_modes = false;  // add the tip static correction modes (modal)
+  bool static_modes = false;  // add static correction modes (modal): tip loads + uniform body loads
   modal::EigenSolverKind solver = modal::EigenSolverKind::arpack;
   std::string label() const;  // "rigid", "nodal N=16", "modal k=4+static (N=16)"
 };

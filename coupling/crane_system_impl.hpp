@@ -48,7 +48,8 @@ class CraneSystem final : public CraneEquations {
   Eigen::Vector3d cargo_inertia() const { return {m_.cargo.mass, m_.cargo.mass, m_.cargo.pitch_inertia}; }
   // Boom frame (R_B, θ_B) and its velocity from the hull pose and velocity (the clamp at B).
   void mount_boom(const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v);
-  // Loads on hull, cargo and boom (boom_q_, boom_v_ must be set) at time t.
+  // Loads on hull, cargo and boom (boom_q_, boom_v_ must be set) at time t. with_wave = false is
+  // the static problem: calm water and a bilateral wire (see wire_state).
   void evaluate_loads(double t, const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v,
                       const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool with_wave);
   // Minimal-coordinate generalized forces (hull rows through Jᵀ, convective term included).

@@ -64,7 +64,7 @@ void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q
   const Eigen::Vector2d hook_arm = rotation(cargo_q(2)) * m_.cargo.hook;
   const Eigen::Vector2d hook = cargo_q.head<2>() + hook_arm;
   const Eigen::Vector2d hook_v = cargo_v.head<2>() + cargo_v(2) * perp(hook_arm);
-  wire_ = wire_state(m_.wire, tip, tip_v, hook, hook_v);
+  wire_ = wire_state(m_.wire, tip, tip_v, hook, hook_v, !with_wave);
   const Eigen::Vector2d pull = wire_.tension * wire_.direction;  // on the tip, towards the hook
   m_.boom.add_point_force(boom_q_, m_.boom_tip, pull, boom_force_);
   cargo_force_.head<2>() -= pull;
@@ -165,8 +165,13 @@ Eigen::VectorXd CraneSystem<Coords>::static_residual_scale() const {
     scale.head<3>() = Eigen::Vector3d(1.0 / (total * g), 1.0 / (total * g), 1.0 / ((m_.hull.pitch_inertia + 1.0) * g));
   }
   scale.segment<3>(cargo_at_) = cargo_inertia().cwiseInverse() / g;
+  // Elastic rows: inertia under gravity plus the stiffness times a 1 cm displacement, so that the
+  // round-off of K η (K grows like 1/h³) does not dominate the scaled residual.
   const Eigen::MatrixXd elastic_mass(m_.boom.coords().mass_ff());
-  for (int i = 0; i < n_; ++i) scale(cargo_at_ + 3 + i) = 1.0 / (elastic_mass(i, i) * g);
+  const Eigen::MatrixXd elastic_stiffness(m_.boom.coords().stiffness());
+  for (int i = 0; i < n_; ++i) {
+    scale(cargo_at_ + 3 + i) = 1.0 / (elastic_mass(i, i) * g + 0.01 * std::abs(elastic_stiffness(i, i)));
+  }
   return scale;
 }
 

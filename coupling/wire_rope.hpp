@@ -15,14 +15,18 @@ struct WireState {
   Eigen::Vector2d direction = Eigen::Vector2d::Zero();  // unit vector from A′ to C
 };
 
+// bilateral = true drops the tension-only switch (used by the static equilibrium's Newton
+// iteration, whose trial points may pass through a slack wire; a hanging cargo keeps it taut).
 inline WireState wire_state(const WireModel& wire, const Eigen::Vector2d& tip, const Eigen::Vector2d& tip_velocity,
-                            const Eigen::Vector2d& hook, const Eigen::Vector2d& hook_velocity) {
+                            const Eigen::Vector2d& hook, const Eigen::Vector2d& hook_velocity, bool bilateral = false) {
   WireState s;
   const Eigen::Vector2d d = hook - tip;
   s.length = d.norm();
   s.direction = d / s.length;
   s.length_rate = s.direction.dot(hook_velocity - tip_velocity);
-  if (s.length > wire.unstretched_length) {
+  if (bilateral) {
+    s.tension = wire.stiffness * (s.length - wire.unstretched_length) + wire.damping * s.length_rate;
+  } else if (s.length > wire.unstretched_length) {
     const double t = wire.stiffness * (s.length - wire.unstretched_length) + wire.damping * s.length_rate;
     s.tension = t > 0.0 ? t : 0.0;
   }

@@ -13,6 +13,8 @@ std::string_view to_string(UnitLoadKind kind) {
     case UnitLoadKind::axial_force: return "axial force";
     case UnitLoadKind::transverse_force: return "transverse force";
     case UnitLoadKind::moment: return "moment";
+    case UnitLoadKind::distributed_axial: return "uniform axial load";
+    case UnitLoadKind::distributed_transverse: return "uniform transverse load";
   }
   return "?";
 }
@@ -21,6 +23,13 @@ std::vector<UnitLoad> tip_unit_loads(const fem::BeamMesh& mesh) {
   return {{mesh.length, UnitLoadKind::axial_force},
           {mesh.length, UnitLoadKind::transverse_force},
           {mesh.length, UnitLoadKind::moment}};
+}
+
+std::vector<UnitLoad> tip_and_body_unit_loads(const fem::BeamMesh& mesh) {
+  std::vector<UnitLoad> loads = tip_unit_loads(mesh);
+  loads.push_back({0.0, UnitLoadKind::distributed_axial});
+  loads.push_back({0.0, UnitLoadKind::distributed_transverse});
+  return loads;
 }
 
 Eigen::MatrixXd static_modes(const fem::BeamMesh& mesh, const fem::DofMap& dofs,
@@ -34,10 +43,16 @@ Eigen::MatrixXd static_modes(const fem::BeamMesh& mesh, const fem::DofMap& dofs,
   Eigen::MatrixXd modes(dofs.free_count(), static_cast<Eigen::Index>(loads.size()));
   for (std::size_t j = 0; j < loads.size(); ++j) {
     const UnitLoad& load = loads[j];
-    const Eigen::Vector2d force(load.kind == UnitLoadKind::axial_force ? 1.0 : 0.0,
-                                load.kind == UnitLoadKind::transverse_force ? 1.0 : 0.0);
-    const double moment = load.kind == UnitLoadKind::moment ? 1.0 : 0.0;
-    modes.col(static_cast<Eigen::Index>(j)) = factor.solve(fem::point_load(mesh, dofs, load.position, force, moment));
+    Eigen::VectorXd nodal_load;
+    if (load.kind == UnitLoadKind::distributed_axial || load.kind == UnitLoadKind::distributed_transverse) {
+      nodal_load = fem::distributed_load(mesh, dofs, Eigen::Vector2d(load.kind == UnitLoadKind::distributed_axial ? 1.0 : 0.0,
+                                                                     load.kind == UnitLoadKind::distributed_transverse ? 1.0 : 0.0));
+    } else {
+      const Eigen::Vector2d force(load.kind == UnitLoadKind::axial_force ? 1.0 : 0.0,
+                                  load.kind == UnitLoadKind::transverse_force ? 1.0 : 0.0);
+      nodal_load = fem::point_load(mesh, dofs, load.position, force, load.kind == UnitLoadKind::moment ? 1.0 : 0.0);
+    }
+    modes.col(static_cast<Eigen::Index>(j)) = factor.solve(nodal_load);
   }
   return modes;
 }

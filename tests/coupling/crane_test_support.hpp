@@ -1,0 +1,64 @@
+// Shared helpers for the coupled-crane tests: the reference scene, building systems with tweaks,
+// and period measurement from zero crossings.
+#pragma once
+
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "cases/crane_builder.hpp"
+#include "cases/scene_loader.hpp"
+#include "coupling/simulation.hpp"
+#include "coupling/static_equilibrium.hpp"
+
+namespace ffrf::test {
+
+inline cases::Scene reference_scene() { return cases::load_scene(FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml"); }
+
+// Builds a crane for `choice` with the model adjusted by `tweak` (hull supports, fixed hull, ...).
+inline std::unique_ptr<coupling::CraneEquations> build_with(
+    const cases::Scene& scene, const cases::BoomChoice& choice,
+    const std::function<void(coupling::HullModel&, coupling::WireModel&)>& tweak) {
+  if (choice.kind == cases::BoomKind::nodal) {
+    auto model = cases::build_crane_model(scene, nodal::NodalCoordinates(cases::boom_beam(scene, choice.elements)));
+    tweak(model.hull, model.wire);
+    return coupling::make_crane_equations(std::move(model));
+  }
+  auto model = cases::build_crane_model(scene, cases::modal_coordinates(scene, choice));
+  tweak(model.hull, model.wire);
+  return coupling::make_crane_equations(std::move(model));
+}
+
+// Mean period of a signal from its upward mean crossings (linear interpolation between samples).
+inline double mean_period(const std::vector<double>& t, const std::vector<double>& x) {
+  double mean = 0.0;
+  for (double v : x) mean += v;
+  mean /= static_cast<double>(x.size());
+  std::vector<double> crossings;
+  for (std::size_t i = 1; i < x.size(); ++i) {
+    if (x[i - 1] < mean && x[i] >= mean) {
+      crossings.push_back(t[i - 1] + (mean - x[i - 1]) / (x[i] - x[i - 1]) * (t[i] - t[i - 1]));
+    }
+  }
+  if (crossings.size() < 2) return std::nan("");
+  return (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+}
+
+// max |a − b| / max |b − b[0]|: error relative to the motion's amplitude.
+inline double relative_history_error(const std::vector<double>& a, const std::vector<double>& b) {
+  double diff = 0.0, range = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    diff = std::max(diff, std::abs(a[i] - b[i]));
+    range = std::max(range, std::abs(b[i] - b[0]));
+  }
+  return diff / range;
+}
+
+template <class Get>
+std::vector<double> column(const coupling::RunResult& run, Get get) {
+  std::vector<double> values;
+  for (const auto& s : run.samples) values.push_back(get(s));
+  return values;
+}
+
+}  // namespace ffrf::test
