@@ -70,7 +70,17 @@ INSTANTIATE_TEST_SUITE_P(
                       BadScene{"elements = 16", "boom.elements", "elements = 0", "0", "[1, inf)"},
                       BadScene{"elements = 16", "boom.elements", "elements = -3", "-3", "[1, inf)"},
                       BadScene{"length = 10.0", "boom.length", "length = \"10 kg\"", "\"10 kg\"", "(0, inf) m"},
-                      BadScene{"area = 0.01", "boom.area", "area = nan", "nan", "(0, inf) m^2"}));
+                      BadScene{"area = 0.01", "boom.area", "area = nan", "nan", "(0, inf) m^2"}),
+    [](const ::testing::TestParamInfo<BadScene>& info) {
+      // Readable test names from the rewritten line, e.g. "length_m10_0" for "length = -10.0".
+      std::string name;
+      for (char c : info.param.written) {
+        if (std::isalnum(static_cast<unsigned char>(c))) name += c;
+        else if (c == '-') name += 'm';
+        else if (c == '.') name += '_';
+      }
+      return name + "_" + std::to_string(info.index);
+    });
 
 TEST(CliCheck, ListsEveryProblemAtOnce) {
   TempDir dir;
