@@ -11,26 +11,33 @@ std::string_view to_string(Integrator integrator) {
   switch (integrator) {
     case Integrator::ida: return "ida";
     case Integrator::cvode: return "cvode";
+    case Integrator::arkode: return "arkode";
+    case Integrator::generalized_alpha: return "generalized-alpha";
   }
   return "?";
 }
 
 std::optional<Integrator> parse_integrator(std::string_view text) {
-  for (Integrator i : {Integrator::ida, Integrator::cvode}) {
+  for (Integrator i : {Integrator::ida, Integrator::cvode, Integrator::arkode, Integrator::generalized_alpha}) {
     if (text == to_string(i)) return i;
   }
   return std::nullopt;
 }
 
-std::string integrator_choices() { return "ida|cvode"; }
+std::string integrator_choices() { return "ida|cvode|arkode|generalized-alpha"; }
 
 SolverFailure::SolverFailure(std::string solver, std::string cause, double time, std::string remedy)
     : std::runtime_error(solver + " failed at t = " + std::to_string(time) + " s: " + cause + ". Try: " + remedy),
       solver_(std::move(solver)), cause_(std::move(cause)), remedy_(std::move(remedy)), time_(time) {}
 
 RunResult integrate(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings) {
-  return settings.kind == Integrator::ida ? integrate_lagrange(equations, z0, settings)
-                                          : integrate_minimal(equations, z0, settings);
+  switch (settings.kind) {
+    case Integrator::ida: return integrate_lagrange(equations, z0, settings);
+    case Integrator::cvode: return integrate_minimal(equations, z0, settings);
+    case Integrator::arkode: return integrate_explicit(equations, z0, settings);
+    case Integrator::generalized_alpha: return integrate_generalized_alpha(equations, z0, settings);
+  }
+  throw std::invalid_argument("unknown integrator");
 }
 
 namespace sundials {

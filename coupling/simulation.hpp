@@ -12,10 +12,13 @@
 
 namespace ffrf::coupling {
 
-enum class Integrator { ida, cvode };
-std::string_view to_string(Integrator integrator);
+// ida: Lagrange multipliers, stabilized index-2 DAE (IDA BDF); cvode: minimal-coordinate ODE (CVODE
+// BDF); arkode: minimal-coordinate ODE (ARKODE explicit Runge–Kutta, adaptive or fixed step);
+// generalized_alpha: full coordinates, index-3 with the Arnold–Brüls constraint treatment (fixed step).
+enum class Integrator { ida, cvode, arkode, generalized_alpha };
+std::string_view to_string(Integrator integrator);  // "ida", "cvode", "arkode", "generalized-alpha"
 std::optional<Integrator> parse_integrator(std::string_view text);
-std::string integrator_choices();  // "ida|cvode"
+std::string integrator_choices();  // "ida|cvode|arkode|generalized-alpha"
 
 struct IntegratorSettings {
   Integrator kind = Integrator::cvode;
@@ -23,7 +26,11 @@ struct IntegratorSettings {
   double absolute_tolerance = 1e-8;  // scaled by CraneEquations::coordinate_scale()
   double duration = 120.0;           // [s]
   double output_interval = 0.05;     // [s]
-  long max_steps = 500000;
+  long max_steps = 500000;           // per output interval (SUNDIALS semantics)
+  // Fixed step [s]: required > 0 for generalized-α (rounded down to divide the output interval);
+  // for arkode 0 = adaptive with the tolerances, > 0 = this fixed step (outputs interpolated).
+  double fixed_step = 0.0;
+  double spectral_radius = 0.8;      // ρ∞ ∈ [0, 1] of generalized-α (1: no numerical dissipation)
   bool progress = false;             // print progress on stderr (callers set it for terminals only)
 };
 
@@ -34,6 +41,7 @@ struct SolverStats {
   long newton_iterations = 0;
   long error_test_failures = 0;
   long convergence_failures = 0;
+  double step = 0.0;               // the step actually taken by a fixed-step run [s] (0: adaptive)
   double wall_seconds = 0.0;
 };
 
@@ -67,6 +75,18 @@ class SolverFailure : public std::runtime_error {
 RunResult integrate_minimal(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings);
 // IDA on the stabilized index-2 (Gear–Gupta–Leimkuhler) DAE in full coordinates from z0 at rest.
 RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings);
+// ARKODE ERKStep (explicit Runge–Kutta, Zonneveld 4(3)) on the minimal-coordinate ODE from z0
+// at rest; adaptive, or fixed step with instability detection (SolverFailure "unstable: ...").
+RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings);
+// Largest fixed ERK step that is linearly stable about (z0, ż = 0) at t = 0: min over the
+// eigenvalues μ of ∂ẏ/∂y (finite differences) of the stability boundary of the table along μ's ray / |μ|.
+double explicit_stable_step(CraneEquations& equations, const Eigen::VectorXd& z0);
+// The ERK table's stability boundary on the imaginary axis (h ω_max limit for undamped modes).
+double explicit_imaginary_axis_boundary();
+// Generalized-α (Chung–Hulbert ρ∞, Arnold–Brüls index-3 constraints) in full coordinates from z0
+// at rest, fixed step settings.fixed_step; Newton on (q̈, λ) with a modified-Newton iteration matrix.
+RunResult integrate_generalized_alpha(CraneEquations& equations, const Eigen::VectorXd& z0,
+                                      const IntegratorSettings& settings);
 // Dispatch on settings.kind.
 RunResult integrate(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings);
 

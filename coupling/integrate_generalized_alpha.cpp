@@ -1,0 +1,249 @@
+// Generalized-α (Chung & Hulbert 1993) for the crane in full coordinates with the clamp at B as
+// index-3 constraints, in the form of Arnold & Brüls (2007, Multibody Syst. Dyn. 18:185): each
+// step solves M(q)q̈ − Q(q, v, t) + C_qᵀλ = 0, C(q)/(βh²) = 0 at t_{n+1} for (q̈_{n+1}, λ_{n+1}) with
+//   (1−α_m) a_{n+1} + α_m a_n = (1−α_f) q̈_{n+1} + α_f q̈_n,
+//   q_{n+1} = q_n + h v_n + h²(½−β) a_n + h²β a_{n+1},   v_{n+1} = v_n + h(1−γ) a_n + hγ a_{n+1},
+// by modified Newton with a dense finite-difference iteration matrix kept across steps while
+// Newton converges in ≤ 4 iterations. The step is rounded down to divide the output interval, so
+// every output is a step (no interpolation).
+#include <Eigen/LU>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "coupling/simulation.hpp"
+#include "coupling/sundials_support.hpp"
+
+namespace ffrf::coupling {
+namespace {
+
+constexpr int constraints = CraneEquations::constraint_count;
+constexpr int kept_matrix_iterations = 4;   // refresh the iteration matrix beyond this
+constexpr int fresh_matrix_iterations = 12;  // give up beyond this with a fresh matrix
+constexpr double newton_tolerance = 0.1;  // WRMS norm of the correction in units of rtol|x| + atol·scale
+constexpr const char* solver_name = "generalized-α";
+
+class GeneralizedAlpha {
+ public:
+  GeneralizedAlpha(CraneEquations& equations, const IntegratorSettings& settings, double h, RunResult& result)
+      : eq_(equations), n_(equations.full_size()), h_(h), settings_(settings), stats_(result.stats) {
+    const double rho = settings.spectral_radius;
+    alpha_m_ = (2.0 * rho - 1.0) / (rho + 1.0);
+    alpha_f_ = rho / (rho + 1.0);
+    gamma_ = 0.5 + alpha_f_ - alpha_m_;
+    beta_ = 0.25 * (gamma_ + 0.5) * (gamma_ + 0.5);
+    beta_prime_ = h * h * beta_ * (1.0 - alpha_f_) / (1.0 - alpha_m_);  // ∂q_{n+1}/∂q̈_{n+1}
+    gamma_prime_ = h * gamma_ * (1.0 - alpha_f_) / (1.0 - alpha_m_);    // ∂v_{n+1}/∂q̈_{n+1}
+    const int m = n_ + constraints;
+    for (Eigen::VectorXd* x : {&q_, &v_, &a_, &acc_, &q1_, &v1_, &a1_, &x_acc_, &mass_times_, &forces_, &scale_,
+                               &weight_q_, &weight_v_}) {
+      x->setZero(n_);
+    }
+    r_.setZero(m);
+    r_probe_.setZero(m);
+    delta_.setZero(m);
+    matrix_.setZero(m, m);
+    lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(m);
+    jacobian_.setZero(constraints, n_);
+    lambda_.setZero();
+  }
+
+  // Consistent start at rest: q̈0, λ0 from [M C_qᵀ; C_q 0][q̈; λ] = [Q; −(C_q v)_q v], a_0 = q̈0.
+  void start(const Eigen::VectorXd& z0) {
+    eq_.full_from_minimal(z0, Eigen::VectorXd::Zero(z0.size()), q_, v_);
+    const Eigen::VectorXd minimal_scale = eq_.coordinate_scale();
+    Eigen::VectorXd ignore(n_);
+    eq_.full_from_minimal(minimal_scale, minimal_scale, scale_, ignore);
+    scale_ = scale_.cwiseAbs().cwiseMax(Eigen::VectorXd::Constant(n_, 1e-2));
+    Eigen::MatrixXd augmented = Eigen::MatrixXd::Zero(n_ + constraints, n_ + constraints);
+    augmented.topLeftCorner(n_, n_) = eq_.full_mass_matrix(q_);
+    eq_.constraint_jacobian(q_, jacobian_);
+    augmented.topRightCorner(n_, constraints) = jacobian_.transpose();
+    augmented.bottomLeftCorner(constraints, n_) = jacobian_;
+    Eigen::VectorXd rhs(n_ + constraints);
+    eq_.full_forces(0.0, q_, v_, forces_);
+    rhs.head(n_) = forces_;
+    Eigen::Vector3d gamma;
+    eq_.constraint_rate_terms(q_, v_, gamma);
+    rhs.tail(constraints) = gamma;
+    const Eigen::VectorXd solution = augmented.partialPivLu().solve(rhs);
+    acc_ = solution.head(n_);
+    lambda_ = solution.tail(constraints);
+    a_ = acc_;
+    stretch_ = eq_.wire_stretch_full(q_);
+  }
+
+  // One step from t to t + h; wire slack/taut transitions located by linear interpolation.
+  void step(double t, std::vector<WireEvent>& events) {
+    const double t1 = t + h_;
+    x_acc_ = acc_;  // predictor: the last acceleration and multipliers
+    x_lambda_ = lambda_;
+    bool fresh = false;
+    int iterations = 0, since_refresh = 0;
+    double previous = std::numeric_limits<double>::infinity();
+    while (true) {
+      residual(t1, x_acc_, x_lambda_, r_);
+      if (!r_.allFinite()) fail(t, "the residual is not finite (the solution diverged)");
+      if (need_matrix_) {
+        form_matrix(t1);
+        fresh = true;
+        need_matrix_ = false;
+        since_refresh = 0;
+        previous = std::numeric_limits<double>::infinity();
+      }
+      delta_.noalias() = lu_.solve(r_);
+      x_acc_ -= delta_.head(n_);
+      x_lambda_ -= delta_.tail<constraints>();
+      ++iterations;
+      ++since_refresh;
+      ++stats_.newton_iterations;
+      const double norm = correction_norm();
+      const double ratio = norm / previous;
+      // Converged: the correction is well inside the tolerances, or within them and no longer
+      // shrinking (the round-off floor of the residual).
+      if (norm <= newton_tolerance || (norm <= 1.0 && ratio >= 0.5)) break;
+      previous = norm;
+      if (!std::isfinite(norm) || (fresh && (since_refresh >= fresh_matrix_iterations || ratio > 2.0))) {
+        ++stats_.convergence_failures;
+        fail(t, "Newton diverged at step " + std::to_string(stats_.steps + 1) + " (correction norm " +
+                    std::to_string(norm) + " after " + std::to_string(iterations) + " iterations)");
+      }
+      if (!fresh && (since_refresh >= kept_matrix_iterations || ratio > 0.9)) need_matrix_ = true;
+    }
+    if (iterations > kept_matrix_iterations) need_matrix_ = true;
+    kinematics(x_acc_);
+    q_.swap(q1_);
+    v_.swap(v1_);
+    a_.swap(a1_);
+    acc_ = x_acc_;
+    lambda_ = x_lambda_;
+    ++stats_.steps;
+    const double stretch = eq_.wire_stretch_full(q_);
+    if ((stretch > 0.0) != (stretch_ > 0.0)) {
+      events.push_back({t + h_ * stretch_ / (stretch_ - stretch), stretch <= 0.0});
+    }
+    stretch_ = stretch;
+  }
+
+  CraneOutputs outputs(double t) { return eq_.full_outputs(t, q_, v_, lambda_); }
+  bool finite() const { return q_.allFinite() && v_.allFinite() && lambda_.allFinite(); }
+
+ private:
+  void kinematics(const Eigen::VectorXd& acc1) {
+    a1_ = ((1.0 - alpha_f_) * acc1 + alpha_f_ * acc_ - alpha_m_ * a_) / (1.0 - alpha_m_);
+    q1_ = q_ + h_ * v_ + (h_ * h_ * (0.5 - beta_)) * a_ + (h_ * h_ * beta_) * a1_;
+    v1_ = v_ + (h_ * (1.0 - gamma_)) * a_ + (h_ * gamma_) * a1_;
+  }
+
+  // [M q̈ − Q + C_qᵀλ ; C(q)/(βh²)] at (q_{n+1}, v_{n+1}) from the trial q̈_{n+1}.
+  void residual(double t1, const Eigen::VectorXd& acc1, const Eigen::Vector3d& lambda, Eigen::VectorXd& out) {
+    kinematics(acc1);
+    eq_.full_mass_times(q1_, acc1, mass_times_);
+    eq_.full_forces(t1, q1_, v1_, forces_);
+    eq_.constraint_jacobian(q1_, jacobian_);
+    out.head(n_) = mass_times_ - forces_;
+    out.head(n_).noalias() += jacobian_.transpose() * lambda;
+    Eigen::Vector3d c;
+    eq_.constraint(q1_, c);
+    out.tail<constraints>() = c / (beta_ * h_ * h_);
+    ++stats_.function_evaluations;
+  }
+
+  // Dense iteration matrix: q̈ columns by forward differences of the residual (r_ holds the base
+  // residual), λ columns analytic [C_qᵀ; 0].
+  void form_matrix(double t1) {
+    const double root_eps = std::sqrt(std::numeric_limits<double>::epsilon());
+    for (int j = 0; j < n_; ++j) {
+      const double saved = x_acc_(j);
+      const double increment = root_eps * std::max(std::abs(saved), std::max(std::abs(q1_(j)), scale_(j)) / beta_prime_);
+      x_acc_(j) = saved + increment;
+      residual(t1, x_acc_, x_lambda_, r_probe_);
+      matrix_.col(j) = (r_probe_ - r_) / increment;
+      x_acc_(j) = saved;
+    }
+    kinematics(x_acc_);
+    eq_.constraint_jacobian(q1_, jacobian_);
+    matrix_.topRightCorner(n_, constraints) = jacobian_.transpose();
+    matrix_.bottomRightCorner<constraints, constraints>().setZero();
+    lu_.compute(matrix_);
+    ++stats_.jacobian_evaluations;
+  }
+
+  // Largest WRMS norm of the position and velocity corrections the q̈ correction implies.
+  double correction_norm() {
+    weight_q_ = settings_.relative_tolerance * q1_.cwiseAbs() + settings_.absolute_tolerance * scale_;
+    weight_v_ = settings_.relative_tolerance * v1_.cwiseAbs() + settings_.absolute_tolerance * scale_;
+    const double nq = (beta_prime_ * delta_.head(n_).cwiseQuotient(weight_q_)).norm();
+    const double nv = (gamma_prime_ * delta_.head(n_).cwiseQuotient(weight_v_)).norm();
+    return std::max(nq, nv) / std::sqrt(static_cast<double>(n_));
+  }
+
+  [[noreturn]] void fail(double t, const std::string& cause) {
+    throw SolverFailure(solver_name, cause, t,
+                        "reduce --step (now " + std::to_string(h_) + " s), or use an adaptive integrator (cvode, ida)");
+  }
+
+  CraneEquations& eq_;
+  int n_;
+  double h_;
+  const IntegratorSettings& settings_;
+  SolverStats& stats_;
+  double alpha_m_ = 0, alpha_f_ = 0, gamma_ = 0, beta_ = 0, beta_prime_ = 0, gamma_prime_ = 0;
+  Eigen::VectorXd q_, v_, a_, acc_;  // state at t_n (acc_ = q̈_n, a_ the auxiliary acceleration)
+  Eigen::Vector3d lambda_, x_lambda_;
+  Eigen::VectorXd q1_, v1_, a1_, x_acc_;  // trial values at t_{n+1}
+  Eigen::VectorXd mass_times_, forces_, scale_, weight_q_, weight_v_, r_, r_probe_, delta_;
+  Eigen::MatrixXd jacobian_, matrix_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  bool need_matrix_ = true;
+  double stretch_ = 0.0;
+};
+
+}  // namespace
+
+RunResult integrate_generalized_alpha(CraneEquations& equations, const Eigen::VectorXd& z0,
+                                      const IntegratorSettings& settings) {
+  const auto start = std::chrono::steady_clock::now();
+  if (!(settings.fixed_step > 0.0) || !std::isfinite(settings.fixed_step)) {
+    throw SolverFailure(solver_name, "no step size given (fixed_step = " + std::to_string(settings.fixed_step) + ")",
+                        0.0, "give a fixed step > 0, e.g. --step 0.01");
+  }
+  if (!(settings.spectral_radius >= 0.0 && settings.spectral_radius <= 1.0)) {
+    throw SolverFailure(solver_name, "spectral radius ρ∞ = " + std::to_string(settings.spectral_radius) + " outside [0, 1]",
+                        0.0, "choose ρ∞ in [0, 1] (0.8 is common; 1 = no numerical dissipation)");
+  }
+  // Steps land on every output time: h = Δt_out / ⌈Δt_out / fixed_step⌉.
+  const long per_output = std::max(1L, static_cast<long>(std::ceil(settings.output_interval / settings.fixed_step - 1e-9)));
+  const double h = settings.output_interval / static_cast<double>(per_output);
+
+  RunResult result;
+  result.stats.step = h;
+  GeneralizedAlpha solver(equations, settings, h, result);
+  solver.start(z0);
+  sundials::Progress progress(settings.progress, settings.duration, "generalized-alpha");
+  result.time.push_back(0.0);
+  result.samples.push_back(solver.outputs(0.0));
+  const long outputs = std::lround(settings.duration / settings.output_interval);
+  for (long k = 1; k <= outputs; ++k) {
+    const double t0 = static_cast<double>(k - 1) * settings.output_interval;
+    try {
+      for (long i = 0; i < per_output; ++i) solver.step(t0 + static_cast<double>(i) * h, result.wire_events);
+    } catch (const SolverFailure&) {
+      progress.finish();
+      throw;
+    }
+    const double t_out = static_cast<double>(k) * settings.output_interval;
+    if (!solver.finite()) {
+      progress.finish();
+      throw SolverFailure(solver_name, "the solution is not finite", t_out, "reduce --step");
+    }
+    result.time.push_back(t_out);
+    result.samples.push_back(solver.outputs(t_out));
+    progress.update(t_out);
+  }
+  progress.finish();
+  result.stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace ffrf::coupling
