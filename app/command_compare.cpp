@@ -1,0 +1,103 @@
+// `ffrf compare SCENE`: the boom models of compared_models() (rigid, nodal N = 1 as in the paper,
+// nodal N = 16) on one scene, each from its static equilibrium: a text summary (or --json) and,
+// with --out DIR, each model's time series, overlaid charts, summary.json and report.md, written
+// completely or not at all. Exit 2 for bad input, 3 when a solver fails.
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/compare_report.hpp"
+#include "app/crane_charts.hpp"
+#include "app/crane_commands.hpp"
+#include "app/gnuplot.hpp"
+#include "app/output_directory.hpp"
+#include "cases/scene_loader.hpp"
+
+namespace ffrf::app {
+namespace {
+
+struct CompareOptions {
+  std::string scene;
+  DynamicsOptions dynamics;
+  bool json = false;
+  std::string out;
+};
+
+void write_outputs(StagedDirectory& out, const Comparison& comparison) {
+  std::vector<ChartSource> sources;
+  for (const ModelRun& run : comparison.runs) {
+    out.write(timeseries_name(run), timeseries_csv(run));
+    sources.push_back({timeseries_name(run), run.choice.label()});
+  }
+  const RunContext& c = comparison.context;
+  draw_crane_charts(out, sources,
+                    fmt::format("{}, {} (rtol {:g})", c.scene->name.empty() ? c.scene_file : c.scene->name,
+                                coupling::to_string(c.settings.kind), c.settings.relative_tolerance),
+                    "ffrf compare --out");
+  out.write("report.md", compare_markdown(comparison));
+  out.write("summary.json", compare_json(comparison));
+  out.commit();
+}
+
+int run_compare(const CompareOptions& options) {
+  const std::optional<cases::Scene> scene = load_crane_scene(options.scene, "compare");
+  if (!scene) return exit_bad_input;
+  const SettingsOrError settings = integrator_settings(options.dynamics, *scene);
+  if (!settings.settings) {
+    fmt::print(stderr, "ffrf compare: error: {}\n", settings.error);
+    return exit_bad_input;
+  }
+  std::optional<StagedDirectory> out;
+  if (!options.out.empty()) {
+    png_terminal();  // fail before the computation when gnuplot is missing
+    out.emplace(options.out, "summary.json");
+  }
+  const bool terminal = ::isatty(STDERR_FILENO) != 0;
+  std::vector<ModelRun> runs;
+  std::size_t reference = 0;
+  for (const ComparedModel& model : compared_models()) {
+    if (terminal) fmt::print(stderr, "\r\033[Kffrf compare: {} ...\n", model.choice.label());
+    if (model.reference) reference = runs.size();
+    try {
+      runs.push_back(run_model(*scene, model.choice, *settings.settings));
+    } catch (const cases::SceneError& error) {
+      for (const auto& problem : error.problems()) fmt::print(stderr, "{}\n", cases::format_problem(problem));
+      fmt::print(stderr, "ffrf compare: error: {}: the scene cannot make the {} crane\n", options.scene,
+                 model.choice.label());
+      return exit_bad_input;
+    } catch (const coupling::SolverFailure& failure) {
+      fmt::print(stderr, "ffrf compare: solver failure ({}): {}\n", model.choice.label(), failure.what());
+      if (out) fmt::print(stderr, "ffrf compare: nothing written to {}\n", options.out);
+      return exit_solver_failure;
+    }
+  }
+  const Comparison comparison = make_comparison(make_context(options.scene, *scene, *settings.settings), std::move(runs), reference);
+  if (out) write_outputs(*out, comparison);
+  fmt::print("{}", options.json ? compare_json(comparison) : compare_text(comparison));
+  if (!options.out.empty() && !options.json) fmt::print("\nwrote {} (report.md)\n", options.out);
+  return exit_ok;
+}
+
+}  // namespace
+
+Command add_compare_command(CLI::App& parent) {
+  auto options = std::make_shared<CompareOptions>();
+  // IDA by default: CVODE on the minimal coordinates currently needs thousands of steps per
+  // simulated second for N >= 8 (nonlinear convergence failures on almost every step), IDA does not.
+  options->dynamics.integrator = "ida";
+  CLI::App* sub = parent.add_subcommand(
+      "compare", "Rigid, nodal N = 1 (the paper's model) and nodal N = 16 booms on one scene: charts, differences, costs");
+  sub->add_option("scene", options->scene, "Scene file (TOML) with [hull], [boom], [cargo] and [wire]")->required();
+  add_dynamics_options(*sub, options->dynamics);
+  sub->add_flag("--json", options->json, "Print the JSON summary on stdout instead of the text summary");
+  sub->add_option("--out", options->out,
+                  "Write report.md, summary.json, each model's timeseries_MODEL.csv and the overlaid PNG charts (with "
+                  "their gnuplot scripts) into this directory");
+  return {sub, [options] { return run_compare(*options); }};
+}
+
+}  // namespace ffrf::app

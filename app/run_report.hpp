@@ -1,0 +1,39 @@
+// What `ffrf run` reports about one model's run: the static-equilibrium report, the human summary
+// (stdout) and the JSON summary (summary.json, and stdout with --json). The JSON blocks of one
+// model are shared with `ffrf compare`.
+#pragma once
+
+#include <string>
+
+#include "app/crane_run.hpp"
+#include "app/json_writer.hpp"
+
+namespace ffrf::app {
+
+// Where a run came from: the scene and the integrator settings, this program's version, the date.
+struct RunContext {
+  std::string scene_file;
+  const cases::Scene* scene = nullptr;
+  coupling::IntegratorSettings settings;
+  std::string date;  // ISO 8601, UTC
+};
+RunContext make_context(const std::string& scene_file, const cases::Scene& scene,
+                        const coupling::IntegratorSettings& settings);
+std::string ffrf_version();
+
+// The static equilibrium in a few lines (draft and trim, tip deflection, wire, joint reaction).
+std::string static_report(const cases::Scene& scene, const ModelRun& run);
+
+// Writes the keys common to the settings (scene, integrator, tolerances, duration, version, date)
+// into an open JSON object.
+void write_settings_json(JsonWriter& json, const RunContext& context);
+// Writes one model's keys (model, static_equilibrium, outputs, wire, solver, ...) into an open object.
+void write_model_json(JsonWriter& json, const cases::Scene& scene, const ModelRun& run);
+
+std::string run_json(const RunContext& context, const ModelRun& run);
+// The human summary: the header (scene, model, integrator), then static_report(), then the
+// dynamics (statistics table, wire, solver costs).
+std::string run_header_text(const RunContext& context, const ModelRun& run);
+std::string dynamics_text(const ModelRun& run);
+
+}  // namespace ffrf::app

@@ -1,0 +1,158 @@
+// End-to-end: `ffrf run` and `ffrf compare` on the reference scene with short durations and few
+// elements. The CSV header is the documented one and its first row is the static equilibrium (wire
+// tension = cargo weight); the JSON summary has the documented fields; the charts are PNG files;
+// compare's report names the three models and embeds the charts.
+#include <cmath>
+
+#include "cli_harness.hpp"
+
+namespace ffrf::test {
+namespace {
+
+const std::string kScene = source_file("cases/paper_floating_crane.toml");
+constexpr double kCargoWeight = 1.3e6 * 9.81;  // [N], the reference scene's cargo
+const char* const kCharts[] = {"crane_heave", "crane_pitch", "cargo_heave", "cargo_pitch", "wire_tension", "tip_deflection"};
+const char* const kHeader =
+    "time_s,crane_surge_m,crane_heave_m,crane_pitch_deg,cargo_surge_m,cargo_heave_m,cargo_pitch_deg,tip_axial_m,"
+    "tip_transverse_m,wire_tension_N,joint_force_x_N,joint_force_y_N,joint_moment_Nm,constraint_residual_m,"
+    "kinetic_energy_J,gravity_energy_J,strain_energy_J,wire_energy_J,spring_energy_J";
+
+bool is_png(const fs::path& path) {
+  const std::string bytes = read_text(path);
+  return bytes.size() > 8 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(text);
+  while (std::getline(in, part, separator)) parts.push_back(part);
+  return parts;
+}
+
+std::size_t column(const std::string& header, const std::string& name) {
+  const auto names = split(header, ',');
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i] == name) return i;
+  }
+  ADD_FAILURE() << "no column " << name;
+  return 0;
+}
+
+void expect_mentions(const std::string& text, const std::vector<std::string>& parts) {
+  for (const std::string& part : parts) EXPECT_NE(text.find(part), std::string::npos) << "'" << part << "' not in:\n" << text;
+}
+
+TEST(CliRun, WritesTheDocumentedCsvJsonAndCharts) {
+  TempDir dir;
+  const fs::path out = dir / "run out";
+  const RunResult r = run_ffrf("run " + kScene + " --elements 3 --duration 3 --json --out '" + out.string() + "'", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  const auto rows = split(read_text(out / "timeseries.csv"), '\n');
+  ASSERT_EQ(rows.size(), 1u + 61u);  // header, t = 0, 0.05, ..., 3
+  EXPECT_EQ(rows[0], kHeader);
+  const auto first = split(rows[1], ',');
+  ASSERT_EQ(first.size(), split(kHeader, ',').size());
+  EXPECT_EQ(std::stod(first[0]), 0.0);
+  EXPECT_NEAR(std::stod(first[column(kHeader, "wire_tension_N")]) / kCargoWeight, 1.0, 1e-6) << "t = 0 is static equilibrium";
+  for (const char* motion : {"crane_heave_m", "cargo_heave_m", "crane_pitch_deg"}) {
+    EXPECT_EQ(std::stod(first[column(kHeader, motion)]), 0.0) << motion << ": displacement from static equilibrium";
+  }
+  EXPECT_NEAR(std::stod(split(rows.back(), ',')[0]), 3.0, 1e-12);
+
+  const Json json = JsonParser(r.out).parse();
+  EXPECT_EQ(read_text(out / "summary.json"), r.out) << "--json prints summary.json";
+  const Json& provenance = json["provenance"];
+  EXPECT_EQ(provenance["scene"].text, kScene);
+  EXPECT_EQ(provenance["integrator"].text, "cvode");
+  EXPECT_EQ(provenance["rtol"].number, 1e-6);
+  EXPECT_EQ(provenance["atol"].number, 1e-6);
+  EXPECT_EQ(provenance["duration_s"].number, 3.0);
+  EXPECT_EQ(provenance["output_interval_s"].number, 0.05);
+  EXPECT_FALSE(provenance["ffrf_version"].text.empty());
+  EXPECT_EQ(provenance["date"].text.size(), 20u);  // 2026-01-01T00:00:00Z
+  EXPECT_EQ(json["model"].text, "nodal N=3");
+  EXPECT_EQ(json["elastic_dof"].number, 9);
+  const Json& statics = json["static_equilibrium"];
+  EXPECT_NEAR(statics["wire_tension_N"].number / kCargoWeight, 1.0, 1e-8);
+  EXPECT_NEAR(statics["wire_stretch_m"].number, kCargoWeight / 2.0e8, 1e-9);
+  EXPECT_GT(statics["hull_draft_mid_length_m"].number, 0.0);
+  EXPECT_LT(std::abs(statics["hull_trim_deg"].number), 1.0);
+  EXPECT_LT(statics["tip_transverse_m"].number, 0.0);
+  EXPECT_FALSE(statics["geometric_stiffening_modelled"].flag);
+  for (const auto& name : split(kHeader, ',')) {
+    if (name == "time_s") continue;
+    const Json& stats = json["outputs"][name];
+    EXPECT_LE(stats["min"].number, stats["max"].number) << name;
+    EXPECT_GE(stats["rms_about_static"].number, 0.0) << name;
+  }
+  EXPECT_FALSE(json["statistics_window"]["after_ramp"].flag) << "3 s ends within the 20 s ramp";
+  EXPECT_GE(json["wire"]["dynamic_amplification_factor"].number, 1.0);
+  EXPECT_EQ(json["wire"]["slack_events"].number, 0.0);
+  EXPECT_EQ(json["max_constraint_residual_m"].number, 0.0) << "minimal coordinates";
+  const Json& solver = json["solver"];
+  for (const char* counter : {"steps", "function_evaluations", "jacobian_evaluations", "newton_iterations"}) {
+    EXPECT_GT(solver[counter].number, 0.0) << counter;
+  }
+  EXPECT_GE(solver["error_test_failures"].number, 0.0);
+  EXPECT_GE(solver["convergence_failures"].number, 0.0);
+  EXPECT_GT(solver["wall_time_s"].number, 0.0);
+  EXPECT_NEAR(solver["real_time_factor"].number * solver["wall_time_s"].number, 3.0, 1e-9);
+
+  for (const char* chart : kCharts) {
+    EXPECT_TRUE(is_png(out / (std::string(chart) + ".png"))) << chart;
+    EXPECT_GT(fs::file_size(out / (std::string(chart) + ".gp")), 0u) << chart;
+  }
+}
+
+TEST(CliRun, TextReportShowsTheStaticEquilibriumAndSaysTheModelIsLinear) {
+  TempDir dir;
+  const RunResult r = run_ffrf("run " + kScene + " --boom rigid --integrator ida --duration 2", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  expect_mentions(r.out, {"static equilibrium", "draft", "trim", "stretch", "tension", "joint B",
+                          "geometric stiffening not modelled", "dynamic amplification factor", "rigid (0 elastic DOFs)",
+                          "ida", "wall time"});
+}
+
+TEST(CliRun, LagrangeMultiplierRunKeepsTheConstraint) {
+  TempDir dir;
+  const RunResult r = run_ffrf("run " + kScene + " --elements 2 --integrator ida --duration 2 --json", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json json = JsonParser(r.out).parse();
+  EXPECT_EQ(json["provenance"]["integrator"].text, "ida");
+  EXPECT_LT(json["max_constraint_residual_m"].number, 1e-6);
+  EXPECT_NEAR(json["static_equilibrium"]["wire_tension_N"].number / kCargoWeight, 1.0, 1e-8);
+}
+
+TEST(CliCompare, WritesReportWithTheThreeModelsAndTheCharts) {
+  TempDir dir;
+  const fs::path out = dir / "compare";
+  const RunResult r = run_ffrf("compare " + kScene + " --duration 3 --out '" + out.string() + "'", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string report = read_text(out / "report.md");
+  expect_mentions(report, {"rigid", "nodal N=1", "nodal N=16", "not a converged reference", "Static equilibrium",
+                           "Differences relative to nodal N=16", "Solver costs", "real-time factor"});
+  for (const char* chart : kCharts) {
+    std::string link = "(";  // not "(" + std::string(chart): GCC 12 -Wrestrict false positive
+    link += chart;
+    link += ".png)";
+    expect_mentions(report, {link});
+    EXPECT_TRUE(is_png(out / (std::string(chart) + ".png"))) << chart;
+  }
+  for (const char* csv : {"timeseries_rigid.csv", "timeseries_nodal_N1.csv", "timeseries_nodal_N16.csv"}) {
+    EXPECT_EQ(split(read_text(out / csv), '\n').at(0), kHeader) << csv;
+  }
+  const Json json = JsonParser(read_text(out / "summary.json")).parse();
+  EXPECT_EQ(json["reference_model"].text, "nodal N=16");
+  ASSERT_EQ(json["models"].items.size(), 3u);
+  EXPECT_EQ(json["models"][0]["model"].text, "rigid");
+  EXPECT_EQ(json["models"][1]["model"].text, "nodal N=1");
+  EXPECT_EQ(json["models"][2]["elastic_dof"].number, 48);
+  EXPECT_EQ(json["models"][2]["differences_to_reference"]["cargo_heave_m"]["max_abs"].number, 0.0);
+  EXPECT_GT(json["models"][0]["differences_to_reference"]["cargo_heave_m"]["max_abs"].number, 0.0);
+  expect_mentions(r.out, {"rigid", "nodal N=1", "nodal N=16", "(reference)"});
+}
+
+}  // namespace
+}  // namespace ffrf::test
