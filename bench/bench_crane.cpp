@@ -13,7 +13,9 @@
 // Jacobians, Jacobian evaluations).
 // Options (before Google Benchmark's own): --quick (or FFRF_BENCH_QUICK=1) simulates 20 s instead
 // of 120 s, for smoke tests; --duration=SECONDS any other simulated time; --scene=PATH another
-// scene file.
+// scene file; --all also runs CVODE with nodal N = 16 and 64, left out by default because CVODE
+// does not finish them (Newton convergence failures after nearly every Jacobian, see
+// docs/performance.md): without a fix in the library they run for hours.
 #include <benchmark/benchmark.h>
 #include <fmt/core.h>
 
@@ -79,11 +81,12 @@ std::string benchmark_model_name(const BoomChoice& choice) {
   return "?";
 }
 
-std::vector<Case> cases() {
+std::vector<Case> cases(bool all) {
   std::vector<Case> list;
   for (const Integrator integrator : {Integrator::cvode, Integrator::ida}) {
     list.push_back({{.kind = BoomKind::rigid}, integrator, 3});
     for (const int elements : {1, 4, 16, 64}) {
+      if (!all && integrator == Integrator::cvode && elements >= 16) continue;
       const int iterations = elements <= 4 ? 3 : elements == 16 ? 2 : 1;
       list.push_back({{.kind = BoomKind::nodal, .elements = elements}, integrator, iterations});
     }
@@ -187,6 +190,7 @@ bool quick_from_environment() {
 
 int main(int argc, char** argv) {
   bool quick = quick_from_environment();
+  bool all = false;
   double duration = 0.0;  // 0: the default (kFullDuration, or kQuickDuration with --quick)
   std::string scene_path = FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml";
   // Take our own options out of argv before Google Benchmark parses the rest.
@@ -195,6 +199,8 @@ int main(int argc, char** argv) {
     const std::string_view argument(argv[i]);
     if (argument == "--quick") {
       quick = true;
+    } else if (argument == "--all") {
+      all = true;
     } else if (argument.starts_with("--duration=")) {
       duration = std::stod(std::string(argument.substr(11)));
     } else if (argument.starts_with("--scene=")) {
@@ -214,7 +220,7 @@ int main(int argc, char** argv) {
   }
   context.duration = duration > 0.0 ? duration : quick ? kQuickDuration : kFullDuration;
 
-  for (const Case& c : cases()) {
+  for (const Case& c : cases(all)) {
     context.order.push_back(key_of(c.choice, c.integrator));
     const std::string name = fmt::format("crane/{}/{}", to_string(c.integrator), benchmark_model_name(c.choice));
     benchmark::RegisterBenchmark(name.c_str(), run_crane, &context, c)
@@ -227,6 +233,6 @@ int main(int argc, char** argv) {
   TableCollector table;
   benchmark::RunSpecifiedBenchmarks(&table);
   benchmark::Shutdown();
-  print_table(context, table);
+  if (!context.rows.empty()) print_table(context, table);  // nothing ran with --benchmark_list_tests
   return 0;
 }
