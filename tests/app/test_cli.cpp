@@ -71,15 +71,15 @@ INSTANTIATE_TEST_SUITE_P(
                       BadScene{"elements = 16", "boom.elements", "elements = -3", "-3", "[1, inf)"},
                       BadScene{"length = 10.0", "boom.length", "length = \"10 kg\"", "\"10 kg\"", "(0, inf) m"},
                       BadScene{"area = 0.01", "boom.area", "area = nan", "nan", "(0, inf) m^2"}),
-    [](const ::testing::TestParamInfo<BadScene>& info) {
+    [](const ::testing::TestParamInfo<BadScene>& param_info) {
       // Readable test names from the rewritten line, e.g. "length_m10_0" for "length = -10.0".
       std::string name;
-      for (char c : info.param.written) {
+      for (char c : param_info.param.written) {
         if (std::isalnum(static_cast<unsigned char>(c))) name += c;
         else if (c == '-') name += 'm';
         else if (c == '.') name += '_';
       }
-      return name + "_" + std::to_string(info.index);
+      return name + "_" + std::to_string(param_info.index);
     });
 
 TEST(CliCheck, ListsEveryProblemAtOnce) {
