@@ -63,6 +63,7 @@ class CraneSystem final : public CraneEquations {
   int n_;
   int cargo_at_;  // index of the cargo block (0 with a fixed hull, 3 otherwise)
   MassFactor<typename Coords::Matrix> elastic_mass_factor_;
+  Eigen::VectorXd elastic_scale_;  // typical size of each elastic coordinate (see the constructor)
   // workspace (allocated once)
   Eigen::VectorXd boom_q_, boom_v_, boom_force_;
   Eigen::Vector2d mount_offset_ = Eigen::Vector2d::Zero();  // A(θ1) b

@@ -15,6 +15,14 @@ CraneSystem<Coords>::CraneSystem(CraneModel<Coords> model)
       cargo_at_(m_.hull.fixed ? 0 : 3),
       boom_q_(3 + n_), boom_v_(3 + n_), boom_force_(3 + n_), elastic_rhs_(n_),
       boom_coupling_(3, n_), hull_elastic_mass_(3, n_), schur_columns_(n_, 3), schur_rhs_(n_) {
+  // Typical size of each elastic coordinate: the η_i that moves some nodal DOF by 1 cm (1 cm or
+  // 0.01 rad for nodal coordinates; 0.01 / max|Φ e_i| for mass-normalized modal ones, whose units
+  // are m·√kg), so tolerances mean the same physical displacement in every coordinate set.
+  elastic_scale_.resize(n_);
+  for (int i = 0; i < n_; ++i) {
+    const double largest = m_.boom.coords().to_nodal(Eigen::VectorXd::Unit(n_, i)).cwiseAbs().maxCoeff();
+    elastic_scale_(i) = largest > 0.0 ? 0.01 / largest : 0.01;
+  }
   if (n_ > 0) {
     elastic_mass_factor_.compute(m_.boom.coords().mass_ff());
     if (elastic_mass_factor_.info() != Eigen::Success) {
@@ -180,7 +188,7 @@ Eigen::VectorXd CraneSystem<Coords>::coordinate_scale() const {
   Eigen::VectorXd scale = Eigen::VectorXd::Constant(minimal_size(), 1.0);
   if (hull_free()) scale(2) = 0.01;
   scale(cargo_at_ + 2) = 0.01;
-  scale.tail(n_).setConstant(0.01);
+  scale.tail(n_) = elastic_scale_;
   return scale;
 }
 

@@ -5,4 +5,5 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 out=results/paper_floating_crane
 ./build/app/ffrf modes cases/paper_floating_crane.toml --modes 8 --out "$out/modes"
-echo "main job done: results in $out"
+./build/app/ffrf compare cases/paper_floating_crane.toml --out "$out/compare"
+echo "main job done: results in $out (report: $out/compare/report.md)"
