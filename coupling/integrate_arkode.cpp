@@ -187,9 +187,7 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
 
   RunResult result;
   result.stats.step = fixed ? settings.fixed_step : 0.0;
-  sundials::Progress progress(settings.progress, settings.duration, "arkode");
   const auto unstable = [&](double t, double energy) {
-    progress.finish();
     const double limit = explicit_stable_step(equations, z0);
     char cause[320];
     if (!fixed) {
@@ -214,36 +212,28 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
     result.time.push_back(t);
     result.samples.push_back(outputs);
   };
-  record(0.0);
-  const long outputs = std::lround(settings.duration / settings.output_interval);
-  double t = 0.0;
-  for (long k = 1; k <= outputs; ++k) {
-    const double t_out = static_cast<double>(k) * settings.output_interval;
-    while (true) {
-      const int flag = ERKStepEvolve(erk, t_out, y.v, &t, ARK_NORMAL);
-      if (flag == ARK_ROOT_RETURN) {
-        int direction = 0;
-        ERKStepGetRootInfo(erk, &direction);
-        result.wire_events.push_back({t, direction < 0});
-        continue;
-      }
-      if (flag == ARK_POSTPROCESS_STEP_FAIL) throw unstable(data.diverged_time, data.diverged_energy);
-      if (flag < 0) {
-        if (fixed && flag != ARK_TOO_MUCH_WORK) throw unstable(t, std::numeric_limits<double>::infinity());
-        progress.finish();
-        throw SolverFailure(solver_name, ERKStepGetReturnFlagName(flag), t,
-                            remedy_for(flag, flag == ARK_TOO_MUCH_WORK ? explicit_stable_step(equations, z0) : NAN));
-      }
-      break;
-    }
-    record(t_out);
-    if (k == 1) {  // E_ref: the kinetic energy at the first output
+  const auto record_and_calibrate = [&](double t) {
+    record(t);
+    if (result.samples.size() == 2) {  // E_ref: the kinetic energy at the first output
       data.energy_reference += result.samples.back().kinetic_energy;
       data.energy_bound = energy_growth_bound * data.energy_reference;
     }
-    progress.update(t_out);
-  }
-  progress.finish();
+  };
+  sundials::sample_outputs(
+      settings, solver_name, ARK_ROOT_RETURN,
+      [&](double t_out, double& t) { return ERKStepEvolve(erk, t_out, y.v, &t, ARK_NORMAL); },
+      [&] {
+        int direction = 0;
+        ERKStepGetRootInfo(erk, &direction);
+        return direction;
+      },
+      [&](int flag, double t) {
+        if (flag == ARK_POSTPROCESS_STEP_FAIL) throw unstable(data.diverged_time, data.diverged_energy);
+        if (fixed && flag != ARK_TOO_MUCH_WORK) throw unstable(t, std::numeric_limits<double>::infinity());
+        throw SolverFailure(solver_name, ERKStepGetReturnFlagName(flag), t,
+                            remedy_for(flag, flag == ARK_TOO_MUCH_WORK ? explicit_stable_step(equations, z0) : NAN));
+      },
+      record_and_calibrate, result.wire_events);
 
   ERKStepGetNumSteps(erk, &result.stats.steps);
   ERKStepGetNumRhsEvals(erk, &result.stats.function_evaluations);

@@ -102,35 +102,20 @@ RunResult integrate_minimal(CraneEquations& equations, const Eigen::VectorXd& z0
   CVodeSetNoInactiveRootWarn(cvode);
 
   RunResult result;
-  sundials::Progress progress(settings.progress, settings.duration, "cvode");
   const auto record = [&](double t) {
     const auto state = y.map();
     result.time.push_back(t);
     result.samples.push_back(equations.minimal_outputs(t, state.head(n), state.tail(n)));
   };
-  record(0.0);
-  const long outputs = std::lround(settings.duration / settings.output_interval);
-  double t = 0.0;
-  for (long k = 1; k <= outputs; ++k) {
-    const double t_out = static_cast<double>(k) * settings.output_interval;
-    while (true) {
-      const int flag = CVode(cvode, t_out, y.v, &t, CV_NORMAL);
-      if (flag == CV_ROOT_RETURN) {
+  sundials::sample_outputs(
+      settings, "cvode", CV_ROOT_RETURN, [&](double t_out, double& t) { return CVode(cvode, t_out, y.v, &t, CV_NORMAL); },
+      [&] {
         int direction = 0;
         CVodeGetRootInfo(cvode, &direction);
-        result.wire_events.push_back({t, direction < 0});
-        continue;
-      }
-      if (flag < 0) {
-        progress.finish();
-        throw SolverFailure("CVODE", CVodeGetReturnFlagName(flag), t, remedy_for(flag));
-      }
-      break;
-    }
-    record(t_out);
-    progress.update(t_out);
-  }
-  progress.finish();
+        return direction;
+      },
+      [](int flag, double t) { throw SolverFailure("CVODE", CVodeGetReturnFlagName(flag), t, remedy_for(flag)); }, record,
+      result.wire_events);
 
   long nfe = 0, nfe_ls = 0;
   CVodeGetNumSteps(cvode, &result.stats.steps);

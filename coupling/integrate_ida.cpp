@@ -120,35 +120,20 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
   IDASetNoInactiveRootWarn(ida);
 
   RunResult result;
-  sundials::Progress progress(settings.progress, settings.duration, "ida");
   const auto record = [&](double t) {
     const auto state = y.map();
     result.time.push_back(t);
     result.samples.push_back(equations.full_outputs(t, state.head(n), state.segment(n, n), state.segment(2 * n, constraints)));
-  };
-  record(0.0);
-  const long outputs = std::lround(settings.duration / settings.output_interval);
-  double t = 0.0;
-  for (long k = 1; k <= outputs; ++k) {
-    const double t_out = static_cast<double>(k) * settings.output_interval;
-    while (true) {
-      const int flag = IDASolve(ida, t_out, &t, y.v, y_dot.v, IDA_NORMAL);
-      if (flag == IDA_ROOT_RETURN) {
+  };  sundials::sample_outputs(
+      settings, "ida", IDA_ROOT_RETURN,
+      [&](double t_out, double& t) { return IDASolve(ida, t_out, &t, y.v, y_dot.v, IDA_NORMAL); },
+      [&] {
         int direction = 0;
         IDAGetRootInfo(ida, &direction);
-        result.wire_events.push_back({t, direction < 0});
-        continue;
-      }
-      if (flag < 0) {
-        progress.finish();
-        throw SolverFailure("IDA", IDAGetReturnFlagName(flag), t, remedy_for(flag));
-      }
-      break;
-    }
-    record(t_out);
-    progress.update(t_out);
-  }
-  progress.finish();
+        return direction;
+      },
+      [](int flag, double t) { throw SolverFailure("IDA", IDAGetReturnFlagName(flag), t, remedy_for(flag)); }, record,
+      result.wire_events);
 
   long nre = 0, nre_ls = 0;
   IDAGetNumSteps(ida, &result.stats.steps);

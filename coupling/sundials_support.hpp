@@ -11,8 +11,12 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <vector>
+
+#include "coupling/simulation.hpp"
 
 namespace ffrf::coupling::sundials {
 
@@ -70,5 +74,38 @@ class Progress {
   const char* label_;
   int last_percent_ = -1;
 };
+
+// The output loop shared by the CVODE, IDA and ARKODE adapters: samples t = 0, then advances the
+// solver to each output time. `advance(t_out, t)` calls the solver and returns its flag (t: the
+// time reached); on `root_return` the wire crossed its unstretched length and `root_direction()`
+// (< 0: going slack) is recorded as an event and the solver continues; a negative flag goes to
+// `fail(flag, t)`, which throws. `record(t)` samples the outputs at t.
+template <class Advance, class RootDirection, class Fail, class Record>
+void sample_outputs(const IntegratorSettings& settings, const char* label, int root_return, Advance advance,
+                    RootDirection root_direction, Fail fail, Record record, std::vector<WireEvent>& events) {
+  Progress progress(settings.progress, settings.duration, label);
+  try {
+    record(0.0);
+    const long outputs = std::lround(settings.duration / settings.output_interval);
+    double t = 0.0;
+    for (long k = 1; k <= outputs; ++k) {
+      const double t_out = static_cast<double>(k) * settings.output_interval;
+      for (int flag = advance(t_out, t);; flag = advance(t_out, t)) {
+        if (flag == root_return) {
+          events.push_back({t, root_direction() < 0});
+          continue;
+        }
+        if (flag < 0) fail(flag, t);
+        break;
+      }
+      record(t_out);
+      progress.update(t_out);
+    }
+  } catch (...) {
+    progress.finish();
+    throw;
+  }
+  progress.finish();
+}
 
 }  // namespace ffrf::coupling::sundials

@@ -29,6 +29,39 @@ inline std::unique_ptr<coupling::CraneEquations> build_with(
   return coupling::make_crane_equations(std::move(model));
 }
 
+// The conservative test crane: no water, waves or damping; the hull held by linear springs only
+// (surge 5e5 N/m, heave 3.6e7 N/m, pitch 5e10 N m/rad), the paper's one-element boom. `start` is
+// its spring-supported static equilibrium released 0.5 m up (hull and cargo together, so the wire
+// keeps its stretch) with the cargo swung 1 m sideways: the wire stays taut throughout.
+struct ConservativeCrane {
+  std::unique_ptr<coupling::CraneEquations> equations;
+  Eigen::VectorXd start;
+};
+
+inline ConservativeCrane conservative_crane() {
+  cases::Scene scene = reference_scene();
+  scene.wave.reset();
+  scene.boom.damping_ratio = 0.0;
+  scene.wire->damping_ratio = 0.0;
+  scene.radiation.surge_damping = scene.radiation.heave_damping = scene.radiation.pitch_damping = 0.0;
+  const double heave_stiffness = 3.6e7;
+  const double weight = (scene.hull->mass + scene.boom.mesh.total_mass() + scene.cargo->mass) * scene.environment.gravity;
+  ConservativeCrane crane;
+  crane.equations = build_with(scene, {cases::BoomKind::nodal, 1, 0, false}, [&](coupling::HullModel& hull, coupling::WireModel&) {
+    hull.hydrostatics = false;
+    hull.mooring_stiffness = 0.0;
+    hull.support_stiffness = Eigen::Vector3d(5.0e5, heave_stiffness, 5.0e10);
+  });
+  Eigen::VectorXd guess = crane.equations->initial_guess();
+  guess(1) -= weight / heave_stiffness;  // start Newton where the heave spring carries the weight
+  guess(4) -= weight / heave_stiffness;
+  crane.start = coupling::solve_static_equilibrium(*crane.equations, guess).z;
+  crane.start(1) += 0.5;
+  crane.start(3) += 1.0;
+  crane.start(4) += 0.5;
+  return crane;
+}
+
 // Mean period of a signal from its upward mean crossings (linear interpolation between samples).
 inline double mean_period(const std::vector<double>& t, const std::vector<double>& x) {
   double mean = 0.0;

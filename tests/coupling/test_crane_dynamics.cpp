@@ -28,26 +28,9 @@ coupling::IntegratorSettings tight(double duration, coupling::Integrator kind = 
 }
 
 TEST(CraneDynamics, EnergyIsConservedWithoutWaterAndDamping) {
-  cases::Scene scene = test::reference_scene();
-  scene.wave.reset();
-  scene.boom.damping_ratio = 0.0;
-  scene.wire->damping_ratio = 0.0;
-  scene.radiation.surge_damping = scene.radiation.heave_damping = scene.radiation.pitch_damping = 0.0;
-  const double weight = (scene.hull->mass + scene.boom.mesh.total_mass() + scene.cargo->mass) * scene.environment.gravity;
-  auto equations = test::build_with(scene, {cases::BoomKind::nodal, 1, 0, false}, [](coupling::HullModel& hull, coupling::WireModel&) {
-    hull.hydrostatics = false;
-    hull.mooring_stiffness = 0.0;
-    hull.support_stiffness = Eigen::Vector3d(5.0e5, 3.6e7, 5.0e10);
-  });
-  // From the spring-supported equilibrium, release the hull 0.5 m up with the cargo and swing the
-  // cargo 1 m sideways (the wire stays taut throughout; the swing excites pitch and surge).
-  Eigen::VectorXd guess = equations->initial_guess();
-  guess(1) -= weight / 3.6e7;  // start Newton where the heave spring carries the weight
-  guess(4) -= weight / 3.6e7;
-  Eigen::VectorXd z = coupling::solve_static_equilibrium(*equations, guess).z;
-  z(1) += 0.5;
-  z(3) += 1.0;
-  z(4) += 0.5;
+  test::ConservativeCrane crane = test::conservative_crane();
+  auto& equations = crane.equations;
+  const Eigen::VectorXd& z = crane.start;
   const coupling::RunResult run = coupling::integrate(*equations, z, tight(100.0));
   EXPECT_TRUE(run.wire_events.empty());
   const auto energy = column(run, [](const coupling::CraneOutputs& o) {

@@ -88,24 +88,9 @@ TEST(Integrators, GeneralizedAlphaKeepsTheConstraintAndTheReaction) {
 }
 
 TEST(Integrators, GeneralizedAlphaWithoutDissipationKeepsTheEnergy) {
-  cases::Scene scene = test::reference_scene();
-  scene.wave.reset();
-  scene.boom.damping_ratio = 0.0;
-  scene.wire->damping_ratio = 0.0;
-  scene.radiation.surge_damping = scene.radiation.heave_damping = scene.radiation.pitch_damping = 0.0;
-  const double weight = (scene.hull->mass + scene.boom.mesh.total_mass() + scene.cargo->mass) * scene.environment.gravity;
-  auto equations = test::build_with(scene, {cases::BoomKind::nodal, 1, 0, false}, [](coupling::HullModel& hull, coupling::WireModel&) {
-    hull.hydrostatics = false;
-    hull.mooring_stiffness = 0.0;
-    hull.support_stiffness = Eigen::Vector3d(5.0e5, 3.6e7, 5.0e10);
-  });
-  Eigen::VectorXd guess = equations->initial_guess();
-  guess(1) -= weight / 3.6e7;
-  guess(4) -= weight / 3.6e7;
-  Eigen::VectorXd z = coupling::solve_static_equilibrium(*equations, guess).z;
-  z(1) += 0.5;  // as in CraneDynamics.EnergyIsConservedWithoutWaterAndDamping
-  z(3) += 1.0;
-  z(4) += 0.5;
+  test::ConservativeCrane crane = test::conservative_crane();
+  auto& equations = crane.equations;
+  const Eigen::VectorXd& z = crane.start;
   double drift[2], first_half[2], second_half[2];
   const double steps[2] = {0.01, 0.005};
   for (int i = 0; i < 2; ++i) {
