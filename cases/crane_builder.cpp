@@ -118,11 +118,18 @@ coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords
 template coupling::CraneModel<nodal::NodalCoordinates> build_crane_model(const Scene&, nodal::NodalCoordinates);
 template coupling::CraneModel<modal::ModalCoordinates> build_crane_model(const Scene&, modal::ModalCoordinates);
 
-modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice) {
+modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, ModeCache* cache) {
   auto beam = boom_beam(scene, choice.kind == BoomKind::rigid ? 1 : choice.elements);
   modal::ModalBasis basis;
   if (choice.kind == BoomKind::rigid) {
     basis.vectors = Eigen::MatrixXd(beam->dofs.free_count(), 0);
+  } else if (cache != nullptr) {
+    const modal::EigenPairs modes = choice.modes > 0 ? cache->lowest_modes(scene, choice.elements, choice.modes, choice.solver)
+                                                     : modal::EigenPairs{Eigen::VectorXd(0), Eigen::MatrixXd(beam->dofs.free_count(), 0), {}};
+    const std::vector<modal::UnitLoad> loads =
+        choice.static_modes ? modal::tip_and_body_unit_loads(beam->mesh) : std::vector<modal::UnitLoad>{};
+    basis = modal::append_static_modes(beam->mesh, beam->dofs, beam->stiffness, beam->mass, modes.eigenvectors,
+                                       modes.eigenvalues, loads);
   } else {
     modal::ModalBasisRequest request;
     request.vibration_modes = choice.modes;
@@ -134,11 +141,11 @@ modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& 
   return modal::ModalCoordinates(beam, std::move(basis));
 }
 
-std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice) {
+std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, ModeCache* cache) {
   if (choice.kind == BoomKind::nodal) {
     return coupling::make_crane_equations(build_crane_model(scene, nodal::NodalCoordinates(boom_beam(scene, choice.elements))));
   }
-  return coupling::make_crane_equations(build_crane_model(scene, modal_coordinates(scene, choice)));
+  return coupling::make_crane_equations(build_crane_model(scene, modal_coordinates(scene, choice, cache)));
 }
 
 }  // namespace ffrf::cases

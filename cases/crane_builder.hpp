@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "cases/mode_cache.hpp"
 #include "cases/scene.hpp"
 #include "coupling/crane_model.hpp"
 #include "coupling/crane_system.hpp"
@@ -44,9 +45,11 @@ template <fem::ElasticCoordinates Coords>
 coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords);
 
 // Elastic coordinates for a choice (the rigid boom is modal coordinates with an empty basis).
-modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice);
+// With a cache, the vibration modes come from it (computed once per mesh); without, they are
+// solved for here.
+modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, ModeCache* cache = nullptr);
 
 // The whole system for a choice, ready for static equilibrium and integration.
-std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice);
+std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, ModeCache* cache = nullptr);
 
 }  // namespace ffrf::cases

@@ -75,3 +75,25 @@ TEST(ModalCrane, ErrorFallsWithModeCountAndStaticModesCarryTheQuasiStaticLoad) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(ModalCrane, ModeCacheSolvesOncePerMeshAndGivesTheSameModel) {
+  using namespace ffrf;
+  const cases::Scene scene = test::reference_scene();
+  cases::ModeCache cache;
+  for (int k : {1, 2, 4, 8, 12}) {
+    for (bool with_static : {false, true}) {
+      const cases::BoomChoice choice{cases::BoomKind::modal, 16, k, with_static};
+      const modal::ModalCoordinates cached = cases::modal_coordinates(scene, choice, &cache);
+      const modal::ModalCoordinates direct = cases::modal_coordinates(scene, choice);
+      ASSERT_EQ(cached.size(), direct.size());
+      // Same subspace and the same reduced physics: equal stiffness spectra and static tip response.
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> a(cached.stiffness()), b(direct.stiffness());
+      EXPECT_LT((a.eigenvalues() - b.eigenvalues()).norm(), 1e-8 * b.eigenvalues().norm()) << choice.label();
+    }
+  }
+  EXPECT_EQ(cache.eigen_solves(), 1) << "one eigen solve for the whole mode-count sweep on one mesh";
+}
+
+}  // namespace
