@@ -1,7 +1,7 @@
 // End-to-end: `ffrf run` and `ffrf compare` on the reference scene with short durations and few
 // elements. The CSV header is the documented one and its first row is the static equilibrium (wire
 // tension = cargo weight); the JSON summary has the documented fields; the charts are PNG files;
-// compare's report names the three models and embeds the charts.
+// compare's report names the models and the reference and embeds the charts.
 #include <cmath>
 
 #include "cli_harness.hpp"
@@ -125,14 +125,15 @@ TEST(CliRun, LagrangeMultiplierRunKeepsTheConstraint) {
   EXPECT_NEAR(json["static_equilibrium"]["wire_tension_N"].number / kCargoWeight, 1.0, 1e-8);
 }
 
-TEST(CliCompare, WritesReportWithTheThreeModelsAndTheCharts) {
+TEST(CliCompare, WritesReportWithTheModelsTheReferenceAndTheCharts) {
   TempDir dir;
   const fs::path out = dir / "compare";
   const RunResult r = run_ffrf("compare " + kScene + " --duration 3 --out '" + out.string() + "'", dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string report = read_text(out / "report.md");
-  expect_mentions(report, {"rigid", "nodal N=1", "nodal N=16", "not a converged reference", "Static equilibrium",
-                           "Differences relative to nodal N=16", "Solver costs", "real-time factor"});
+  expect_mentions(report, {"rigid", "nodal N=1", "nodal N=16", "modal k=2+static (N=16)", "Converged reference",
+                           "Not checked for convergence", "Static equilibrium", "Errors against the reference",
+                           "Solver costs", "real-time factor"});
   for (const char* chart : kCharts) {
     std::string link = "(";  // not "(" + std::string(chart): GCC 12 -Wrestrict false positive
     link += chart;
@@ -140,18 +141,20 @@ TEST(CliCompare, WritesReportWithTheThreeModelsAndTheCharts) {
     expect_mentions(report, {link});
     EXPECT_TRUE(is_png(out / (std::string(chart) + ".png"))) << chart;
   }
-  for (const char* csv : {"timeseries_rigid.csv", "timeseries_nodal_N1.csv", "timeseries_nodal_N16.csv"}) {
+  for (const char* csv : {"timeseries_rigid.csv", "timeseries_nodal_N1.csv", "timeseries_nodal_N16.csv",
+                          "timeseries_modal_k1_N16.csv", "timeseries_modal_k4_static_N16.csv", "timeseries_reference.csv"}) {
     EXPECT_EQ(split(read_text(out / csv), '\n').at(0), kHeader) << csv;
   }
   const Json json = JsonParser(read_text(out / "summary.json")).parse();
-  EXPECT_EQ(json["reference_model"].text, "nodal N=16");
-  ASSERT_EQ(json["models"].items.size(), 3u);
+  EXPECT_EQ(json["reference"]["model"].text, "nodal N=8");  // 3 s end within the wave ramp: one level only
+  EXPECT_FALSE(json["reference"]["converged"].flag);
+  ASSERT_EQ(json["models"].items.size(), 9u);
   EXPECT_EQ(json["models"][0]["model"].text, "rigid");
   EXPECT_EQ(json["models"][1]["model"].text, "nodal N=1");
   EXPECT_EQ(json["models"][2]["elastic_dof"].number, 48);
-  EXPECT_EQ(json["models"][2]["differences_to_reference"]["cargo_heave_m"]["max_abs"].number, 0.0);
-  EXPECT_GT(json["models"][0]["differences_to_reference"]["cargo_heave_m"]["max_abs"].number, 0.0);
-  expect_mentions(r.out, {"rigid", "nodal N=1", "nodal N=16", "(reference)"});
+  EXPECT_EQ(json["models"][4]["model"].text, "modal k=2 (N=16)");
+  EXPECT_GT(json["models"][0]["errors_to_reference"]["cargo_heave"]["normalized_rms"].number, 0.0);
+  expect_mentions(r.out, {"rigid", "nodal N=1", "nodal N=16", "modal k=4+static (N=16)", "(reference)"});
 }
 
 }  // namespace
