@@ -35,7 +35,8 @@ void CraneSystem<Coords>::full_mass_times(ConstRef q, ConstRef a, Ref out) {
   boom_q_ = q.tail(3 + n_);
   m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_);
   out.segment<3>(b) = boom_reference_mass_ * a.segment<3>(b) + boom_coupling_ * a.tail(n_);
-  out.tail(n_) = boom_coupling_.transpose() * a.segment<3>(b) + m_.boom.coords().mass_ff() * a.tail(n_);
+  out.tail(n_).noalias() = m_.boom.coords().mass_ff() * a.tail(n_);
+  out.tail(n_).noalias() += boom_coupling_.transpose() * a.segment<3>(b);
 }
 
 template <fem::ElasticCoordinates Coords>

@@ -70,6 +70,7 @@ class CraneSystem final : public CraneEquations {
   Eigen::Vector3d hull_force_ = Eigen::Vector3d::Zero(), cargo_force_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d hull_rhs_ = Eigen::Vector3d::Zero();
   Eigen::VectorXd elastic_rhs_;
+  Eigen::VectorXd schur_rhs_column_;
   Eigen::Matrix3d boom_reference_mass_ = Eigen::Matrix3d::Zero();
   Eigen::Matrix<double, 3, Eigen::Dynamic> boom_coupling_;
   Eigen::Matrix<double, 3, Eigen::Dynamic> hull_elastic_mass_;

@@ -13,7 +13,7 @@ CraneSystem<Coords>::CraneSystem(CraneModel<Coords> model)
     : m_(std::move(model)),
       n_(static_cast<int>(m_.boom.elastic_size())),
       cargo_at_(m_.hull.fixed ? 0 : 3),
-      boom_q_(3 + n_), boom_v_(3 + n_), boom_force_(3 + n_), elastic_rhs_(n_),
+      boom_q_(3 + n_), boom_v_(3 + n_), boom_force_(3 + n_), elastic_rhs_(n_), schur_rhs_column_(n_),
       boom_coupling_(3, n_), hull_elastic_mass_(3, n_), schur_columns_(n_, 3), schur_rhs_(n_) {
   // Typical size of each elastic coordinate: the η_i that moves some nodal DOF by 1 cm (1 cm or
   // 0.01 rad for nodal coordinates; 0.01 / max|Φ e_i| for mass-normalized modal ones, whose units
@@ -122,7 +122,10 @@ void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z
     Eigen::Matrix3d schur = Eigen::Matrix3d(hull_rigid_inertia().asDiagonal()) + jr.transpose() * boom_reference_mass_ * jr;
     Eigen::Vector3d rhs = hull_rhs_;
     if (n_ > 0) {
-      schur_columns_ = elastic_mass_factor_.solve(Eigen::MatrixXd(hull_elastic_mass_.transpose()));
+      for (int c = 0; c < 3; ++c) {  // column by column: vector solves allocate nothing
+        schur_rhs_column_ = hull_elastic_mass_.row(c).transpose();
+        schur_columns_.col(c) = elastic_mass_factor_.solve(schur_rhs_column_);
+      }
       schur -= hull_elastic_mass_ * schur_columns_;
       rhs -= hull_elastic_mass_ * schur_rhs_;
     }

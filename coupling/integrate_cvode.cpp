@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
 
 #include "coupling/simulation.hpp"
 #include "coupling/sundials_support.hpp"
@@ -24,16 +25,23 @@ struct OdeData {
   CraneEquations* equations;
   int size;
   long jacobian_rhs_evaluations = 0;
+  std::string model_error;  // an exception the model threw inside a callback (never crosses C code)
 };
 
 int ode_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
   auto* data = static_cast<OdeData*>(user);
   const auto state = sundials::Vector::view(y);
   auto rate = sundials::Vector::view(y_dot);
+  if (!state.allFinite()) return 1;  // recoverable: CVODE retries with a smaller step
   const int n = data->size;
-  rate.head(n) = state.tail(n);
-  data->equations->minimal_accelerations(t, state.head(n), state.tail(n), rate.tail(n));
-  return rate.allFinite() ? 0 : 1;  // recoverable: CVODE retries with a smaller step
+  try {
+    rate.head(n) = state.tail(n);
+    data->equations->minimal_accelerations(t, state.head(n), state.tail(n), rate.tail(n));
+  } catch (const std::exception& error) {
+    data->model_error = error.what();
+    return -1;
+  }
+  return rate.allFinite() ? 0 : 1;
 }
 
 int ode_jacobian(sunrealtype t, N_Vector y, N_Vector f_y, SUNMatrix jacobian, void* user, N_Vector work_y, N_Vector work_f,
@@ -45,17 +53,23 @@ int ode_jacobian(sunrealtype t, N_Vector y, N_Vector f_y, SUNMatrix jacobian, vo
   auto shifted_rate = sundials::Vector::view(work_f);
   const int n = data->size;
   shifted = state;
-  for (int j = 0; j < 2 * n; ++j) {
-    const double delta = 1e-7 * std::max(std::abs(state(j)), 1.0);
-    shifted(j) = state(j) + delta;
-    shifted_rate.head(n) = shifted.tail(n);
-    data->equations->minimal_accelerations(t, shifted.head(n), shifted.tail(n), shifted_rate.tail(n));
-    shifted(j) = state(j);
-    sunrealtype* column = SUNDenseMatrix_Column(jacobian, j);
-    for (int i = 0; i < 2 * n; ++i) column[i] = (shifted_rate(i) - rate(i)) / delta;
+  try {
+    for (int j = 0; j < 2 * n; ++j) {
+      const double delta = 1e-7 * std::max(std::abs(state(j)), 1.0);
+      shifted(j) = state(j) + delta;
+      shifted_rate.head(n) = shifted.tail(n);
+      data->equations->minimal_accelerations(t, shifted.head(n), shifted.tail(n), shifted_rate.tail(n));
+      shifted(j) = state(j);
+      if (!shifted_rate.allFinite()) return 1;
+      sunrealtype* column = SUNDenseMatrix_Column(jacobian, j);
+      for (int i = 0; i < 2 * n; ++i) column[i] = (shifted_rate(i) - rate(i)) / delta;
+    }
+  } catch (const std::exception& error) {
+    data->model_error = error.what();
+    return -1;
   }
   data->jacobian_rhs_evaluations += 2 * n;
-  return shifted_rate.allFinite() ? 0 : 1;
+  return 0;
 }
 
 int wire_root(sunrealtype, N_Vector y, sunrealtype* g, void* user) {
@@ -89,7 +103,7 @@ RunResult integrate_minimal(CraneEquations& equations, const Eigen::VectorXd& z0
   tolerance.map().head(n) = settings.absolute_tolerance * scale;
   tolerance.map().tail(n) = settings.absolute_tolerance * scale;
 
-  OdeData data{&equations, n};
+  OdeData data{&equations, n, 0, {}};
   std::unique_ptr<void, void (*)(void*)> memory(CVodeCreate(CV_BDF, context.ctx), [](void* p) { CVodeFree(&p); });
   void* cvode = memory.get();
   sundials::DenseSolver linear(y.v, context.ctx);
@@ -114,7 +128,13 @@ RunResult integrate_minimal(CraneEquations& equations, const Eigen::VectorXd& z0
         CVodeGetRootInfo(cvode, &direction);
         return direction;
       },
-      [](int flag, double t) { throw SolverFailure("CVODE", CVodeGetReturnFlagName(flag), t, remedy_for(flag)); }, record,
+      [&](int flag, double t) {
+        if (!data.model_error.empty()) {
+          throw SolverFailure("CVODE", "the model failed: " + data.model_error, t, "check the scene's values; tighten --rtol/--atol");
+        }
+        throw SolverFailure("CVODE", sundials::flag_name(CVodeGetReturnFlagName(flag)), t, remedy_for(flag));
+      },
+      record,
       result.wire_events);
 
   long nfe = 0, nfe_ls = 0;

@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <string>
 
 #include "coupling/simulation.hpp"
 #include "coupling/sundials_support.hpp"
@@ -24,24 +25,31 @@ struct DaeData {
   int size;                  // nq
   Eigen::MatrixXd jacobian;  // C_q workspace (3 × nq)
   Eigen::VectorXd forces, mass_times, c;
+  std::string model_error;  // an exception the model threw inside a callback
 };
 
 int dae_residual(sunrealtype t, N_Vector y, N_Vector y_dot, N_Vector r, void* user) {
   auto* d = static_cast<DaeData*>(user);
-  const int n = d->size;
-  const auto s = sundials::Vector::view(y);
-  const auto s_dot = sundials::Vector::view(y_dot);
-  auto res = sundials::Vector::view(r);
-  const auto q = s.head(n), v = s.segment(n, n), lambda = s.segment(2 * n, constraints), mu = s.tail(constraints);
-  d->equations->constraint_jacobian(q, d->jacobian);
-  res.head(n) = s_dot.head(n) - v + d->jacobian.transpose() * mu;
-  d->equations->full_mass_times(q, s_dot.segment(n, n), d->mass_times);
-  d->equations->full_forces(t, q, v, d->forces);
-  res.segment(n, n) = d->mass_times - d->forces + d->jacobian.transpose() * lambda;
-  d->equations->constraint(q, d->c);
-  res.segment(2 * n, constraints) = d->c;
-  res.tail(constraints) = d->jacobian * v;
-  return res.allFinite() ? 0 : 1;
+  if (!sundials::Vector::view(y).allFinite()) return 1;
+  try {
+    const int n = d->size;
+    const auto s = sundials::Vector::view(y);
+    const auto s_dot = sundials::Vector::view(y_dot);
+    auto res = sundials::Vector::view(r);
+    const auto q = s.head(n), v = s.segment(n, n), lambda = s.segment(2 * n, constraints), mu = s.tail(constraints);
+    d->equations->constraint_jacobian(q, d->jacobian);
+    res.head(n) = s_dot.head(n) - v + d->jacobian.transpose() * mu;
+    d->equations->full_mass_times(q, s_dot.segment(n, n), d->mass_times);
+    d->equations->full_forces(t, q, v, d->forces);
+    res.segment(n, n) = d->mass_times - d->forces + d->jacobian.transpose() * lambda;
+    d->equations->constraint(q, d->c);
+    res.segment(2 * n, constraints) = d->c;
+    res.tail(constraints) = d->jacobian * v;
+    return res.allFinite() ? 0 : 1;
+  } catch (const std::exception& error) {
+    d->model_error = error.what();
+    return -1;
+  }
 }
 
 int wire_root(sunrealtype, N_Vector y, N_Vector, sunrealtype* g, void* user) {
@@ -68,7 +76,7 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
   const int total = 2 * n + 2 * constraints;
   sundials::Context context;
   sundials::Vector y(total, context.ctx), y_dot(total, context.ctx), tolerance(total, context.ctx), id(total, context.ctx);
-  DaeData data{&equations, n, Eigen::MatrixXd(constraints, n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(constraints)};
+  DaeData data{&equations, n, Eigen::MatrixXd(constraints, n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(constraints), {}};
 
   // Consistent initial values at rest.
   auto s = y.map();
@@ -132,7 +140,13 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
         IDAGetRootInfo(ida, &direction);
         return direction;
       },
-      [](int flag, double t) { throw SolverFailure("IDA", IDAGetReturnFlagName(flag), t, remedy_for(flag)); }, record,
+      [&](int flag, double t) {
+        if (!data.model_error.empty()) {
+          throw SolverFailure("IDA", "the model failed: " + data.model_error, t, "check the scene's values; tighten --rtol/--atol");
+        }
+        throw SolverFailure("IDA", sundials::flag_name(IDAGetReturnFlagName(flag)), t, remedy_for(flag));
+      },
+      record,
       result.wire_events);
 
   long nre = 0, nre_ls = 0;

@@ -24,10 +24,21 @@ std::string format_residual(double value) {
 // line-search stall at a converged residual is not a failure at all (see below).
 void quiet_errors(int, const char*, const char*, char*, void*) {}
 
+struct StaticData {
+  CraneEquations* equations;
+  std::string model_error;
+};
+
 int static_forces(N_Vector u, N_Vector f, void* user) {
-  auto* equations = static_cast<CraneEquations*>(user);
+  auto* data = static_cast<StaticData*>(user);
   auto residual = sundials::Vector::view(f);
-  equations->static_residual(sundials::Vector::view(u), residual);
+  if (!sundials::Vector::view(u).allFinite()) return 1;
+  try {
+    data->equations->static_residual(sundials::Vector::view(u), residual);
+  } catch (const std::exception& error) {
+    data->model_error = error.what();
+    return -1;
+  }
   return residual.allFinite() ? 0 : 1;
 }
 
@@ -44,8 +55,9 @@ StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eige
 
   std::unique_ptr<void, void (*)(void*)> memory(KINCreate(context.ctx), [](void* p) { KINFree(&p); });
   void* kinsol = memory.get();
+  StaticData data{&equations, {}};
   sundials::DenseSolver linear(u.v, context.ctx);
-  if (KINInit(kinsol, static_forces, u.v) != KIN_SUCCESS || KINSetErrHandlerFn(kinsol, quiet_errors, nullptr) != KIN_SUCCESS || KINSetUserData(kinsol, &equations) != KIN_SUCCESS ||
+  if (KINInit(kinsol, static_forces, u.v) != KIN_SUCCESS || KINSetErrHandlerFn(kinsol, quiet_errors, nullptr) != KIN_SUCCESS || KINSetUserData(kinsol, &data) != KIN_SUCCESS ||
       KINSetLinearSolver(kinsol, linear.solver, linear.matrix) != KIN_SUCCESS ||
       KINSetFuncNormTol(kinsol, tolerance) != KIN_SUCCESS || KINSetScaledStepTol(kinsol, 1e-14) != KIN_SUCCESS ||
       KINSetMaxSetupCalls(kinsol, 1) != KIN_SUCCESS || KINSetNumMaxIters(kinsol, 200) != KIN_SUCCESS) {
@@ -54,7 +66,10 @@ StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eige
   const int flag = KINSol(kinsol, u.v, KIN_LINESEARCH, u_scale.v, f_scale.v);
   StaticEquilibrium result;
   KINGetNumNonlinSolvIters(kinsol, &result.newton_iterations);
+  long jacobian_evaluations = 0;
   KINGetNumFuncEvals(kinsol, &result.function_evaluations);
+  KINGetNumLinFuncEvals(kinsol, &jacobian_evaluations);  // the difference-quotient Jacobian's
+  result.function_evaluations += jacobian_evaluations;
   Eigen::VectorXd residual(n);
   equations.static_residual(u.map(), residual);
   result.scaled_residual = residual.cwiseProduct(f_scale.map()).cwiseAbs().maxCoeff();
@@ -62,7 +77,8 @@ StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eige
   // residual is converged: the residual, not the flag, decides.
   if (!(result.scaled_residual < 1e2 * tolerance)) {
     throw SolverFailure("KINSOL (static equilibrium)",
-                        std::string(flag < 0 ? KINGetReturnFlagName(flag) : "no convergence") +
+                        (!data.model_error.empty() ? "the model failed: " + data.model_error
+                                                       : flag < 0 ? sundials::flag_name(KINGetReturnFlagName(flag)) : std::string("no convergence")) +
                             " after " + std::to_string(result.newton_iterations) + " Newton iterations, scaled residual " +
                             format_residual(result.scaled_residual),
                         0.0,

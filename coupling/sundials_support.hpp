@@ -12,6 +12,8 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <cstdlib>
+#include <string>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -19,6 +21,13 @@
 #include "coupling/simulation.hpp"
 
 namespace ffrf::coupling::sundials {
+
+// SUNDIALS' *GetReturnFlagName functions return a malloc'd string: copy it and free it.
+inline std::string flag_name(char* name) {
+  std::string text = name != nullptr ? name : "unknown flag";
+  std::free(name);
+  return text;
+}
 
 struct Context {
   SUNContext ctx = nullptr;
