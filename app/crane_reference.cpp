@@ -62,15 +62,7 @@ ModelRun reference_model_run(const cases::Scene& scene, const cases::ConvergedRe
   run.elastic_dof = 3 * r.choice.elements;
   run.result = r.run;
   run.statics.outputs = r.run.samples.front();  // the run starts at rest in static equilibrium
-  run.window = stats_window(scene, run.result.time);
-  run.stats = series_stats(run.result.samples, run.statics.outputs, run.window);
-  double max_tension = 0.0;
-  for (const coupling::CraneOutputs& sample : run.result.samples) {
-    max_tension = std::max(max_tension, sample.wire_tension);
-    run.max_constraint_residual = std::max(run.max_constraint_residual, std::abs(sample.constraint_residual));
-  }
-  run.amplification = max_tension / run.statics.outputs.wire_tension;
-  run.real_time_factor = r.settings.duration / run.result.stats.wall_seconds;
+  summarize_run(scene, r.settings.duration, run);
   return run;
 }
 

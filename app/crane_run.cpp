@@ -95,17 +95,21 @@ ModelRun run_model(const cases::Scene& scene, const cases::BoomChoice& choice,
   if (on_static) on_static(run);
   const Eigen::VectorXd z0 = run.from_static_equilibrium ? run.statics.z : equations->initial_guess();
   run.result = coupling::integrate(*equations, z0, settings);
+  summarize_run(scene, settings.duration, run);
+  return run;
+}
 
+void summarize_run(const cases::Scene& scene, double duration, ModelRun& run) {
   run.window = stats_window(scene, run.result.time);
   run.stats = series_stats(run.result.samples, run.statics.outputs, run.window);
   double max_tension = 0.0;
+  run.max_constraint_residual = 0.0;
   for (const coupling::CraneOutputs& sample : run.result.samples) {
     max_tension = std::max(max_tension, sample.wire_tension);
     run.max_constraint_residual = std::max(run.max_constraint_residual, std::abs(sample.constraint_residual));
   }
   run.amplification = max_tension / run.statics.outputs.wire_tension;
-  run.real_time_factor = settings.duration / run.result.stats.wall_seconds;
-  return run;
+  run.real_time_factor = duration / run.result.stats.wall_seconds;
 }
 
 std::string timeseries_csv(const ModelRun& run) {

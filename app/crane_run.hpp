@@ -55,6 +55,10 @@ struct ModelRun {
   long slack_events() const;       // the wire went slack
 };
 
+// Fills a finished run's statistics window, per-output statistics, wire amplification factor, max
+// constraint residual and real-time factor (`duration` simulated seconds) from its samples.
+void summarize_run(const cases::Scene& scene, double duration, ModelRun& run);
+
 // Builds, solves the static equilibrium, integrates. Throws cases::SceneError (the scene cannot
 // make this crane) and coupling::SolverFailure. `on_static` sees the run once its static
 // equilibrium is known, before the integration.
