@@ -15,6 +15,17 @@ std::string summary(const cases::Scene& scene) {
   const fem::BeamMesh& mesh = scene.boom.mesh;
   std::string text = fmt::format("boom {:g} m, {:g} t, {} elements", mesh.length, mesh.total_mass() / 1e3,
                                  mesh.element_count);
+  if (scene.hub) {
+    const cases::Hub& hub = *scene.hub;
+    const char* motion = hub.motion == cases::HubMotion::spin_up         ? "spin-up"
+                         : hub.motion == cases::HubMotion::constant_spin ? "constant spin"
+                                                                         : "fixed";
+    text = fmt::format("hub: {}, radius {:g} m, {} to {:g} rad/s{}", text, hub.radius, motion, hub.spin_rate,
+                       scene.cargo ? fmt::format(", cargo {:g} t on a {:g} m wire", scene.cargo->mass / 1e3,
+                                                 scene.wire->unstretched_length)
+                                   : std::string());
+    return text + fmt::format(", stiffening {}", cases::to_string(scene.boom.stiffening));
+  }
   if (!scene.is_crane()) return fmt::format("single beam: {}, {}", text, fem::to_string(scene.boom.boundary));
   text = fmt::format("crane: hull {:g} t, {} at {:g} deg, cargo {:g} t, wire {:g} m", scene.hull->mass / 1e3, text,
                      scene.boom.mount->angle * 180.0 / 3.14159265358979323846, scene.cargo->mass / 1e3,

@@ -3,6 +3,7 @@
 // their gnuplot scripts, written completely or not at all. Exit 2 for bad input, 3 when a solver fails.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -25,6 +26,8 @@ struct RunOptions {
   std::optional<int> elements;
   int modes = 4;
   bool static_modes = false;
+  std::string stiffening;  // empty: the scene's boom.stiffening
+  std::optional<double> spin_rate;  // overrides hub.spin_rate
   DynamicsOptions dynamics;
   bool json = false;
   std::string out;
@@ -46,6 +49,12 @@ std::optional<std::string> boom_choice(const RunOptions& options, const cases::S
   }
   choice.modes = options.modes;
   choice.static_modes = options.static_modes;
+  if (!options.stiffening.empty()) {
+    choice.stiffening = cases::parse_stiffening(options.stiffening);
+    if (!choice.stiffening) {
+      return fmt::format("--stiffening {}: unknown stiffening; choose one of none, static, centrifugal, both", options.stiffening);
+    }
+  }
   if (choice.kind == cases::BoomKind::modal) {
     const int dof = 3 * choice.elements;  // (u, v, φ) per node, the root node clamped
     if (choice.modes < 1 || choice.modes >= dof) {
@@ -68,8 +77,15 @@ void write_outputs(StagedDirectory& out, const RunContext& context, const ModelR
 }
 
 int run_crane(const RunOptions& options) {
-  const std::optional<cases::Scene> scene = load_crane_scene(options.scene, "run");
+  std::optional<cases::Scene> scene = load_crane_scene(options.scene, "run");
   if (!scene) return exit_bad_input;
+  if (options.spin_rate) {
+    if (!scene->hub) return bad_input(fmt::format("--spin-rate {}: the scene has no [hub] to spin", *options.spin_rate));
+    if (!std::isfinite(*options.spin_rate)) {
+      return bad_input(fmt::format("--spin-rate {}: not a finite angular velocity (valid range (-inf, inf) rad/s)", *options.spin_rate));
+    }
+    scene->hub->spin_rate = *options.spin_rate;
+  }
   cases::BoomChoice choice;
   if (const auto error = boom_choice(options, *scene, choice)) return bad_input(*error);
   const SettingsOrError settings = integrator_settings(options.dynamics, *scene);
@@ -92,8 +108,9 @@ int run_crane(const RunOptions& options) {
     for (const auto& problem : error.problems()) fmt::print(stderr, "{}\n", cases::format_problem(problem));
     return bad_input(fmt::format("{}: the scene cannot make this crane", options.scene));
   } catch (const coupling::SolverFailure& failure) {
-    fmt::print(stderr, "ffrf run: solver failure: {}\n", failure.what());
+    fmt::print(stderr, "ffrf run: solver failure ({}): {}\n", coupling::to_string(failure.kind()), failure.what());
     if (out) fmt::print(stderr, "ffrf run: nothing written to {}\n", options.out);
+    if (options.json) fmt::print("{}", failure_json(context, choice.label(), failure));
     return exit_solver_failure;
   }
   if (out) write_outputs(*out, context, run);
@@ -112,6 +129,9 @@ Command add_run_command(CLI::App& parent) {
   sub->add_option("--elements,-N", options->elements, "Number of beam elements (default: boom.elements of the scene)");
   sub->add_option("--modes,-k", options->modes, "Number of vibration modes of the modal boom")->capture_default_str();
   sub->add_flag("--static-modes", options->static_modes, "Add the tip static correction modes to the modal boom");
+  sub->add_option("--spin-rate", options->spin_rate, "Final spin rate of a hub scene [rad/s] (default: hub.spin_rate)");
+  sub->add_option("--stiffening", options->stiffening,
+                  "Geometric stiffening none|static|centrifugal|both (default: boom.stiffening of the scene)");
   add_dynamics_options(*sub, options->dynamics);
   sub->add_flag("--json", options->json, "Print the JSON summary on stdout instead of the text report");
   sub->add_option("--out", options->out,

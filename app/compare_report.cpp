@@ -49,7 +49,7 @@ std::string static_table(const Comparison& c) {
     const coupling::CraneOutputs& o = run->static_outputs();
     t += fmt::format("| {} | {} | {:.4f} | {:+.4f} | {:+.5f} | {:+.5f} | {:.5f} | {} | {} |\n", label, run->elastic_dof,
                      draft_at_mid_length(scene, o), o.hull.z() * degrees, o.tip_deflection.y(), o.tip_deflection.x(),
-                     o.wire_length - scene.wire->unstretched_length, md(o.wire_tension), md(o.joint_reaction.z()));
+                     scene.wire ? o.wire_length - scene.wire->unstretched_length : 0.0, md(o.wire_tension), md(o.joint_reaction.z()));
   }
   return t;
 }

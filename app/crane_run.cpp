@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
+#include <numbers>
 
 #include "cases/scene_loader.hpp"
 #include "coupling/planar.hpp"
@@ -22,6 +24,9 @@ void add_dynamics_options(CLI::App& sub, DynamicsOptions& options) {
   sub.add_option("--atol", options.atol, "Absolute tolerance (scaled by each coordinate's typical size), in (0, 1)")
       ->capture_default_str();
   sub.add_option("--duration", options.duration, "Simulated time [s] (default: simulation.duration of the scene)");
+  sub.add_option("--max-order", options.max_order,
+                 "Largest BDF order of cvode and ida, 1-5 (default: 2 for an undamped boom, where BDF 3-5 are not "
+                 "stable on its undamped stiff modes; 5 otherwise)");
   sub.add_option("--step", options.step,
                  "Fixed time step [s] of generalized-alpha (required) and arkode (0: adaptive), at most the output interval")
       ->capture_default_str();
@@ -58,16 +63,22 @@ SettingsOrError integrator_settings(const DynamicsOptions& options, const cases:
                                       "e.g. --step 0.01", settings.output_interval)};
   }
   settings.fixed_step = options.step;
+  if (options.max_order != 0 && (options.max_order < 1 || options.max_order > 5)) {
+    return {std::nullopt, fmt::format("--max-order {}: not a BDF order (valid range [1, 5])", options.max_order)};
+  }
+  settings.max_order = options.max_order != 0 ? options.max_order : (scene.boom.damping_ratio > 0.0 ? 5 : 2);
   settings.progress = ::isatty(STDERR_FILENO) != 0;
+  settings.monitor = monitor_limits(scene);
   return {settings, {}};
 }
 
 std::optional<cases::Scene> load_crane_scene(const std::string& path, const std::string& command) {
   try {
     cases::Scene scene = cases::load_scene(path);
-    if (!scene.is_crane()) {
-      fmt::print(stderr, "ffrf {}: error: {}: not a crane scene: it has no [hull] section (a crane needs [hull], "
-                 "[cargo], [wire] and boom.angle/root_x/root_y; `ffrf modes` analyses a single beam)\n", command, path);
+    if (!scene.has_base()) {
+      fmt::print(stderr, "ffrf {}: error: {}: no time-domain system: the scene has neither a [hull] section (a crane "
+                 "needs [hull], [cargo], [wire] and boom.angle/root_x/root_y) nor a [hub]; `ffrf modes` analyses a "
+                 "single beam\n", command, path);
       return std::nullopt;
     }
     return scene;
@@ -93,8 +104,13 @@ ModelRun run_model(const cases::Scene& scene, const cases::BoomChoice& choice,
   run.statics = coupling::solve_static_equilibrium(*equations, equations->initial_guess());
   run.from_static_equilibrium = scene.simulation.initial_state == cases::InitialState::static_equilibrium;
   if (on_static) on_static(run);
-  const Eigen::VectorXd z0 = run.from_static_equilibrium ? run.statics.z : equations->initial_guess();
-  run.result = coupling::integrate(*equations, z0, settings);
+  Eigen::VectorXd z0 = run.from_static_equilibrium ? run.statics.z : equations->initial_guess();
+  if (scene.simulation.cargo_lift > 0.0 && equations->cargo_offset() >= 0) {
+    z0(equations->cargo_offset() + 1) += scene.simulation.cargo_lift;  // raised, released at rest
+  }
+  coupling::IntegratorSettings run_settings = settings;
+  run_settings.monitor.static_tension = run.statics.outputs.wire_tension;
+  run.result = coupling::integrate(*equations, z0, run_settings);
   summarize_run(scene, settings.duration, run);
   return run;
 }
@@ -108,7 +124,8 @@ void summarize_run(const cases::Scene& scene, double duration, ModelRun& run) {
     max_tension = std::max(max_tension, sample.wire_tension);
     run.max_constraint_residual = std::max(run.max_constraint_residual, std::abs(sample.constraint_residual));
   }
-  run.amplification = max_tension / run.statics.outputs.wire_tension;
+  run.amplification = run.statics.outputs.wire_tension > 0.0 ? max_tension / run.statics.outputs.wire_tension
+                                                               : std::numeric_limits<double>::quiet_NaN();
   run.real_time_factor = duration / run.result.stats.wall_seconds;
 }
 
@@ -126,7 +143,19 @@ std::string timeseries_csv(const ModelRun& run) {
   return csv;
 }
 
+coupling::MonitorLimits monitor_limits(const cases::Scene& scene) {
+  coupling::MonitorLimits limits;
+  const fem::BeamMesh& mesh = scene.boom.mesh;
+  limits.boom_length = mesh.length;
+  limits.deflection_limit = scene.simulation.deflection_limit;
+  limits.constraint_drift_limit = scene.simulation.constraint_drift_limit;
+  limits.buckling_load = std::numbers::pi * std::numbers::pi * mesh.section.bending_rigidity() / (4.0 * mesh.length * mesh.length);
+  limits.wire_unstretched_length = scene.wire ? scene.wire->unstretched_length : 0.0;
+  return limits;
+}
+
 double draft_at_mid_length(const cases::Scene& scene, const coupling::CraneOutputs& outputs) {
+  if (!scene.hull) return std::numeric_limits<double>::quiet_NaN();
   const cases::Hull& hull = *scene.hull;
   const Eigen::Vector2d keel_mid =
       outputs.hull.head<2>() +

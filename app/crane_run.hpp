@@ -24,10 +24,13 @@ struct DynamicsOptions {
   double atol = 1e-6;
   std::optional<double> duration;
   double step = 0.0;  // fixed step [s] (generalized-alpha: required; arkode: 0 = adaptive)
+  int max_order = 0;  // largest BDF order of cvode/ida; 0 = from the physics (see integrator_settings)
 };
 void add_dynamics_options(CLI::App& sub, DynamicsOptions& options);
 
 // The settings for a scene, or the message naming the bad option, its value and the valid range.
+// The BDF order limit defaults to 2 (A-stable) when the boom is undamped and elastic, where BDF 3–5
+// would be held to tiny steps by undamped stiff modes on the imaginary axis; 5 otherwise.
 struct SettingsOrError {
   std::optional<coupling::IntegratorSettings> settings;
   std::string error;
@@ -69,7 +72,12 @@ ModelRun run_model(const cases::Scene& scene, const cases::BoomChoice& choice,
 // time_s and every crane_series() column, one row per output time.
 std::string timeseries_csv(const ModelRun& run);
 
-// Hull draft at mid-length [m] (keel depth below still water) of a static or sampled pose.
+// The failure detectors' bounds for a scene (deflection and drift limits, the boom's Euler load,
+// the wire); run_model adds the static wire tension.
+coupling::MonitorLimits monitor_limits(const cases::Scene& scene);
+
+// Hull draft at mid-length [m] (keel depth below still water) of a static or sampled pose; NaN
+// without a hull (hub scenes).
 double draft_at_mid_length(const cases::Scene& scene, const coupling::CraneOutputs& outputs);
 
 // "nodal N=16" → "nodal_N16": for file names.

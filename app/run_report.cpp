@@ -6,6 +6,7 @@
 #include <chrono>
 #include <ctime>
 #include <numbers>
+#include <optional>
 
 namespace ffrf::app {
 namespace {
@@ -20,6 +21,31 @@ const char* initial_state_name(const ModelRun& run) {
 }
 
 }  // namespace
+
+coupling::MonitorLimits run_limits(const cases::Scene& scene, const ModelRun& run) {
+  coupling::MonitorLimits limits = monitor_limits(scene);
+  limits.static_tension = run.statics.outputs.wire_tension;
+  return limits;
+}
+
+void write_detection_json(JsonWriter& json, const coupling::Detection& d) {
+  json.begin_object().field("kind", coupling::to_string(d.kind)).field("time_s", d.time).field("fatal", d.fatal);
+  json.field("cause", d.cause).field("remedy", d.remedy).field("value", d.value).end_object();
+}
+
+std::string failure_json(const RunContext& context, const std::string& model, const coupling::SolverFailure& failure) {
+  JsonWriter json;
+  json.begin_object();
+  json.field("command", "run").field("status", "failed").field("model", model);
+  json.key("provenance").begin_object();
+  write_settings_json(json, context);
+  json.end_object();
+  json.key("failure");
+  write_detection_json(json, failure.detection());
+  json.field("solver", failure.solver());
+  json.end_object();
+  return json.str();
+}
 
 std::string ffrf_version() {
 #ifdef FFRF_VERSION
@@ -44,21 +70,36 @@ std::string static_report(const cases::Scene& scene, const ModelRun& run) {
   const coupling::CraneOutputs& o = s.outputs;
   std::string text = fmt::format("static equilibrium ({}; KINSOL: {} Newton iterations, scaled residual {:.2g}, {:.3g} s)\n",
                                  run.choice.label(), s.newton_iterations, s.scaled_residual, s.wall_seconds);
-  text += fmt::format("  hull      draft {:.4f} m at mid-length, trim {:+.4f} deg (+ = bow up)\n",
-                      draft_at_mid_length(scene, o), o.hull.z() * degrees);
+  if (scene.hull) {
+    text += fmt::format("  hull      draft {:.4f} m at mid-length, trim {:+.4f} deg (+ = bow up)\n",
+                        draft_at_mid_length(scene, o), o.hull.z() * degrees);
+  } else {
+    text += fmt::format("  hub       angle {:+.4f} deg at t = 0\n", o.hull.z() * degrees);
+  }
   text += fmt::format("  boom tip  deflection {:+.5f} m transverse, {:+.5f} m axial (boom frame)\n", o.tip_deflection.y(),
                       o.tip_deflection.x());
-  text += fmt::format("  wire      stretch {:.5f} m, tension {:.6g} N\n", o.wire_length - scene.wire->unstretched_length,
-                      o.wire_tension);
+  if (scene.wire) {
+    text += fmt::format("  wire      stretch {:.5f} m, tension {:.6g} N\n", o.wire_length - scene.wire->unstretched_length,
+                        o.wire_tension);
+  }
   text += fmt::format("  joint B   Fx {:.6g} N, Fy {:.6g} N, M {:.6g} N m (on the boom)\n", o.joint_reaction.x(),
                       o.joint_reaction.y(), o.joint_reaction.z());
-  text += "  model     linear-elastic boom: geometric stiffening not modelled\n";
+  const double euler = monitor_limits(scene).buckling_load;
+  text += fmt::format("  boom      root axial force {:.6g} N, {:.3g} of the Euler buckling load {:.4g} N\n",
+                      o.root_axial_force, std::max(0.0, -o.root_axial_force) / euler, euler);
+  const cases::Stiffening stiffening = run.choice.stiffening.value_or(scene.boom.stiffening);
+  text += stiffening == cases::Stiffening::none
+              ? "  model     linear-elastic boom: geometric stiffening off (--stiffening static|centrifugal|both)\n"
+              : fmt::format("  model     linear-elastic boom with {} geometric stiffening\n", cases::to_string(stiffening));
+  if (scene.simulation.cargo_lift > 0.0) {
+    text += fmt::format("  start     cargo raised {:g} m above this posture and released at rest\n", scene.simulation.cargo_lift);
+  }
   return text;
 }
 
 void write_settings_json(JsonWriter& json, const RunContext& c) {
   json.field("scene", c.scene_file).field("scene_name", c.scene->name);
-  json.field("integrator", coupling::to_string(c.settings.kind));
+  json.field("integrator", coupling::to_string(c.settings.kind)).field("max_bdf_order", c.settings.max_order);
   json.field("rtol", c.settings.relative_tolerance).field("atol", c.settings.absolute_tolerance);
   json.field("duration_s", c.settings.duration).field("output_interval_s", c.settings.output_interval);
   json.field("ffrf_version", ffrf_version()).field("date", c.date);
@@ -80,7 +121,8 @@ void write_model_json(JsonWriter& json, const cases::Scene& scene, const ModelRu
   json.field("joint_moment_Nm", o.joint_reaction.z());
   json.field("newton_iterations", count(s.newton_iterations)).field("function_evaluations", count(s.function_evaluations));
   json.field("scaled_residual", s.scaled_residual).field("wall_time_s", s.wall_seconds);
-  json.field("geometric_stiffening_modelled", false);
+  json.field("root_axial_force_N", o.root_axial_force);
+  json.field("geometric_stiffening", cases::to_string(run.choice.stiffening.value_or(scene.boom.stiffening)));
   json.end_object();
 
   json.key("statistics_window").begin_object();
@@ -104,8 +146,25 @@ void write_model_json(JsonWriter& json, const cases::Scene& scene, const ModelRu
   json.field("static_tension_N", o.wire_tension).field("dynamic_amplification_factor", run.amplification);
   json.field("slack_events", count(run.slack_events()));
   json.field("taut_events", count(static_cast<long>(run.result.wire_events.size()) - run.slack_events()));
+  const coupling::MonitorLimits limits = run_limits(scene, run);
+  json.key("slack_intervals_s").begin_array();
+  for (const coupling::SlackInterval& slack : coupling::slack_intervals(run.result, limits)) {
+    json.begin_array().value(slack.start);
+    json.value(std::isfinite(slack.end) ? std::optional<double>(slack.end) : std::nullopt).end_array();
+  }
+  json.end_array();
+  json.key("snap_loads").begin_array();
+  for (const coupling::SnapLoad& snap : coupling::snap_loads(run.result, limits)) {
+    json.begin_object().field("taut_at_s", snap.time).field("peak_tension_N", snap.peak_tension);
+    json.field("peak_at_s", snap.peak_time).field("peak_over_static", snap.ratio).end_object();
+  }
+  json.end_array();
   json.end_object();
   json.field("max_constraint_residual_m", run.max_constraint_residual);
+  json.field("max_buckling_load_ratio", coupling::max_buckling_load_ratio(run.result, limits));
+  json.key("detections").begin_array();
+  for (const coupling::Detection& d : run.result.detections) write_detection_json(json, d);
+  json.end_array();
 
   const coupling::SolverStats& st = run.result.stats;
   json.key("solver").begin_object();
@@ -134,9 +193,12 @@ std::string run_header_text(const RunContext& c, const ModelRun& run) {
   std::string text = fmt::format("scene       {}{}\n", c.scene_file, c.scene->name.empty() ? "" : " (" + c.scene->name + ")");
   text += fmt::format("model       {} ({} elastic DOFs), start from {}\n", run.choice.label(), run.elastic_dof,
                       initial_state_name(run));
-  text += fmt::format("integrator  {}, rtol {:g}, atol {:g}, {:g} s, output every {:g} s\n\n",
+  text += fmt::format("integrator  {}, rtol {:g}, atol {:g}, {:g} s, output every {:g} s{}\n\n",
                       coupling::to_string(c.settings.kind), c.settings.relative_tolerance, c.settings.absolute_tolerance,
-                      c.settings.duration, c.settings.output_interval);
+                      c.settings.duration, c.settings.output_interval,
+                      c.settings.kind == coupling::Integrator::cvode || c.settings.kind == coupling::Integrator::ida
+                          ? fmt::format(", BDF order <= {}", c.settings.max_order)
+                          : std::string());
   return text;
 }
 
@@ -151,9 +213,18 @@ std::string dynamics_text(const ModelRun& run) {
     text += fmt::format("  {:<24} {:>13} {:>13} {:>13} {:>13}\n", series[i].column, format_value(s.static_value),
                         format_value(s.min), format_value(s.max), format_value(s.rms));
   }
-  text += fmt::format("  wire tension: dynamic amplification factor {:.4f} (max / static over the run), {} slack events\n",
-                      run.amplification, run.slack_events());
+  if (std::isfinite(run.amplification)) {
+    text += fmt::format("  wire tension: dynamic amplification factor {:.4f} (max / static over the run), {} slack events\n",
+                        run.amplification, run.slack_events());
+  }
   text += fmt::format("  max constraint residual {:.3g} m\n", run.max_constraint_residual);
+  if (!run.result.detections.empty()) {
+    text += "\ndetected\n";
+    for (const coupling::Detection& d : run.result.detections) {
+      text += fmt::format("  {:<20} t = {:<9.4g} {}\n  {:<20} {:<13} remedy: {}\n", coupling::to_string(d.kind), d.time,
+                          d.cause, "", "", d.remedy);
+    }
+  }
   const coupling::SolverStats& st = run.result.stats;
   text += fmt::format("\nsolver      {} steps, {} function and {} Jacobian evaluations, {} Newton iterations,\n"
                       "            {} error-test and {} convergence failures\n",

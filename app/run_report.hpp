@@ -31,6 +31,12 @@ void write_settings_json(JsonWriter& json, const RunContext& context);
 void write_model_json(JsonWriter& json, const cases::Scene& scene, const ModelRun& run);
 
 std::string run_json(const RunContext& context, const ModelRun& run);
+// The detectors' bounds of a finished run (the scene's, with its static wire tension).
+coupling::MonitorLimits run_limits(const cases::Scene& scene, const ModelRun& run);
+// One detection as a JSON object {kind, time_s, fatal, cause, remedy, value}.
+void write_detection_json(JsonWriter& json, const coupling::Detection& detection);
+// A failed run: {"command": "run", "status": "failed", "model", "provenance", "failure": {...}}.
+std::string failure_json(const RunContext& context, const std::string& model, const coupling::SolverFailure& failure);
 // The human summary: the header (scene, model, integrator), then static_report(), then the
 // dynamics (statistics table, wire, solver costs).
 std::string run_header_text(const RunContext& context, const ModelRun& run);

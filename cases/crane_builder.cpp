@@ -6,6 +6,7 @@
 
 #include "cases/scene_loader.hpp"
 #include "fem/analytic_beam.hpp"
+#include "fem/axial_force.hpp"
 
 namespace ffrf::cases {
 
@@ -28,11 +29,14 @@ std::optional<BoomKind> parse_boom_kind(std::string_view text) {
 std::string boom_kind_choices() { return "rigid|nodal|modal"; }
 
 std::string BoomChoice::label() const {
+  const std::string stiffened =
+      stiffening && *stiffening != Stiffening::none ? " " + std::string(to_string(*stiffening)) + "-stiffened" : "";
   switch (kind) {
     case BoomKind::rigid: return "rigid";
-    case BoomKind::nodal: return "nodal N=" + std::to_string(elements);
+    case BoomKind::nodal: return "nodal N=" + std::to_string(elements) + stiffened;
     case BoomKind::modal:
-      return "modal k=" + std::to_string(modes) + (static_modes ? "+static" : "") + " (N=" + std::to_string(elements) + ")";
+      return "modal k=" + std::to_string(modes) + (static_modes ? "+static" : "") + " (N=" + std::to_string(elements) + ")" +
+             stiffened;
   }
   return "?";
 }
@@ -54,13 +58,14 @@ namespace {
   throw SceneError({SceneProblem{scene.file, 0, 0, key, value, message}});
 }
 
-}  // namespace
+double critical_damping(double mass, double stiffness) { return 2.0 * std::sqrt(mass * stiffness); }
 
-template <fem::ElasticCoordinates Coords>
-coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords) {
-  if (!scene.is_crane() || !scene.cargo || !scene.wire || !scene.boom.mount) {
-    scene_problem(scene, "hull", "", "a crane run needs the [hull], [cargo], [wire] sections and boom.angle/root_x/root_y");
-  }
+const fem::BeamModel& coords_beam(const nodal::NodalCoordinates& coords) { return coords.beam(); }
+const fem::BeamModel& coords_beam(const modal::ModalCoordinates& coords) { return coords.beam(); }
+
+// The floating hull of a crane scene: box section, hydrostatic stiffness for the radiation damping,
+// added mass, mooring, the even-keel pose at the mean draft.
+coupling::HullModel floating_hull(const Scene& scene) {
   const Hull& hull = *scene.hull;
   const Cargo& cargo = *scene.cargo;
   const Wire& wire = *scene.wire;
@@ -93,30 +98,95 @@ coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords
       hull.g1_above_keel + (boom_mass * boom_cg + cargo.mass * cargo_cg) / displaced_mass;
   const Eigen::Vector2d hydrostatic =
       coupling::box_hydrostatic_stiffness(h.section, rho, g, displaced_mass / rho, center_of_gravity_above_keel);
-  const auto critical = [](double mass, double stiffness) { return 2.0 * std::sqrt(mass * stiffness); };
   h.mooring_stiffness = scene.mooring.surge_stiffness;
-  h.radiation_damping = {rad.surge_damping * critical(displaced_mass + h.added_mass(0), h.mooring_stiffness),
-                         rad.heave_damping * critical(displaced_mass + h.added_mass(1), hydrostatic(0)),
-                         rad.pitch_damping * critical(h.pitch_inertia + h.added_mass(2), std::max(hydrostatic(1), 0.0))};
+  h.radiation_damping = {rad.surge_damping * critical_damping(displaced_mass + h.added_mass(0), h.mooring_stiffness),
+                         rad.heave_damping * critical_damping(displaced_mass + h.added_mass(1), hydrostatic(0)),
+                         rad.pitch_damping * critical_damping(h.pitch_inertia + h.added_mass(2), std::max(hydrostatic(1), 0.0))};
   h.support_pose = Eigen::Vector3d(0.0, hull.g1_above_keel - draft, 0.0);  // even keel at the mean draft
+  return h;
+}
 
+// The hub of a hub scene: held, or turned by its prescribed rotation; no water.
+coupling::HullModel driven_hub(const Hub& hub) {
+  coupling::HullModel h;
+  h.hydrostatics = false;
+  h.fixed = true;
+  h.support_pose = Eigen::Vector3d(0.0, 0.0, hub.angle);
+  coupling::PrescribedMotion motion;
+  motion.pose0 = h.support_pose;
+  motion.profile = hub.motion == HubMotion::spin_up         ? coupling::RotationProfile::spin_up
+                   : hub.motion == HubMotion::constant_spin ? coupling::RotationProfile::constant_spin
+                                                            : coupling::RotationProfile::fixed;
+  motion.spin_rate = hub.spin_rate;
+  motion.spin_up_time = hub.spin_up_time;
+  h.prescribed = motion;
+  return h;
+}
+
+}  // namespace
+
+double boom_angle_at_rest(const Scene& scene) {
+  return scene.hub ? scene.hub->angle : (scene.boom.mount ? scene.boom.mount->angle : 0.0);
+}
+
+double centrifugal_hub_radius(const Scene& scene) {
+  if (scene.hub) return scene.hub->radius;
+  if (!scene.boom.mount) return 0.0;
+  const BoomMount& mount = *scene.boom.mount;
+  return std::max(0.0, mount.root_x * std::cos(mount.angle) + mount.root_y * std::sin(mount.angle));
+}
+
+fem::AxialForce static_reference_axial_force(const Scene& scene) {
+  const double g = scene.environment.gravity;
+  const double along_axis = -std::sin(boom_angle_at_rest(scene));  // component of "down" along the boom axis
+  const double cargo_weight = scene.cargo ? scene.cargo->mass * g : 0.0;
+  return fem::static_axial_force(scene.boom.mesh, scene.boom.mesh.section.mass_per_length * g * along_axis,
+                                 cargo_weight * along_axis);
+}
+
+template <fem::ElasticCoordinates Coords>
+coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords, Stiffening stiffening) {
+  if (!scene.has_base() || !scene.boom.mount || (scene.is_crane() && (!scene.cargo || !scene.wire))) {
+    scene_problem(scene, "hull", "", "a crane run needs [hull] (with [cargo], [wire] and boom.angle/root_x/root_y) or [hub]");
+  }
+  const Environment& env = scene.environment;
   const double beta = boom_stiffness_damping(scene);
+  // Geometric stiffening, assembled in nodal space on the coordinates' own mesh and projected.
+  const fem::BeamModel& beam = coords_beam(coords);
+  typename Coords::Matrix prestress, centrifugal;
+  if (has_static_stiffening(stiffening)) {
+    prestress = coords.project(fem::assemble_geometric_stiffness(beam.mesh, beam.dofs, static_reference_axial_force(scene)));
+  }
+  if (has_centrifugal_stiffening(stiffening)) {
+    centrifugal = coords.project(fem::assemble_geometric_stiffness(
+        beam.mesh, beam.dofs, fem::centrifugal_axial_force(beam.mesh, centrifugal_hub_radius(scene))));
+  }
   coupling::FloatingFrameBody<Coords> boom(std::move(coords), beta);
+  if (prestress.size() > 0) boom.set_prestress_stiffness(std::move(prestress));
+  if (centrifugal.size() > 0) boom.set_centrifugal_stiffness(std::move(centrifugal));
   coupling::BodyPoint tip = boom.point(scene.boom.mesh.length);
-  coupling::CraneModel<Coords> model{h, {Eigen::Vector2d(scene.boom.mount->root_x, scene.boom.mount->root_y), scene.boom.mount->angle},
-                                     std::move(boom), std::move(tip), {}, {}, g, rho, std::nullopt};
-  model.cargo = {cargo.mass, cargo.pitch_inertia(), Eigen::Vector2d(cargo.hook_x, cargo.hook_y)};
-  model.wire = {wire.unstretched_length, wire.stiffness, wire.damping_ratio * critical(cargo.mass, wire.stiffness)};
-  if (scene.wave) {
+  const BoomMount& mount = *scene.boom.mount;
+  coupling::CraneModel<Coords> model{scene.hub ? driven_hub(*scene.hub) : floating_hull(scene),
+                                     {Eigen::Vector2d(mount.root_x, mount.root_y), mount.angle},
+                                     std::move(boom), std::move(tip), {}, {}, env.gravity, env.water_density, std::nullopt};
+  if (scene.cargo && scene.wire) {
+    const Cargo& cargo = *scene.cargo;
+    const Wire& wire = *scene.wire;
+    model.cargo = {true, cargo.mass, cargo.pitch_inertia(), Eigen::Vector2d(cargo.hook_x, cargo.hook_y)};
+    model.wire = {wire.unstretched_length, wire.stiffness, wire.damping_ratio * critical_damping(cargo.mass, wire.stiffness)};
+  } else {
+    model.cargo.present = false;
+  }
+  if (scene.wave && scene.is_crane()) {
     const double direction = scene.wave->direction == WaveDirection::following ? 1.0 : -1.0;
     model.wave = coupling::AiryWave::from_height_period(scene.wave->height, scene.wave->period, direction,
-                                                        scene.wave->ramp_periods, env.water_depth, g);
+                                                        scene.wave->ramp_periods, env.water_depth, env.gravity);
   }
   return model;
 }
 
-template coupling::CraneModel<nodal::NodalCoordinates> build_crane_model(const Scene&, nodal::NodalCoordinates);
-template coupling::CraneModel<modal::ModalCoordinates> build_crane_model(const Scene&, modal::ModalCoordinates);
+template coupling::CraneModel<nodal::NodalCoordinates> build_crane_model(const Scene&, nodal::NodalCoordinates, Stiffening);
+template coupling::CraneModel<modal::ModalCoordinates> build_crane_model(const Scene&, modal::ModalCoordinates, Stiffening);
 
 modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, ModeCache* cache) {
   auto beam = boom_beam(scene, choice.kind == BoomKind::rigid ? 1 : choice.elements);
@@ -142,10 +212,12 @@ modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& 
 }
 
 std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, ModeCache* cache) {
+  const Stiffening stiffening = choice.stiffening.value_or(scene.boom.stiffening);
   if (choice.kind == BoomKind::nodal) {
-    return coupling::make_crane_equations(build_crane_model(scene, nodal::NodalCoordinates(boom_beam(scene, choice.elements))));
+    return coupling::make_crane_equations(
+        build_crane_model(scene, nodal::NodalCoordinates(boom_beam(scene, choice.elements)), stiffening));
   }
-  return coupling::make_crane_equations(build_crane_model(scene, modal_coordinates(scene, choice, cache)));
+  return coupling::make_crane_equations(build_crane_model(scene, modal_coordinates(scene, choice, cache), stiffening));
 }
 
 }  // namespace ffrf::cases

@@ -13,6 +13,7 @@
 #include "cases/scene.hpp"
 #include "coupling/crane_model.hpp"
 #include "coupling/crane_system.hpp"
+#include "fem/axial_force.hpp"
 #include "modal/eigen_solver.hpp"
 #include "modal/modal_coordinates.hpp"
 #include "nodal/nodal_coordinates.hpp"
@@ -30,6 +31,7 @@ struct BoomChoice {
   int modes = 4;              // k vibration modes (modal)
   bool static_modes = false;  // add static correction modes (modal): tip loads + uniform body loads
   modal::EigenSolverKind solver = modal::EigenSolverKind::arpack;
+  std::optional<Stiffening> stiffening = std::nullopt;  // overrides the scene's boom.stiffening
   std::string label() const;  // "rigid", "nodal N=16", "modal k=4+static (N=16)"
 };
 
@@ -40,9 +42,21 @@ std::shared_ptr<const fem::BeamModel> boom_beam(const Scene& scene, int elements
 // bending frequency: the same for every mesh and coordinate choice, so models compare on equal terms.
 double boom_stiffness_damping(const Scene& scene);
 
-// Throws SceneError when the scene is not a crane scene or the hull cannot float the load.
+// Boom angle above the horizontal in the as-built posture (hull crane: boom.angle; hub: hub.angle).
+double boom_angle_at_rest(const Scene& scene);
+// Distance along the boom axis from the axis the base turns about (hub axis, or G1 of a hull,
+// clamped at 0) to the root B: the r of the centrifugal axial force.
+double centrifugal_hub_radius(const Scene& scene);
+// The reference axial force of static stiffening: beam statics of the undeformed boom in its
+// as-built posture under self-weight and the hanging cargo's weight at the tip (compression < 0):
+// N(x) = −(ρA g (L − x) + m_c g) sin φ.
+fem::AxialForce static_reference_axial_force(const Scene& scene);
+
+// Throws SceneError when the scene has no base (hull or hub) or the hull cannot float the load.
+// A hub scene becomes a held or driven base (coupling::PrescribedMotion) without water; a scene
+// without [cargo] has no cargo coordinates. `stiffening` adds the geometric stiffness matrices.
 template <fem::ElasticCoordinates Coords>
-coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords);
+coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords, Stiffening stiffening = Stiffening::none);
 
 // Elastic coordinates for a choice (the rigid boom is modal coordinates with an empty basis).
 // With a cache, the vibration modes come from it (computed once per mesh); without, they are

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "fem/boundary.hpp"
 #include "fem/mesh.hpp"
@@ -20,12 +21,20 @@ struct BoomMount {
   double root_y;  // [m]
 };
 
+// Geometric (stress) stiffening of the boom (docs/theory.md, "Geometric stiffening").
+enum class Stiffening { none, static_load, centrifugal, both };
+std::string_view to_string(Stiffening stiffening);                  // "none", "static", "centrifugal", "both"
+std::optional<Stiffening> parse_stiffening(std::string_view text);  // nullopt when unknown
+inline bool has_static_stiffening(Stiffening s) { return s == Stiffening::static_load || s == Stiffening::both; }
+inline bool has_centrifugal_stiffening(Stiffening s) { return s == Stiffening::centrifugal || s == Stiffening::both; }
+
 struct Boom {
   fem::BeamMesh mesh;                 // length, element count N and section (E, A, I, ρA)
   fem::Boundary boundary;             // for `ffrf modes`; the crane clamps the root
   double damping_ratio;               // structural, fraction of critical in the first mode [-]
   std::optional<double> density;     // ρ [kg/m^3] when the scene gave it instead of ρA
-  std::optional<BoomMount> mount;
+  std::optional<BoomMount> mount;     // hull cranes: as given; hub scenes: (0, hub.radius, 0)
+  Stiffening stiffening = Stiffening::none;
 };
 
 struct Hull {
@@ -38,6 +47,17 @@ struct Hull {
   double g1_aft_of_mid_length;       // [m], < 0: forward of mid-length
 
   double pitch_inertia() const { return mass * pitch_radius_of_gyration * pitch_radius_of_gyration; }  // [kg m^2]
+};
+
+// A rigid hub on a fixed axis with a prescribed rotation (the base of a hub scene instead of a hull).
+enum class HubMotion { fixed, spin_up, constant_spin };
+
+struct Hub {
+  double radius;        // axis to boom root [m]
+  double angle;         // θ(0) [rad]
+  HubMotion motion;
+  double spin_rate;     // Ωs [rad/s]
+  double spin_up_time;  // Ts [s]
 };
 
 struct Cargo {
@@ -95,6 +115,9 @@ struct Simulation {
   double duration;         // [s]
   double output_interval;  // [s]
   InitialState initial_state;
+  double cargo_lift = 0.0;              // [m] raise the cargo and release it at rest
+  double deflection_limit = 0.2;        // divergence: tip deflection / boom length [-]
+  double constraint_drift_limit = 1e-3; // [m]
 };
 
 struct Scene {
@@ -103,6 +126,7 @@ struct Scene {
   std::string description;
   Boom boom;
   std::optional<Hull> hull;
+  std::optional<Hub> hub;    // excludes hull
   std::optional<Cargo> cargo;
   std::optional<Wire> wire;
   Environment environment;
@@ -112,6 +136,8 @@ struct Scene {
   Simulation simulation;
 
   bool is_crane() const { return hull.has_value(); }  // then cargo, wire and boom.mount are present
+  bool has_base() const { return hull.has_value() || hub.has_value(); }  // a time-domain system: hull or hub
+  bool has_cargo() const { return cargo.has_value(); }  // then wire too
 };
 
 }  // namespace ffrf::cases

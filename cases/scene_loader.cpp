@@ -107,14 +107,30 @@ class SceneReader {
         present_[dotted] = &value;
       }
     }
+    hub_ = sections_.contains("hub");
+    // A hull crane needs all of [hull], [cargo], [wire]; with a hub, [cargo] and [wire] are optional.
     for (const SectionSpec& section : scene_sections()) {
       if (section.role == SectionRole::crane && sections_.contains(std::string(section.name))) crane_ = true;
+    }
+    if (hub_) {
+      crane_ = sections_.contains("hull");
+      if (crane_) {
+        report(line_of(*sections_.at("hub")), "hub", "",
+               "[hub] and [hull] exclude each other: a scene's boom is clamped either to a floating hull or to a hub");
+      }
+      cargo_ = sections_.contains("cargo") || sections_.contains("wire");
+      if (!crane_ && sections_.contains("cargo") != sections_.contains("wire")) {
+        report(0, sections_.contains("cargo") ? "wire" : "cargo", "",
+               "a hub scene with a cargo needs both [cargo] and [wire] (or neither)");
+      }
+    } else {
+      cargo_ = crane_;
     }
     for (const SectionSpec& section : scene_sections()) {
       if (sections_.contains(std::string(section.name))) continue;
       if (section.role == SectionRole::required) {
         report(0, std::string(section.name), "", fmt::format("missing section [{}] (required)", section.name));
-      } else if (section.role == SectionRole::crane && crane_) {
+      } else if (section.role == SectionRole::crane && crane_ && !hub_) {
         report(0, std::string(section.name), "",
                fmt::format("missing section [{}]: a crane scene (one with [hull], [cargo] or [wire]) needs all of "
                            "[hull], [cargo] and [wire]",
@@ -246,7 +262,15 @@ class SceneReader {
 
   // Checks that involve several keys (only run when every key is valid on its own).
   void check_scene() {
-    if (!crane_) return;
+    if (hub_) {
+      for (const char* key : {"boom.angle", "boom.root_x", "boom.root_y"}) {
+        if (present_.contains(key)) {
+          report(line_of(*present_.at(key)), key, show_value(*present_.at(key)),
+                 "belongs to a hull crane; a hub scene clamps the boom at hub.radius along hub.angle");
+        }
+      }
+    }
+    if (!crane_ || hub_) return;
     const double boom_mass = boom_mass_per_length() * number("boom.length");
     const double total = number("hull.mass") + boom_mass + number("cargo.mass");
     const double buoyancy =
@@ -279,11 +303,22 @@ class SceneReader {
     scene.boom.boundary = boundary_of(text("boom.boundary"));
     scene.boom.damping_ratio = number("boom.damping_ratio");
     if (has("boom.density")) scene.boom.density = number("boom.density");
+    scene.boom.stiffening = parse_stiffening(text("boom.stiffening")).value_or(Stiffening::none);
     if (crane_) {
       scene.boom.mount = BoomMount{number("boom.angle"), number("boom.root_x"), number("boom.root_y")};
       scene.hull = Hull{number("hull.mass"),  number("hull.pitch_radius_of_gyration"),
                         number("hull.length"), number("hull.width"), number("hull.depth"), number("hull.g1_above_keel"),
                         number("hull.g1_aft_of_mid_length")};
+    }
+    if (hub_) {
+      const std::string& motion = text("hub.motion");
+      scene.hub = Hub{number("hub.radius"), number("hub.angle"),
+                      motion == "spin-up" ? HubMotion::spin_up
+                                          : (motion == "constant-spin" ? HubMotion::constant_spin : HubMotion::fixed),
+                      number("hub.spin_rate"), number("hub.spin_up_time")};
+      scene.boom.mount = BoomMount{0.0, number("hub.radius"), 0.0};
+    }
+    if (cargo_) {
       const double l = number("cargo.length");
       const double h = number("cargo.height");
       const bool derived = !has("cargo.pitch_radius_of_gyration");
@@ -305,7 +340,9 @@ class SceneReader {
     scene.mooring = Mooring{number("mooring.surge_stiffness")};
     scene.simulation = Simulation{number("simulation.duration"), number("simulation.output_interval"),
                                   text("simulation.initial_state") == "as-built" ? InitialState::as_built
-                                                                                 : InitialState::static_equilibrium};
+                                                                                 : InitialState::static_equilibrium,
+                                  number("simulation.cargo_lift"), number("simulation.deflection_limit"),
+                                  number("simulation.constraint_drift_limit")};
     return scene;
   }
 
@@ -339,7 +376,9 @@ class SceneReader {
   std::string file_;
   std::vector<std::string_view> lines_;
   std::vector<SceneProblem> problems_;
-  bool crane_ = false;
+  bool crane_ = false;  // a hull crane
+  bool hub_ = false;    // a hub scene
+  bool cargo_ = false;  // cargo and wire present
   std::map<std::string, const toml::table*, std::less<>> sections_;
   std::map<std::string, const toml::node*, std::less<>> present_;
   std::map<std::string, Resolved, std::less<>> resolved_;

@@ -64,6 +64,10 @@ constexpr std::array kSections{
     SectionSpec{"hull", SectionRole::crane,
                 "Crane hull G1: a rigid box in surge, heave and pitch. Hull frame: x forward (toward the bow, "
                 "where the boom overhangs), y up, origin at G1."},
+    SectionSpec{"hub", SectionRole::optional,
+                "A rigid hub on a fixed axis normal to the plane, instead of a floating hull: the boom is clamped to "
+                "it at radius hub.radius, and the hub is held or turned by a prescribed rotation θ(t) (a driving "
+                "constraint). [cargo] and [wire] are optional with a hub (both or neither). Excludes [hull]."},
     SectionSpec{"cargo", SectionRole::crane, "Cargo G2: a rigid box in surge, heave and pitch, hanging on the wire."},
     SectionSpec{"wire", SectionRole::crane,
                 "Wire rope from the boom tip A′ to the hook C: axial spring–damper, tension only."},
@@ -104,6 +108,10 @@ constexpr std::array kKeys{
     crane_required("boom.root_y", length, kAny, "y of the boom root B relative to G1, hull frame."),
     defaulted("boom.damping_ratio", ratio, kFraction, 0.0,
               "Structural damping of the boom: fraction of critical in its first mode."),
+    choice("boom.stiffening", "none|static|centrifugal|both", "none",
+           "Geometric (stress) stiffening of the boom: static = from the reference axial force of self-weight "
+           "and cargo (compression softens), centrifugal = from the frame's angular velocity, updated during the "
+           "run; both; none = the linear floating-frame model (`--stiffening` overrides it)."),
     // [hull]
     required("hull.mass", mass, kPositive, "Hull mass without the boom.", "t"),
     required("hull.pitch_radius_of_gyration", length, kPositive, "Radius of gyration of the hull for pitch about G1."),
@@ -112,6 +120,15 @@ constexpr std::array kKeys{
     required("hull.depth", length, kPositive, "Depth of the box hull, keel to deck."),
     required("hull.g1_above_keel", length, kNonNegative, "Height of G1 above the keel."),
     required("hull.g1_aft_of_mid_length", length, kAny, "Distance of G1 aft of the hull's mid-length (< 0: forward)."),
+    // [hub]
+    defaulted("hub.radius", length, kNonNegative, 0.0,
+              "Distance from the hub's axis to the boom root B, along the boom axis."),
+    defaulted("hub.angle", angle, kAny, 0.0, "Angle of the hub and the boom above the x axis at t = 0.", "deg"),
+    choice("hub.motion", "fixed|spin-up|constant-spin", "fixed",
+           "Prescribed rotation: fixed = held at hub.angle; spin-up = θ(t) = (Ωs/Ts)[t²/2 + (Ts/2π)²(cos(2πt/Ts) − 1)] "
+           "for t < Ts, then Ωs (t − Ts/2) (Simo & Vu-Quoc 1986); constant-spin = Ωs t from rest."),
+    defaulted("hub.spin_rate", angular_velocity, kAny, 0.0, "Final spin rate Ωs of spin-up and constant-spin."),
+    defaulted("hub.spin_up_time", time, kPositive, 15.0, "Spin-up time Ts."),
     // [cargo]
     required("cargo.mass", mass, kPositive, "Cargo mass.", "t"),
     required("cargo.length", length, kPositive, "Length of the cargo box (x)."),
@@ -127,7 +144,7 @@ constexpr std::array kKeys{
               "Axial damping as a fraction of critical for the cargo mass on the wire stiffness."),
     // [environment]
     defaulted("environment.water_density", density, kPositive, 1025.0, "Sea-water density ρ."),
-    defaulted("environment.gravity", acceleration, kPositive, 9.81, "Gravitational acceleration g."),
+    defaulted("environment.gravity", acceleration, kNonNegative, 9.81, "Gravitational acceleration g (0: none)."),
     with_infinity(defaulted("environment.water_depth", length, Range{{0.0, false}, {kInf, true}}, kInf,
                             "Water depth; `inf` (or \"inf\") is deep water.")),
     // [wave]
@@ -152,6 +169,15 @@ constexpr std::array kKeys{
     choice("simulation.initial_state", "static-equilibrium|as-built", "static-equilibrium",
            "static-equilibrium: start from the static equilibrium (KINSOL); as-built: start from the "
            "undeformed posture as given."),
+    defaulted("simulation.cargo_lift", length, kNonNegative, 0.0,
+              "Raise the cargo this far above its starting posture and release it at rest: a dropped load whose "
+              "wire goes slack and snaps taut (0: no lift)."),
+    defaulted("simulation.deflection_limit", ratio, Range{{0.0, false}, {kInf, false}}, 0.2,
+              "Divergence detector: a run stops as diverged when the boom tip's elastic deflection exceeds this "
+              "fraction of the boom length (the linear floating-frame model is meaningless beyond it)."),
+    defaulted("simulation.constraint_drift_limit", length, kPositive, 1e-3,
+              "Constraint-drift detector: a full-coordinate run is flagged when the clamp residual |C| at B exceeds "
+              "this."),
 };
 
 double display_factor(const KeySpec& key) {

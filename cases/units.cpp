@@ -73,6 +73,9 @@ constexpr std::array kUnits{
     Unit{"kN/m", Dimension::stiffness, 1e3, true},
     Unit{"MN/m", Dimension::stiffness, 1e6, true},
     Unit{"N/mm", Dimension::stiffness, 1e3, false},
+    Unit{"rad/s", Dimension::angular_velocity, 1.0, true},
+    Unit{"deg/s", Dimension::angular_velocity, 3.14159265358979323846 / 180.0, true},
+    Unit{"rpm", Dimension::angular_velocity, 2.0 * 3.14159265358979323846 / 60.0, true},
 };
 
 const Unit* find_unit(std::string_view symbol, Dimension dimension) {
@@ -119,6 +122,7 @@ std::string_view dimension_name(Dimension dimension) {
     case Dimension::mass_per_length: return "a mass per length";
     case Dimension::acceleration: return "an acceleration";
     case Dimension::stiffness: return "a spring stiffness";
+    case Dimension::angular_velocity: return "an angular velocity";
   }
   return "a quantity";
 }

@@ -23,6 +23,7 @@ enum class Dimension {
   mass_per_length,  // kg/m
   acceleration,     // m/s^2
   stiffness,        // N/m (translational spring)
+  angular_velocity, // rad/s
 };
 
 std::string_view si_unit(Dimension dimension);         // "m", "kg/m^3", "" for ratio

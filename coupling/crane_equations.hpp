@@ -4,27 +4,47 @@
 //    the clamp at B; M_z(z) z̈ = Q_z(z, ż, t) is solved for z̈ (ODE). Without hull DOFs when the
 //    hull is held fixed.
 //  * Full coordinates q = (hull | cargo | boom R_B, θ_B, η) with the clamp as 3 constraints
-//    C(q) = 0 and Lagrange multipliers: M(q) q̈ = Q(q, q̇, t) − C_qᵀ λ (paper eqs. 17, 22, 31–34).
+//    C(q, t) = 0 and Lagrange multipliers: M(q) q̈ = Q(q, q̇, t) − C_qᵀ λ (paper eqs. 17, 22, 31–34).
+//    With a driven base (prescribed motion) C depends on t: C_q v + C_t = 0 at velocity level.
+// The hull block is absent when the base is held or driven, the cargo block when there is no cargo.
 #pragma once
 
 #include <Eigen/Dense>
+#include <stdexcept>
+#include <string>
 
 namespace ffrf::coupling {
 
 // One output sample: what a time-series row and the static report show.
 struct CraneOutputs {
-  Eigen::Vector3d hull = Eigen::Vector3d::Zero();        // G1 x [m], y [m], pitch [rad]
+  Eigen::Vector3d hull = Eigen::Vector3d::Zero();        // G1 (or hub) x [m], y [m], pitch [rad]
+  Eigen::Vector3d hull_velocity = Eigen::Vector3d::Zero();  // [m/s, m/s, rad/s]
   Eigen::Vector3d cargo = Eigen::Vector3d::Zero();       // G2 x [m], y [m], pitch [rad]
   Eigen::Vector2d tip_deflection = Eigen::Vector2d::Zero();  // elastic (u, v) at A′ in the boom frame [m]
   double wire_tension = 0.0;                             // [N]
   double wire_length = 0.0;                              // [m]
   Eigen::Vector3d joint_reaction = Eigen::Vector3d::Zero();  // on the boom at B: Fx, Fy [N] (global), M [N m]
+  double root_axial_force = 0.0;                         // boom axial force at B, tension > 0 [N]
   double constraint_residual = 0.0;                      // |C(q)| (0 in minimal coordinates) [m]
   double kinetic_energy = 0.0;                           // [J] (added mass included)
   double gravity_energy = 0.0;                           // [J]
   double strain_energy = 0.0;                            // [J]
   double wire_energy = 0.0;                              // [J]
   double spring_energy = 0.0;                            // mooring + support springs [J]
+};
+
+// The equations' mass matrix lost positive definiteness at a state (e.g. the hull–boom Schur
+// complement of the minimal-coordinate ODE): the failure detectors name it (coupling/run_monitor.hpp).
+class MassMatrixError : public std::runtime_error {
+ public:
+  explicit MassMatrixError(double smallest_pivot)
+      : std::runtime_error("loss of positive definiteness of the mass matrix (smallest LDLT pivot " +
+                           std::to_string(smallest_pivot) + ")"),
+        smallest_pivot_(smallest_pivot) {}
+  double smallest_pivot() const { return smallest_pivot_; }
+
+ private:
+  double smallest_pivot_;
 };
 
 class CraneEquations {
@@ -45,18 +65,23 @@ class CraneEquations {
   // --- full coordinates with the clamp as constraints (DAE) ---
   virtual int full_size() const = 0;
   static constexpr int constraint_count = 3;
-  virtual void full_from_minimal(ConstRef z, ConstRef z_dot, Ref q, Ref v) const = 0;
+  virtual void full_from_minimal(double t, ConstRef z, ConstRef z_dot, Ref q, Ref v) const = 0;
   virtual void full_mass_times(ConstRef q, ConstRef a, Ref out) = 0;       // M(q) a
   virtual void full_forces(double t, ConstRef q, ConstRef v, Ref out) = 0;  // Q(q, v, t)
-  virtual void constraint(ConstRef q, Ref c) const = 0;                     // C(q)
+  virtual void constraint(double t, ConstRef q, Ref c) const = 0;           // C(q, t)
   virtual void constraint_jacobian(ConstRef q, Eigen::MatrixXd& jacobian) const = 0;  // C_q (3 × n)
-  virtual void constraint_rate_terms(ConstRef q, ConstRef v, Ref gamma) const = 0;    // −(C_q v)_q v
+  virtual void constraint_time_derivative(double t, Ref c_t) const = 0;    // C_t (velocity level: C_q v + C_t = 0)
+  // γ with C_q q̈ = γ: −(C_q v)_q v − C_tt (C_q does not depend on t).
+  virtual void constraint_rate_terms(double t, ConstRef q, ConstRef v, Ref gamma) const = 0;
   virtual Eigen::MatrixXd full_mass_matrix(ConstRef q) = 0;
   virtual CraneOutputs full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) = 0;
 
-  // Wire slack indicator ℓ − L0 [m] (root function for event location).
-  virtual double wire_stretch_minimal(ConstRef z) = 0;
+  // Wire slack indicator ℓ − L0 [m] (root function for event location); 1 m when there is no wire.
+  virtual double wire_stretch_minimal(double t, ConstRef z) = 0;
   virtual double wire_stretch_full(ConstRef q) = 0;
+  virtual bool has_wire() const = 0;
+  // Index of the cargo's (x, y, θ) in the minimal coordinates; −1 without a cargo.
+  virtual int cargo_offset() const = 0;
   // Elastic coordinate count (0 for the rigid boom).
   virtual int elastic_size() const = 0;
 };

@@ -10,6 +10,7 @@
 #include "coupling/airy_wave.hpp"
 #include "coupling/floating_frame_body.hpp"
 #include "coupling/hull_pressure.hpp"
+#include "coupling/prescribed_motion.hpp"
 
 namespace ffrf::coupling {
 
@@ -26,6 +27,8 @@ struct HullModel {
   Eigen::Vector3d support_stiffness = Eigen::Vector3d::Zero();
   Eigen::Vector3d support_pose = Eigen::Vector3d::Zero();  // also the pose of a fixed hull
   bool fixed = false;  // hull held at its initial pose (its coordinates removed)
+  // A driven base (hub): fixed = true and the pose follows this driving constraint instead of support_pose.
+  std::optional<PrescribedMotion> prescribed;
 };
 
 struct BoomMountModel {
@@ -34,6 +37,7 @@ struct BoomMountModel {
 };
 
 struct CargoModel {
+  bool present = true;                            // false: no cargo and no wire (coordinates removed)
   double mass = 0.0;                              // [kg]
   double pitch_inertia = 0.0;                     // about G2 [kg m²]
   Eigen::Vector2d hook = Eigen::Vector2d::Zero(); // C relative to G2, cargo frame [m]

@@ -21,7 +21,7 @@ class CraneSystem final : public CraneEquations {
  public:
   explicit CraneSystem(CraneModel<Coords> model);
 
-  int minimal_size() const override { return cargo_at_ + 3 + n_; }
+  int minimal_size() const override { return elastic_at_ + n_; }
   Eigen::VectorXd initial_guess() const override;
   void minimal_accelerations(double t, ConstRef z, ConstRef z_dot, Ref z_ddot) override;
   void static_residual(ConstRef z, Ref residual) override;
@@ -29,21 +29,33 @@ class CraneSystem final : public CraneEquations {
   Eigen::VectorXd coordinate_scale() const override;
   CraneOutputs minimal_outputs(double t, ConstRef z, ConstRef z_dot) override;
 
-  int full_size() const override { return cargo_at_ + 6 + n_; }
-  void full_from_minimal(ConstRef z, ConstRef z_dot, Ref q, Ref v) const override;
+  int full_size() const override { return elastic_at_ + 3 + n_; }
+  void full_from_minimal(double t, ConstRef z, ConstRef z_dot, Ref q, Ref v) const override;
   void full_mass_times(ConstRef q, ConstRef a, Ref out) override;
   void full_forces(double t, ConstRef q, ConstRef v, Ref out) override;
-  void constraint(ConstRef q, Ref c) const override;
+  void constraint(double t, ConstRef q, Ref c) const override;
   void constraint_jacobian(ConstRef q, Eigen::MatrixXd& jacobian) const override;
-  void constraint_rate_terms(ConstRef q, ConstRef v, Ref gamma) const override;
+  void constraint_time_derivative(double t, Ref c_t) const override;
+  void constraint_rate_terms(double t, ConstRef q, ConstRef v, Ref gamma) const override;
   Eigen::MatrixXd full_mass_matrix(ConstRef q) override;
   CraneOutputs full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) override;
-  double wire_stretch_minimal(ConstRef z) override;
+  double wire_stretch_minimal(double t, ConstRef z) override;
   double wire_stretch_full(ConstRef q) override;
+  bool has_wire() const override { return has_cargo(); }
+  int cargo_offset() const override { return has_cargo() ? cargo_at_ : -1; }
   int elastic_size() const override { return n_; }
 
  private:
   bool hull_free() const { return !m_.hull.fixed; }
+  bool has_cargo() const { return m_.cargo.present; }
+  // Pose, velocity and acceleration of a held or driven hull at t.
+  Eigen::Vector3d base_pose(double t) const { return m_.hull.prescribed ? m_.hull.prescribed->pose(t) : m_.hull.support_pose; }
+  Eigen::Vector3d base_velocity(double t) const {
+    return m_.hull.prescribed ? m_.hull.prescribed->velocity(t) : Eigen::Vector3d::Zero();
+  }
+  Eigen::Vector3d base_acceleration(double t) const {
+    return m_.hull.prescribed ? m_.hull.prescribed->acceleration(t) : Eigen::Vector3d::Zero();
+  }
   Eigen::Vector3d hull_rigid_inertia() const;  // (m1 + A11, m1 + A33, I1 + A55)
   Eigen::Vector3d cargo_inertia() const { return {m_.cargo.mass, m_.cargo.mass, m_.cargo.pitch_inertia}; }
   // Boom frame (R_B, θ_B) and its velocity from the hull pose and velocity (the clamp at B).
@@ -54,14 +66,19 @@ class CraneSystem final : public CraneEquations {
                       const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool with_wave);
   // Minimal-coordinate generalized forces (hull rows through Jᵀ, convective term included).
   void minimal_forces(double t, ConstRef z, ConstRef z_dot, bool with_wave);
-  void split_minimal(ConstRef z, ConstRef z_dot, Eigen::Vector3d& hull_q, Eigen::Vector3d& hull_v) const;
+  void split_minimal(double t, ConstRef z, ConstRef z_dot, Eigen::Vector3d& hull_q, Eigen::Vector3d& hull_v) const;
+  // Boom axial force at the root from the joint reaction on the boom (tension > 0).
+  double root_axial_force(const Eigen::Vector3d& reaction, double frame_angle) const {
+    return -(reaction.x() * std::cos(frame_angle) + reaction.y() * std::sin(frame_angle));
+  }
   CraneOutputs common_outputs(const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v,
                               const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v);
   void boom_tip_kinematics(const Eigen::Vector3d& cargo_q, Eigen::Vector2d& tip, Eigen::Vector2d& hook) const;
 
   CraneModel<Coords> m_;
   int n_;
-  int cargo_at_;  // index of the cargo block (0 with a fixed hull, 3 otherwise)
+  int cargo_at_;    // index of the cargo block (0 with a fixed hull, 3 otherwise)
+  int elastic_at_;  // minimal: index of η; full: index of the boom frame (R_B, θ_B) (cargo_at_ + 3 or + 0)
   MassFactor<typename Coords::Matrix> elastic_mass_factor_;
   Eigen::VectorXd elastic_scale_;  // typical size of each elastic coordinate (see the constructor)
   // workspace (allocated once)
@@ -76,7 +93,9 @@ class CraneSystem final : public CraneEquations {
   Eigen::Matrix<double, 3, Eigen::Dynamic> hull_elastic_mass_;
   Eigen::Matrix<double, Eigen::Dynamic, 3> schur_columns_;
   Eigen::VectorXd schur_rhs_;
-  Eigen::Vector2d convective_ = Eigen::Vector2d::Zero();  // J̇ż for R_B
+  // Known part of the boom frame's acceleration (R̈_B, θ̈_B): the convective −θ̇1² A1 b, plus the
+  // prescribed acceleration of a driven base.
+  Eigen::Vector3d frame_known_acc_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d joint_reaction_ = Eigen::Vector3d::Zero();
   WireState wire_;
 };

@@ -3,7 +3,9 @@
 // J_r = [[1, 0, −(A1 b)_y], [0, 1, (A1 b)_x], [0, 0, 1]] and J̇ż = (−θ̇1² A1 b, 0):
 //   hull rows:    (M_h + J_rᵀ M_RR J_r) z̈_h + J_rᵀ M_Rf η̈ = Q_h + J_rᵀ (Q_B,ref − M_B,ref,R J̇ż)
 //   elastic rows: M_fR J_r z̈_h + M_ff η̈ = Q_B,f − M_fR,R J̇ż
-// solved by the Schur complement of the constant M_ff (factored once).
+// solved by the Schur complement of the constant M_ff (factored once). A held or driven base has no
+// hull rows: its prescribed acceleration joins J̇ż as the known frame acceleration. Without a cargo
+// the cargo rows are absent.
 #pragma once
 
 namespace ffrf::coupling::detail {
@@ -13,6 +15,7 @@ CraneSystem<Coords>::CraneSystem(CraneModel<Coords> model)
     : m_(std::move(model)),
       n_(static_cast<int>(m_.boom.elastic_size())),
       cargo_at_(m_.hull.fixed ? 0 : 3),
+      elastic_at_(cargo_at_ + (m_.cargo.present ? 3 : 0)),
       boom_q_(3 + n_), boom_v_(3 + n_), boom_force_(3 + n_), elastic_rhs_(n_), schur_rhs_column_(n_),
       boom_coupling_(3, n_), hull_elastic_mass_(3, n_), schur_columns_(n_, 3), schur_rhs_(n_) {
   // Typical size of each elastic coordinate: the η_i that moves some nodal DOF by 1 cm (1 cm or
@@ -61,11 +64,15 @@ void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q
   hull_force_(0) -= hull.mooring_stiffness * hull_q(0);
   hull_force_ -= hull.support_stiffness.cwiseProduct(hull_q - hull.support_pose);
 
-  cargo_force_ = Eigen::Vector3d(0.0, -m_.cargo.mass * g, 0.0);
-
   m_.boom.quadratic_velocity(boom_q_, boom_v_, boom_force_);
   m_.boom.add_gravity(boom_q_, Eigen::Vector2d(0.0, -g), boom_force_);
   m_.boom.add_elastic_force(boom_q_, boom_v_, boom_force_);
+  if (!has_cargo()) {
+    cargo_force_.setZero();
+    wire_ = WireState{};
+    return;
+  }
+  cargo_force_ = Eigen::Vector3d(0.0, -m_.cargo.mass * g, 0.0);
 
   const Eigen::Vector2d tip = m_.boom.position(boom_q_, m_.boom_tip);
   const Eigen::Vector2d tip_v = m_.boom.velocity(boom_q_, boom_v_, m_.boom_tip);
@@ -80,28 +87,37 @@ void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::split_minimal(ConstRef z, ConstRef z_dot, Eigen::Vector3d& hull_q, Eigen::Vector3d& hull_v) const {
+void CraneSystem<Coords>::split_minimal(double t, ConstRef z, ConstRef z_dot, Eigen::Vector3d& hull_q,
+                                        Eigen::Vector3d& hull_v) const {
   if (hull_free()) {
     hull_q = z.head<3>();
     hull_v = z_dot.head<3>();
   } else {
-    hull_q = m_.hull.support_pose;
-    hull_v.setZero();
+    hull_q = base_pose(t);
+    hull_v = base_velocity(t);
   }
 }
 
 template <fem::ElasticCoordinates Coords>
 void CraneSystem<Coords>::minimal_forces(double t, ConstRef z, ConstRef z_dot, bool with_wave) {
   Eigen::Vector3d hull_q, hull_v;
-  split_minimal(z, z_dot, hull_q, hull_v);
+  split_minimal(t, z, z_dot, hull_q, hull_v);
   mount_boom(hull_q, hull_v);
   boom_q_.tail(n_) = z.tail(n_);
   boom_v_.tail(n_) = z_dot.tail(n_);
-  evaluate_loads(t, hull_q, hull_v, z.segment<3>(cargo_at_), z_dot.segment<3>(cargo_at_), with_wave);
+  const Eigen::Vector3d no_cargo = Eigen::Vector3d::Zero();
+  evaluate_loads(t, hull_q, hull_v, has_cargo() ? Eigen::Vector3d(z.segment<3>(cargo_at_)) : no_cargo,
+                 has_cargo() ? Eigen::Vector3d(z_dot.segment<3>(cargo_at_)) : no_cargo, with_wave);
   m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_);
-  convective_ = -hull_v(2) * hull_v(2) * mount_offset_;
-  const Eigen::Vector3d boom_reference_rhs = boom_force_.head<3>() - boom_reference_mass_.leftCols<2>() * convective_;
-  elastic_rhs_.noalias() = boom_force_.tail(n_) - boom_coupling_.topRows<2>().transpose() * convective_;
+  frame_known_acc_.head<2>() = -hull_v(2) * hull_v(2) * mount_offset_;
+  frame_known_acc_(2) = 0.0;
+  if (m_.hull.prescribed) {
+    const Eigen::Vector3d base_a = base_acceleration(t);
+    frame_known_acc_.head<2>() += base_a.head<2>() + base_a(2) * perp(mount_offset_);
+    frame_known_acc_(2) = base_a(2);
+  }
+  const Eigen::Vector3d boom_reference_rhs = boom_force_.head<3>() - boom_reference_mass_ * frame_known_acc_;
+  elastic_rhs_.noalias() = boom_force_.tail(n_) - boom_coupling_.transpose() * frame_known_acc_;
   Eigen::Matrix3d jr = Eigen::Matrix3d::Identity();
   jr(0, 2) = -mount_offset_.y();
   jr(1, 2) = mount_offset_.x();
@@ -112,7 +128,7 @@ void CraneSystem<Coords>::minimal_forces(double t, ConstRef z, ConstRef z_dot, b
 template <fem::ElasticCoordinates Coords>
 void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z_dot, Ref z_ddot) {
   minimal_forces(t, z, z_dot, true);
-  z_ddot.segment<3>(cargo_at_) = cargo_force_.cwiseQuotient(cargo_inertia());
+  if (has_cargo()) z_ddot.segment<3>(cargo_at_) = cargo_force_.cwiseQuotient(cargo_inertia());
   Eigen::Vector3d hull_a = Eigen::Vector3d::Zero();
   if (n_ > 0) schur_rhs_ = elastic_mass_factor_.solve(elastic_rhs_);
   if (hull_free()) {
@@ -129,16 +145,20 @@ void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z
       schur -= hull_elastic_mass_ * schur_columns_;
       rhs -= hull_elastic_mass_ * schur_rhs_;
     }
-    hull_a = schur.ldlt().solve(rhs);
+    const Eigen::LDLT<Eigen::Matrix3d> schur_factor(schur);
+    if (schur_factor.info() != Eigen::Success || !schur_factor.isPositive() || !(schur_factor.vectorD().minCoeff() > 0.0)) {
+      throw MassMatrixError(schur_factor.vectorD().minCoeff());
+    }
+    hull_a = schur_factor.solve(rhs);
     z_ddot.head<3>() = hull_a;
     if (n_ > 0) z_ddot.tail(n_) = schur_rhs_ - schur_columns_ * hull_a;
   } else if (n_ > 0) {
     z_ddot.tail(n_) = schur_rhs_;
   }
   // Joint reaction on the boom at B: M_B q̈_B − Q_B over the frame rows (force, moment about B).
-  Eigen::Vector3d frame_a;
-  frame_a.head<2>() = hull_a.head<2>() + hull_a(2) * perp(mount_offset_) + convective_;
-  frame_a(2) = hull_a(2);
+  Eigen::Vector3d frame_a = frame_known_acc_;
+  frame_a.head<2>() += hull_a.head<2>() + hull_a(2) * perp(mount_offset_);
+  frame_a(2) += hull_a(2);
   joint_reaction_ = boom_reference_mass_ * frame_a - boom_force_.head<3>();
   if (n_ > 0) joint_reaction_ += boom_coupling_ * z_ddot.tail(n_);
 }
@@ -148,15 +168,16 @@ void CraneSystem<Coords>::static_residual(ConstRef z, Ref residual) {
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(z.size());
   minimal_forces(0.0, z, zero, false);
   if (hull_free()) residual.head<3>() = hull_rhs_;
-  residual.segment<3>(cargo_at_) = cargo_force_;
+  if (has_cargo()) residual.segment<3>(cargo_at_) = cargo_force_;
   residual.tail(n_) = elastic_rhs_;
 }
 
 template <fem::ElasticCoordinates Coords>
 Eigen::VectorXd CraneSystem<Coords>::initial_guess() const {
   Eigen::VectorXd z = Eigen::VectorXd::Zero(minimal_size());
-  const Eigen::Vector3d hull_q = m_.hull.support_pose;
+  const Eigen::Vector3d hull_q = base_pose(0.0);
   if (hull_free()) z.head<3>() = hull_q;
+  if (!has_cargo()) return z;
   // Cargo hanging straight below the undeformed tip, wire stretched by the cargo's weight.
   const Eigen::Vector2d root = hull_q.head<2>() + rotation(hull_q(2)) * m_.mount.root;
   const Eigen::Vector2d tip = root + rotation(hull_q(2) + m_.mount.angle) * m_.boom_tip.undeformed;
@@ -175,13 +196,13 @@ Eigen::VectorXd CraneSystem<Coords>::static_residual_scale() const {
     const double total = m_.hull.mass + m_.boom.coords().mass() + m_.cargo.mass;
     scale.head<3>() = Eigen::Vector3d(1.0 / (total * g), 1.0 / (total * g), 1.0 / ((m_.hull.pitch_inertia + 1.0) * g));
   }
-  scale.segment<3>(cargo_at_) = cargo_inertia().cwiseInverse() / g;
+  if (has_cargo()) scale.segment<3>(cargo_at_) = cargo_inertia().cwiseInverse() / std::max(g, 1e-3);
   // Elastic rows: inertia under gravity plus the stiffness times a 1 cm displacement, so that the
   // round-off of K η (K grows like 1/h³) does not dominate the scaled residual.
   const Eigen::MatrixXd elastic_mass(m_.boom.coords().mass_ff());
   const Eigen::MatrixXd elastic_stiffness(m_.boom.coords().stiffness());
   for (int i = 0; i < n_; ++i) {
-    scale(cargo_at_ + 3 + i) = 1.0 / (elastic_mass(i, i) * g + 0.01 * std::abs(elastic_stiffness(i, i)));
+    scale(elastic_at_ + i) = 1.0 / (elastic_mass(i, i) * g + 0.01 * std::abs(elastic_stiffness(i, i)));
   }
   return scale;
 }
@@ -190,7 +211,7 @@ template <fem::ElasticCoordinates Coords>
 Eigen::VectorXd CraneSystem<Coords>::coordinate_scale() const {
   Eigen::VectorXd scale = Eigen::VectorXd::Constant(minimal_size(), 1.0);
   if (hull_free()) scale(2) = 0.01;
-  scale(cargo_at_ + 2) = 0.01;
+  if (has_cargo()) scale(cargo_at_ + 2) = 0.01;
   scale.tail(n_) = elastic_scale_;
   return scale;
 }
@@ -202,9 +223,10 @@ void CraneSystem<Coords>::boom_tip_kinematics(const Eigen::Vector3d& cargo_q, Ei
 }
 
 template <fem::ElasticCoordinates Coords>
-double CraneSystem<Coords>::wire_stretch_minimal(ConstRef z) {
+double CraneSystem<Coords>::wire_stretch_minimal(double t, ConstRef z) {
+  if (!has_cargo()) return 1.0;
   Eigen::Vector3d hull_q, hull_v;
-  split_minimal(z, z, hull_q, hull_v);
+  split_minimal(t, z, z, hull_q, hull_v);
   mount_boom(hull_q, Eigen::Vector3d::Zero());
   boom_q_.tail(n_) = z.tail(n_);
   Eigen::Vector2d tip, hook;
@@ -217,9 +239,12 @@ CraneOutputs CraneSystem<Coords>::minimal_outputs(double t, ConstRef z, ConstRef
   Eigen::VectorXd z_ddot(z.size());
   minimal_accelerations(t, z, z_dot, z_ddot);
   Eigen::Vector3d hull_q, hull_v;
-  split_minimal(z, z_dot, hull_q, hull_v);
-  CraneOutputs out = common_outputs(hull_q, hull_v, z.segment<3>(cargo_at_), z_dot.segment<3>(cargo_at_));
+  split_minimal(t, z, z_dot, hull_q, hull_v);
+  const Eigen::Vector3d no_cargo = Eigen::Vector3d::Zero();
+  CraneOutputs out = common_outputs(hull_q, hull_v, has_cargo() ? Eigen::Vector3d(z.segment<3>(cargo_at_)) : no_cargo,
+                                    has_cargo() ? Eigen::Vector3d(z_dot.segment<3>(cargo_at_)) : no_cargo);
   out.joint_reaction = joint_reaction_;
+  out.root_axial_force = root_axial_force(joint_reaction_, boom_q_(2));
   out.constraint_residual = 0.0;
   return out;
 }
@@ -229,17 +254,20 @@ CraneOutputs CraneSystem<Coords>::common_outputs(const Eigen::Vector3d& hull_q, 
                                                  const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v) {
   CraneOutputs out;
   out.hull = hull_q;
+  out.hull_velocity = hull_v;
   out.cargo = cargo_q;
   out.tip_deflection = m_.boom_tip.shape * boom_q_.tail(n_);
   out.wire_tension = wire_.tension;
   out.wire_length = wire_.length;
   const double g = m_.gravity;
+  const double cargo_on = has_cargo() ? 1.0 : 0.0;
   out.kinetic_energy = 0.5 * hull_v.dot(hull_rigid_inertia().cwiseProduct(hull_v)) * (hull_free() ? 1.0 : 0.0) +
-                       0.5 * cargo_v.dot(cargo_inertia().cwiseProduct(cargo_v)) + m_.boom.kinetic_energy(boom_q_, boom_v_);
-  out.gravity_energy = (hull_free() ? m_.hull.mass * g * hull_q(1) : 0.0) + m_.cargo.mass * g * cargo_q(1) +
+                       cargo_on * 0.5 * cargo_v.dot(cargo_inertia().cwiseProduct(cargo_v)) +
+                       m_.boom.kinetic_energy(boom_q_, boom_v_);
+  out.gravity_energy = (hull_free() ? m_.hull.mass * g * hull_q(1) : 0.0) + cargo_on * m_.cargo.mass * g * cargo_q(1) +
                        m_.boom.gravity_potential(boom_q_, Eigen::Vector2d(0.0, -g));
   out.strain_energy = m_.boom.strain_energy(boom_q_);
-  out.wire_energy = wire_energy(m_.wire, wire_.length);
+  out.wire_energy = has_cargo() ? wire_energy(m_.wire, wire_.length) : 0.0;
   if (hull_free()) {
     const Eigen::Vector3d d = hull_q - m_.hull.support_pose;
     out.spring_energy = 0.5 * m_.hull.mooring_stiffness * hull_q(0) * hull_q(0) +

@@ -7,7 +7,9 @@
 // and the quadratic velocity vector Q_v = −Ṁq̇ + ∂T/∂q (eq. 20.c) is
 //   Q_v,R = θ̇² A ū_c − 2θ̇ A Ĩ S̄ η̇,  Q_v,θ = −2θ̇ (d + ηᵀM_ff) η̇,  Q_v,f = θ̇² (dᵀ + M_ff η) − 2θ̇ S̃ η̇.
 // Point forces by virtual work (eq. 13), gravity from V = −gᵀ∫ρr, elastic force −Kη (eq. 16)
-// and stiffness-proportional structural damping −βKη̇. Derivation: docs/theory.md §2; checked
+// and stiffness-proportional structural damping −βKη̇. Optional geometric (stress) stiffening adds
+// −(K_σ + θ̇² K_c)η: K_σ the geometric stiffness of a constant reference axial force (static
+// prestress), K_c that of the centrifugal axial force per unit θ̇² (docs/theory.md §9). Derivation: docs/theory.md §2; checked
 // against the independent sympy derivation tests/coupling/one_element_reference.hpp.
 // A rigid body is the same body with zero elastic coordinates.
 #pragma once
@@ -126,10 +128,22 @@ class FloatingFrameBody {
     generalized.tail(n_).noalias() += coords_.shape_integral().transpose() * (a.transpose() * gravity);
   }
 
-  // Adds −Kη − βKη̇.
+  // Geometric stiffening: K_σ (constant prestress) and K_c (per unit θ̇², centrifugal); both in the
+  // coordinates' own matrix type (Coords::project of the nodal-space matrices).
+  void set_prestress_stiffness(ElasticMatrix k) { prestress_ = std::move(k); }
+  void set_centrifugal_stiffness(ElasticMatrix k) { centrifugal_ = std::move(k); }
+  bool has_prestress() const { return prestress_.size() > 0; }
+  bool has_centrifugal_stiffening() const { return centrifugal_.size() > 0; }
+
+  // Adds −Kη − βKη̇ − K_σ η − θ̇² K_c η.
   void add_elastic_force(ConstRef q, ConstRef v, Ref generalized) const {
     work_a_ = q.tail(n_) + beta_ * v.tail(n_);
     generalized.tail(n_).noalias() -= coords_.stiffness() * work_a_;
+    if (has_prestress()) generalized.tail(n_).noalias() -= prestress_ * q.tail(n_);
+    if (has_centrifugal_stiffening()) {
+      work_b_.noalias() = centrifugal_ * q.tail(n_);
+      generalized.tail(n_) -= (v(2) * v(2)) * work_b_;
+    }
   }
 
   double kinetic_energy(ConstRef q, ConstRef v) const {
@@ -141,9 +155,11 @@ class FloatingFrameBody {
     work_a_.noalias() = coords_.mass_ff() * eta_dot;
     return 0.5 * vr.dot(reference * vr) + vr.dot(coupling * eta_dot) + 0.5 * eta_dot.dot(work_a_);
   }
+  // ½ηᵀ(K + K_σ)η: elastic energy plus the second-order work of the constant prestress.
   double strain_energy(ConstRef q) const {
     const auto eta = q.tail(n_);
     work_a_.noalias() = coords_.stiffness() * eta;
+    if (has_prestress()) work_a_.noalias() += prestress_ * eta;
     return 0.5 * eta.dot(work_a_);
   }
   // V = −gᵀ ∫ρ r = −gᵀ (m R + A ∫ρū).
@@ -155,6 +171,8 @@ class FloatingFrameBody {
  private:
   Coords coords_;
   double beta_;
+  ElasticMatrix prestress_;    // empty: no static stiffening
+  ElasticMatrix centrifugal_;  // empty: no centrifugal stiffening
   Eigen::Index n_;
   mutable Vector work_a_;  // workspace, sized once: the hot path allocates nothing
   mutable Vector work_b_;

@@ -42,9 +42,9 @@ int erk_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
   return rate.allFinite() ? 0 : 1;  // recoverable: adaptive ERK retries with a smaller step
 }
 
-int wire_root(sunrealtype, N_Vector y, sunrealtype* g, void* user) {
+int wire_root(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
   auto* data = static_cast<ErkData*>(user);
-  g[0] = data->equations->wire_stretch_minimal(sundials::Vector::view(y).head(data->size));
+  g[0] = data->equations->wire_stretch_minimal(t, sundials::Vector::view(y).head(data->size));
   return 0;
 }
 
@@ -153,7 +153,7 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
   const int n = equations.minimal_size();
   const bool fixed = settings.fixed_step > 0.0;
   if (settings.fixed_step < 0.0 || !std::isfinite(settings.fixed_step)) {
-    throw SolverFailure(solver_name, "invalid fixed step " + std::to_string(settings.fixed_step), 0.0,
+    throw SolverFailure(FailureKind::setup, solver_name, "invalid fixed step " + std::to_string(settings.fixed_step), 0.0,
                         "give --step > 0, or 0 for adaptive steps");
   }
   sundials::Context context;
@@ -167,7 +167,7 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
   ErkData data{&equations, n};
   {
     Eigen::VectorXd q(equations.full_size()), v(equations.full_size());
-    equations.full_from_minimal(z0, Eigen::VectorXd::Zero(n), q, v);
+    equations.full_from_minimal(0.0, z0, Eigen::VectorXd::Zero(n), q, v);
     data.energy_reference = 0.5 * equations.full_mass_matrix(q).diagonal().sum();  // E_floor
     data.energy_bound = energy_growth_bound * data.energy_reference;
   }
@@ -179,20 +179,22 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
       ERKStepSetMaxNumSteps(erk, settings.max_steps) != ARK_SUCCESS || ERKStepRootInit(erk, 1, wire_root) != ARK_SUCCESS ||
       (fixed && (ERKStepSetFixedStep(erk, settings.fixed_step) != ARK_SUCCESS ||
                  ERKStepSetPostprocessStepFn(erk, energy_watch) != ARK_SUCCESS))) {
-    throw SolverFailure(solver_name, "set-up failed", 0.0, "report this as a bug");
+    throw SolverFailure(FailureKind::setup, solver_name, "set-up failed", 0.0, "report this as a bug");
   }
   ERKStepSetNoInactiveRootWarn(erk);
   // Failures become SolverFailure with cause and remedy; ARKODE's own message would only repeat it.
   ERKStepSetErrHandlerFn(erk, [](int, const char*, const char*, char*, void*) {}, nullptr);
 
   RunResult result;
+  DivergenceWatch watch(settings.monitor, solver_name);
   result.stats.step = fixed ? settings.fixed_step : 0.0;
   const auto unstable = [&](double t, double energy) {
     const double limit = explicit_stable_step(equations, z0);
     char cause[320];
     if (!fixed) {
       std::snprintf(cause, sizeof cause, "unstable: the solution grew without bound with adaptive steps (kinetic energy %.3g J)", energy);
-      return SolverFailure(solver_name, cause, t, "use an implicit integrator (cvode, ida) or tighten --rtol");
+      return SolverFailure(FailureKind::unstable_explicit, solver_name, cause, t,
+                           "use an implicit integrator (cvode, ida) or tighten --rtol");
     }
     std::snprintf(cause, sizeof cause,
                   "unstable: the step h = %.3g s exceeds the explicit stability limit ≈ %.3g s of the linearized crane "
@@ -203,7 +205,7 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
                   "reduce --step below ≈ %.3g s (≈ %.2f/ω_max for undamped modes), use fewer elements or modes, or an "
                   "implicit integrator (cvode, ida)",
                   limit, explicit_imaginary_axis_boundary());
-    return SolverFailure(solver_name, cause, t, remedy);
+    return SolverFailure(FailureKind::unstable_explicit, solver_name, cause, t, remedy, limit);
   };
   const auto record = [&](double t) {
     const auto state = y.map();
@@ -211,6 +213,7 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
     if (!state.allFinite() || !(outputs.kinetic_energy <= data.energy_bound)) throw unstable(t, outputs.kinetic_energy);
     result.time.push_back(t);
     result.samples.push_back(outputs);
+    watch.observe(t, outputs);
   };
   const auto record_and_calibrate = [&](double t) {
     record(t);
@@ -219,8 +222,8 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
       data.energy_bound = energy_growth_bound * data.energy_reference;
     }
   };
-  sundials::sample_outputs(
-      settings, solver_name, ARK_ROOT_RETURN,
+  sundials::sample_outputs_keeping_partial(
+      result, settings, solver_name, ARK_ROOT_RETURN,
       [&](double t_out, double& t) { return ERKStepEvolve(erk, t_out, y.v, &t, ARK_NORMAL); },
       [&] {
         int direction = 0;
@@ -230,7 +233,8 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
       [&](int flag, double t) {
         if (flag == ARK_POSTPROCESS_STEP_FAIL) throw unstable(data.diverged_time, data.diverged_energy);
         if (fixed && flag != ARK_TOO_MUCH_WORK) throw unstable(t, std::numeric_limits<double>::infinity());
-        throw SolverFailure(solver_name, ERKStepGetReturnFlagName(flag), t,
+        throw SolverFailure(flag == ARK_TOO_MUCH_WORK ? FailureKind::too_much_work : FailureKind::model_error, solver_name,
+                            ERKStepGetReturnFlagName(flag), t,
                             remedy_for(flag, flag == ARK_TOO_MUCH_WORK ? explicit_stable_step(equations, z0) : NAN));
       },
       record_and_calibrate, result.wire_events);

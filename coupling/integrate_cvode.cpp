@@ -26,6 +26,7 @@ struct OdeData {
   int size;
   long jacobian_rhs_evaluations = 0;
   std::string model_error;  // an exception the model threw inside a callback (never crosses C code)
+  FailureKind model_error_kind = FailureKind::model_error;
 };
 
 int ode_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
@@ -39,6 +40,7 @@ int ode_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
     data->equations->minimal_accelerations(t, state.head(n), state.tail(n), rate.tail(n));
   } catch (const std::exception& error) {
     data->model_error = error.what();
+    data->model_error_kind = model_failure_kind(error);
     return -1;
   }
   return rate.allFinite() ? 0 : 1;
@@ -66,15 +68,16 @@ int ode_jacobian(sunrealtype t, N_Vector y, N_Vector f_y, SUNMatrix jacobian, vo
     }
   } catch (const std::exception& error) {
     data->model_error = error.what();
+    data->model_error_kind = model_failure_kind(error);
     return -1;
   }
   data->jacobian_rhs_evaluations += 2 * n;
   return 0;
 }
 
-int wire_root(sunrealtype, N_Vector y, sunrealtype* g, void* user) {
+int wire_root(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
   auto* data = static_cast<OdeData*>(user);
-  g[0] = data->equations->wire_stretch_minimal(sundials::Vector::view(y).head(data->size));
+  g[0] = data->equations->wire_stretch_minimal(t, sundials::Vector::view(y).head(data->size));
   return 0;
 }
 
@@ -103,26 +106,28 @@ RunResult integrate_minimal(CraneEquations& equations, const Eigen::VectorXd& z0
   tolerance.map().head(n) = settings.absolute_tolerance * scale;
   tolerance.map().tail(n) = settings.absolute_tolerance * scale;
 
-  OdeData data{&equations, n, 0, {}};
+  OdeData data{&equations, n, 0, {}, FailureKind::model_error};
   std::unique_ptr<void, void (*)(void*)> memory(CVodeCreate(CV_BDF, context.ctx), [](void* p) { CVodeFree(&p); });
   void* cvode = memory.get();
   sundials::DenseSolver linear(y.v, context.ctx);
   if (CVodeInit(cvode, ode_rhs, 0.0, y.v) != CV_SUCCESS || CVodeSVtolerances(cvode, settings.relative_tolerance, tolerance.v) != CV_SUCCESS ||
       CVodeSetUserData(cvode, &data) != CV_SUCCESS || CVodeSetLinearSolver(cvode, linear.solver, linear.matrix) != CV_SUCCESS ||
       CVodeSetJacFn(cvode, ode_jacobian) != CV_SUCCESS ||
-      CVodeSetMaxNumSteps(cvode, settings.max_steps) != CV_SUCCESS || CVodeRootInit(cvode, 1, wire_root) != CV_SUCCESS) {
-    throw SolverFailure("CVODE", "set-up failed", 0.0, "report this as a bug");
+      CVodeSetMaxNumSteps(cvode, settings.max_steps) != CV_SUCCESS || CVodeSetMaxOrd(cvode, settings.max_order) != CV_SUCCESS || CVodeRootInit(cvode, 1, wire_root) != CV_SUCCESS) {
+    throw SolverFailure(FailureKind::setup, "CVODE", "set-up failed", 0.0, "report this as a bug");
   }
   CVodeSetNoInactiveRootWarn(cvode);
 
   RunResult result;
+  DivergenceWatch watch(settings.monitor, "CVODE");
   const auto record = [&](double t) {
     const auto state = y.map();
     result.time.push_back(t);
     result.samples.push_back(equations.minimal_outputs(t, state.head(n), state.tail(n)));
+    watch.observe(t, result.samples.back());
   };
-  sundials::sample_outputs(
-      settings, "cvode", CV_ROOT_RETURN, [&](double t_out, double& t) { return CVode(cvode, t_out, y.v, &t, CV_NORMAL); },
+  sundials::sample_outputs_keeping_partial(
+      result, settings, "cvode", CV_ROOT_RETURN, [&](double t_out, double& t) { return CVode(cvode, t_out, y.v, &t, CV_NORMAL); },
       [&] {
         int direction = 0;
         CVodeGetRootInfo(cvode, &direction);
@@ -130,9 +135,11 @@ RunResult integrate_minimal(CraneEquations& equations, const Eigen::VectorXd& z0
       },
       [&](int flag, double t) {
         if (!data.model_error.empty()) {
-          throw SolverFailure("CVODE", "the model failed: " + data.model_error, t, "check the scene's values; tighten --rtol/--atol");
+          throw SolverFailure(data.model_error_kind, "CVODE", "the model failed: " + data.model_error, t,
+                              "check the scene's values; tighten --rtol/--atol");
         }
-        throw SolverFailure("CVODE", sundials::flag_name(CVodeGetReturnFlagName(flag)), t, remedy_for(flag));
+        throw SolverFailure(sundials::failure_kind(flag, CV_TOO_MUCH_WORK, CV_ERR_FAILURE, CV_CONV_FAILURE), "CVODE",
+                            sundials::flag_name(CVodeGetReturnFlagName(flag)), t, remedy_for(flag));
       },
       record,
       result.wire_events);

@@ -50,10 +50,10 @@ class GeneralizedAlpha {
 
   // Consistent start at rest: q̈0, λ0 from [M C_qᵀ; C_q 0][q̈; λ] = [Q; −(C_q v)_q v], a_0 = q̈0.
   void start(const Eigen::VectorXd& z0) {
-    eq_.full_from_minimal(z0, Eigen::VectorXd::Zero(z0.size()), q_, v_);
+    eq_.full_from_minimal(0.0, z0, Eigen::VectorXd::Zero(z0.size()), q_, v_);
     const Eigen::VectorXd minimal_scale = eq_.coordinate_scale();
     Eigen::VectorXd ignore(n_);
-    eq_.full_from_minimal(minimal_scale, minimal_scale, scale_, ignore);
+    eq_.full_from_minimal(0.0, minimal_scale, minimal_scale, scale_, ignore);
     scale_ = scale_.cwiseAbs().cwiseMax(Eigen::VectorXd::Constant(n_, 1e-2));
     Eigen::MatrixXd augmented = Eigen::MatrixXd::Zero(n_ + constraints, n_ + constraints);
     augmented.topLeftCorner(n_, n_) = eq_.full_mass_matrix(q_);
@@ -64,7 +64,7 @@ class GeneralizedAlpha {
     eq_.full_forces(0.0, q_, v_, forces_);
     rhs.head(n_) = forces_;
     Eigen::Vector3d gamma;
-    eq_.constraint_rate_terms(q_, v_, gamma);
+    eq_.constraint_rate_terms(0.0, q_, v_, gamma);
     rhs.tail(constraints) = gamma;
     const Eigen::VectorXd solution = augmented.partialPivLu().solve(rhs);
     acc_ = solution.head(n_);
@@ -144,7 +144,7 @@ class GeneralizedAlpha {
     out.head(n_) = mass_times_ - forces_;
     out.head(n_).noalias() += jacobian_.transpose() * lambda;
     Eigen::Vector3d c;
-    eq_.constraint(q1_, c);
+    eq_.constraint(t1, q1_, c);
     out.tail<constraints>() = c / (beta_ * h_ * h_);
     ++stats_.function_evaluations;
   }
@@ -179,7 +179,7 @@ class GeneralizedAlpha {
   }
 
   [[noreturn]] void fail(double t, const std::string& cause) {
-    throw SolverFailure(solver_name, cause, t,
+    throw SolverFailure(FailureKind::newton_divergence, solver_name, cause, t,
                         "reduce --step (now " + std::to_string(h_) + " s), or use an adaptive integrator (cvode, ida)");
   }
 
@@ -205,11 +205,11 @@ RunResult integrate_generalized_alpha(CraneEquations& equations, const Eigen::Ve
                                       const IntegratorSettings& settings) {
   const auto start = std::chrono::steady_clock::now();
   if (!(settings.fixed_step > 0.0) || !std::isfinite(settings.fixed_step)) {
-    throw SolverFailure(solver_name, "no step size given (fixed_step = " + std::to_string(settings.fixed_step) + ")",
+    throw SolverFailure(FailureKind::setup, solver_name, "no step size given (fixed_step = " + std::to_string(settings.fixed_step) + ")",
                         0.0, "give a fixed step > 0, e.g. --step 0.01");
   }
   if (!(settings.spectral_radius >= 0.0 && settings.spectral_radius <= 1.0)) {
-    throw SolverFailure(solver_name, "spectral radius ρ∞ = " + std::to_string(settings.spectral_radius) + " outside [0, 1]",
+    throw SolverFailure(FailureKind::setup, solver_name, "spectral radius ρ∞ = " + std::to_string(settings.spectral_radius) + " outside [0, 1]",
                         0.0, "choose ρ∞ in [0, 1] (0.8 is common; 1 = no numerical dissipation)");
   }
   // Steps land on every output time: h = Δt_out / ⌈Δt_out / fixed_step⌉.
@@ -220,26 +220,38 @@ RunResult integrate_generalized_alpha(CraneEquations& equations, const Eigen::Ve
   result.stats.step = h;
   GeneralizedAlpha solver(equations, settings, h, result);
   solver.start(z0);
+  DivergenceWatch watch(settings.monitor, solver_name);
   sundials::Progress progress(settings.progress, settings.duration, "generalized-alpha");
   result.time.push_back(0.0);
   result.samples.push_back(solver.outputs(0.0));
   const long outputs = std::lround(settings.duration / settings.output_interval);
-  for (long k = 1; k <= outputs; ++k) {
-    const double t0 = static_cast<double>(k - 1) * settings.output_interval;
-    try {
-      for (long i = 0; i < per_output; ++i) solver.step(t0 + static_cast<double>(i) * h, result.wire_events);
-    } catch (const SolverFailure&) {
-      progress.finish();
-      throw;
+  double t = 0.0;
+  try {
+    for (long k = 1; k <= outputs; ++k) {
+      const double t0 = static_cast<double>(k - 1) * settings.output_interval;
+      for (long i = 0; i < per_output; ++i) {
+        t = t0 + static_cast<double>(i) * h;
+        solver.step(t, result.wire_events);
+      }
+      const double t_out = static_cast<double>(k) * settings.output_interval;
+      if (!solver.finite()) {
+        throw SolverFailure(FailureKind::divergence, solver_name, "the solution is not finite", t_out, "reduce --step");
+      }
+      result.time.push_back(t_out);
+      result.samples.push_back(solver.outputs(t_out));
+      watch.observe(t_out, result.samples.back());
+      progress.update(t_out);
     }
-    const double t_out = static_cast<double>(k) * settings.output_interval;
-    if (!solver.finite()) {
-      progress.finish();
-      throw SolverFailure(solver_name, "the solution is not finite", t_out, "reduce --step");
-    }
-    result.time.push_back(t_out);
-    result.samples.push_back(solver.outputs(t_out));
-    progress.update(t_out);
+  } catch (SolverFailure& failure) {
+    progress.finish();
+    failure.attach_partial(std::make_shared<const RunResult>(std::move(result)));
+    throw;
+  } catch (const std::exception& error) {  // the model refused a state
+    progress.finish();
+    SolverFailure failure(model_failure_kind(error), solver_name, std::string("the model failed: ") + error.what(), t,
+                          "reduce --step; check the scene's values");
+    failure.attach_partial(std::make_shared<const RunResult>(std::move(result)));
+    throw failure;
   }
   progress.finish();
   result.stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -1,7 +1,7 @@
 // IDA (variable-order BDF for DAEs, dense difference-quotient Jacobian) on the crane in full
 // coordinates with the clamp at B as constraints, in the stabilized index-2 form of Gear, Gupta &
 // Leimkuhler (1985):
-//   q̇ − v + C_qᵀμ = 0,   M(q) v̇ − Q(q, v, t) + C_qᵀλ = 0,   C(q) = 0,   C_q v = 0,
+//   q̇ − v + C_qᵀμ = 0,   M(q) v̇ − Q(q, v, t) + C_qᵀλ = 0,   C(q, t) = 0,   C_q v + C_t = 0,
 // with λ, μ algebraic and excluded from the error test (IDASetSuppressAlg). μ vanishes on the
 // exact solution and keeps the position constraint from drifting. Consistent initial values come
 // from the augmented system [M C_qᵀ; C_q 0][v̇; λ] = [Q; −(C_q v)_q v].
@@ -24,8 +24,9 @@ struct DaeData {
   CraneEquations* equations;
   int size;                  // nq
   Eigen::MatrixXd jacobian;  // C_q workspace (3 × nq)
-  Eigen::VectorXd forces, mass_times, c;
+  Eigen::VectorXd forces, mass_times, c, c_t;
   std::string model_error;  // an exception the model threw inside a callback
+  FailureKind model_error_kind = FailureKind::model_error;
 };
 
 int dae_residual(sunrealtype t, N_Vector y, N_Vector y_dot, N_Vector r, void* user) {
@@ -42,12 +43,14 @@ int dae_residual(sunrealtype t, N_Vector y, N_Vector y_dot, N_Vector r, void* us
     d->equations->full_mass_times(q, s_dot.segment(n, n), d->mass_times);
     d->equations->full_forces(t, q, v, d->forces);
     res.segment(n, n) = d->mass_times - d->forces + d->jacobian.transpose() * lambda;
-    d->equations->constraint(q, d->c);
+    d->equations->constraint(t, q, d->c);
     res.segment(2 * n, constraints) = d->c;
-    res.tail(constraints) = d->jacobian * v;
+    d->equations->constraint_time_derivative(t, d->c_t);
+    res.tail(constraints) = d->jacobian * v + d->c_t;
     return res.allFinite() ? 0 : 1;
   } catch (const std::exception& error) {
     d->model_error = error.what();
+    d->model_error_kind = model_failure_kind(error);
     return -1;
   }
 }
@@ -76,14 +79,14 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
   const int total = 2 * n + 2 * constraints;
   sundials::Context context;
   sundials::Vector y(total, context.ctx), y_dot(total, context.ctx), tolerance(total, context.ctx), id(total, context.ctx);
-  DaeData data{&equations, n, Eigen::MatrixXd(constraints, n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(constraints), {}};
+  DaeData data{&equations, n, Eigen::MatrixXd(constraints, n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(constraints), Eigen::VectorXd(constraints), {}, FailureKind::model_error};
 
   // Consistent initial values at rest.
   auto s = y.map();
   auto s_dot = y_dot.map();
   s.setZero();
   s_dot.setZero();
-  equations.full_from_minimal(z0, Eigen::VectorXd::Zero(z0.size()), s.head(n), s.segment(n, n));
+  equations.full_from_minimal(0.0, z0, Eigen::VectorXd::Zero(z0.size()), s.head(n), s.segment(n, n));
   {
     const auto q = s.head(n), v = s.segment(n, n);
     Eigen::MatrixXd augmented = Eigen::MatrixXd::Zero(n + constraints, n + constraints);
@@ -95,7 +98,7 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
     equations.full_forces(0.0, q, v, data.forces);
     rhs.head(n) = data.forces;
     Eigen::VectorXd gamma(constraints);
-    equations.constraint_rate_terms(q, v, gamma);
+    equations.constraint_rate_terms(0.0, q, v, gamma);
     rhs.tail(constraints) = gamma;
     const Eigen::VectorXd solution = augmented.partialPivLu().solve(rhs);
     s_dot.segment(n, n) = solution.head(n);
@@ -106,7 +109,7 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
   // Tolerances and the differential/algebraic split.
   const Eigen::VectorXd minimal_scale = equations.coordinate_scale();
   Eigen::VectorXd full_scale(n), ignore(n);
-  equations.full_from_minimal(minimal_scale, minimal_scale, full_scale, ignore);
+  equations.full_from_minimal(0.0, minimal_scale, minimal_scale, full_scale, ignore);
   full_scale = full_scale.cwiseAbs().cwiseMax(Eigen::VectorXd::Constant(n, 1e-2));
   auto tol = tolerance.map();
   tol.head(n) = settings.absolute_tolerance * full_scale;
@@ -122,18 +125,21 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
   if (IDAInit(ida, dae_residual, 0.0, y.v, y_dot.v) != IDA_SUCCESS || IDASVtolerances(ida, settings.relative_tolerance, tolerance.v) != IDA_SUCCESS ||
       IDASetUserData(ida, &data) != IDA_SUCCESS || IDASetLinearSolver(ida, linear.solver, linear.matrix) != IDA_SUCCESS ||
       IDASetId(ida, id.v) != IDA_SUCCESS || IDASetSuppressAlg(ida, SUNTRUE) != IDA_SUCCESS ||
-      IDASetMaxNumSteps(ida, settings.max_steps) != IDA_SUCCESS || IDARootInit(ida, 1, wire_root) != IDA_SUCCESS) {
-    throw SolverFailure("IDA", "set-up failed", 0.0, "report this as a bug");
+      IDASetMaxNumSteps(ida, settings.max_steps) != IDA_SUCCESS || IDASetMaxOrd(ida, settings.max_order) != IDA_SUCCESS || IDARootInit(ida, 1, wire_root) != IDA_SUCCESS) {
+    throw SolverFailure(FailureKind::setup, "IDA", "set-up failed", 0.0, "report this as a bug");
   }
   IDASetNoInactiveRootWarn(ida);
 
   RunResult result;
+  DivergenceWatch watch(settings.monitor, "IDA");
   const auto record = [&](double t) {
     const auto state = y.map();
     result.time.push_back(t);
     result.samples.push_back(equations.full_outputs(t, state.head(n), state.segment(n, n), state.segment(2 * n, constraints)));
-  };  sundials::sample_outputs(
-      settings, "ida", IDA_ROOT_RETURN,
+    watch.observe(t, result.samples.back());
+  };
+  sundials::sample_outputs_keeping_partial(
+      result, settings, "ida", IDA_ROOT_RETURN,
       [&](double t_out, double& t) { return IDASolve(ida, t_out, &t, y.v, y_dot.v, IDA_NORMAL); },
       [&] {
         int direction = 0;
@@ -142,9 +148,11 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
       },
       [&](int flag, double t) {
         if (!data.model_error.empty()) {
-          throw SolverFailure("IDA", "the model failed: " + data.model_error, t, "check the scene's values; tighten --rtol/--atol");
+          throw SolverFailure(data.model_error_kind, "IDA", "the model failed: " + data.model_error, t,
+                              "check the scene's values; tighten --rtol/--atol");
         }
-        throw SolverFailure("IDA", sundials::flag_name(IDAGetReturnFlagName(flag)), t, remedy_for(flag));
+        throw SolverFailure(sundials::failure_kind(flag, IDA_TOO_MUCH_WORK, IDA_ERR_FAIL, IDA_CONV_FAIL), "IDA",
+                            sundials::flag_name(IDAGetReturnFlagName(flag)), t, remedy_for(flag));
       },
       record,
       result.wire_events);

@@ -26,11 +26,9 @@ std::optional<Integrator> parse_integrator(std::string_view text) {
 
 std::string integrator_choices() { return "ida|cvode|arkode|generalized-alpha"; }
 
-SolverFailure::SolverFailure(std::string solver, std::string cause, double time, std::string remedy)
-    : std::runtime_error(solver + " failed at t = " + std::to_string(time) + " s: " + cause + ". Try: " + remedy),
-      solver_(std::move(solver)), cause_(std::move(cause)), remedy_(std::move(remedy)), time_(time) {}
+namespace {
 
-RunResult integrate(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings) {
+RunResult dispatch(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings) {
   switch (settings.kind) {
     case Integrator::ida: return integrate_lagrange(equations, z0, settings);
     case Integrator::cvode: return integrate_minimal(equations, z0, settings);
@@ -38,6 +36,14 @@ RunResult integrate(CraneEquations& equations, const Eigen::VectorXd& z0, const 
     case Integrator::generalized_alpha: return integrate_generalized_alpha(equations, z0, settings);
   }
   throw std::invalid_argument("unknown integrator");
+}
+
+}  // namespace
+
+RunResult integrate(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings) {
+  RunResult result = dispatch(equations, z0, settings);
+  result.detections = post_run_detections(result, settings.monitor);
+  return result;
 }
 
 namespace sundials {

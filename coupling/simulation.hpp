@@ -3,12 +3,13 @@
 #pragma once
 
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "coupling/crane_equations.hpp"
+#include "coupling/failure.hpp"
+#include "coupling/run_monitor.hpp"
 
 namespace ffrf::coupling {
 
@@ -31,7 +32,12 @@ struct IntegratorSettings {
   // for arkode 0 = adaptive with the tolerances, > 0 = this fixed step (outputs interpolated).
   double fixed_step = 0.0;
   double spectral_radius = 0.8;      // ρ∞ ∈ [0, 1] of generalized-α (1: no numerical dissipation)
+  // Largest BDF order of CVODE and IDA (1–5). Orders 3–5 are not A-stable: their stability regions
+  // leave out part of the imaginary axis, so undamped stiff modes (a boom without structural damping)
+  // force steps that resolve the highest frequency; order ≤ 2 is A-stable (docs/stability.md).
+  int max_order = 5;
   bool progress = false;             // print progress on stderr (callers set it for terminals only)
+  MonitorLimits monitor;             // the failure detectors' bounds (coupling/run_monitor.hpp)
 };
 
 struct SolverStats {
@@ -55,20 +61,7 @@ struct RunResult {
   std::vector<CraneOutputs> samples;
   SolverStats stats;
   std::vector<WireEvent> wire_events;
-};
-
-// A solver that could not finish: which solver, what failed, when, and what to try.
-class SolverFailure : public std::runtime_error {
- public:
-  SolverFailure(std::string solver, std::string cause, double time, std::string remedy);
-  const std::string& solver() const { return solver_; }
-  const std::string& cause() const { return cause_; }
-  double time() const { return time_; }
-  const std::string& remedy() const { return remedy_; }
-
- private:
-  std::string solver_, cause_, remedy_;
-  double time_;
+  std::vector<Detection> detections;  // what the run ran into (non-fatal), filled by integrate()
 };
 
 // CVODE (BDF, Newton, dense Jacobian) on the minimal-coordinate ODE from z0 (ż0 = 0).
@@ -87,7 +80,8 @@ double explicit_imaginary_axis_boundary();
 // at rest, fixed step settings.fixed_step; Newton on (q̈, λ) with a modified-Newton iteration matrix.
 RunResult integrate_generalized_alpha(CraneEquations& equations, const Eigen::VectorXd& z0,
                                       const IntegratorSettings& settings);
-// Dispatch on settings.kind.
+// Dispatch on settings.kind, then the post-run detectors (coupling/run_monitor.hpp) fill
+// RunResult::detections. A fatal detection is a SolverFailure with the partial result attached.
 RunResult integrate(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings);
 
 }  // namespace ffrf::coupling

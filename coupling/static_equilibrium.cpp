@@ -27,6 +27,7 @@ void quiet_errors(int, const char*, const char*, char*, void*) {}
 struct StaticData {
   CraneEquations* equations;
   std::string model_error;
+  FailureKind model_error_kind = FailureKind::model_error;
 };
 
 int static_forces(N_Vector u, N_Vector f, void* user) {
@@ -37,6 +38,7 @@ int static_forces(N_Vector u, N_Vector f, void* user) {
     data->equations->static_residual(sundials::Vector::view(u), residual);
   } catch (const std::exception& error) {
     data->model_error = error.what();
+    data->model_error_kind = model_failure_kind(error);
     return -1;
   }
   return residual.allFinite() ? 0 : 1;
@@ -61,7 +63,7 @@ StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eige
       KINSetLinearSolver(kinsol, linear.solver, linear.matrix) != KIN_SUCCESS ||
       KINSetFuncNormTol(kinsol, tolerance) != KIN_SUCCESS || KINSetScaledStepTol(kinsol, 1e-14) != KIN_SUCCESS ||
       KINSetMaxSetupCalls(kinsol, 1) != KIN_SUCCESS || KINSetNumMaxIters(kinsol, 200) != KIN_SUCCESS) {
-    throw SolverFailure("KINSOL", "set-up failed", 0.0, "report this as a bug");
+    throw SolverFailure(FailureKind::setup, "KINSOL", "set-up failed", 0.0, "report this as a bug");
   }
   const int flag = KINSol(kinsol, u.v, KIN_LINESEARCH, u_scale.v, f_scale.v);
   StaticEquilibrium result;
@@ -76,7 +78,8 @@ StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eige
   // Near the solution the line search can stall at round-off (KIN_LINESEARCH_NONCONV) although the
   // residual is converged: the residual, not the flag, decides.
   if (!(result.scaled_residual < 1e2 * tolerance)) {
-    throw SolverFailure("KINSOL (static equilibrium)",
+    throw SolverFailure(!data.model_error.empty() ? data.model_error_kind : FailureKind::newton_divergence,
+                        "KINSOL (static equilibrium)",
                         (!data.model_error.empty() ? "the model failed: " + data.model_error
                                                        : flag < 0 ? sundials::flag_name(KINGetReturnFlagName(flag)) : std::string("no convergence")) +
                             " after " + std::to_string(result.newton_iterations) + " Newton iterations, scaled residual " +
@@ -86,9 +89,9 @@ StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eige
                         "(cargo hanging) and that the boom is not near buckling");
   }
   result.z = u.map();
-  if (equations.wire_stretch_minimal(result.z) <= 0.0) {
-    throw SolverFailure("KINSOL (static equilibrium)", "the wire is slack at rest (stretch " +
-                        format_residual(equations.wire_stretch_minimal(result.z)) + " m)", 0.0,
+  if (equations.wire_stretch_minimal(0.0, result.z) <= 0.0) {
+    throw SolverFailure(FailureKind::wire_slack, "KINSOL (static equilibrium)", "the wire is slack at rest (stretch " +
+                        format_residual(equations.wire_stretch_minimal(0.0, result.z)) + " m)", 0.0,
                         "hang the cargo below the boom tip: check the wire's unstretched length and the hook position");
   }
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(n);

@@ -13,8 +13,9 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <cstdlib>
-#include <string>
 #include <memory>
+#include <string>
+#include <utility>
 #include <stdexcept>
 #include <vector>
 
@@ -115,6 +116,25 @@ void sample_outputs(const IntegratorSettings& settings, const char* label, int r
     throw;
   }
   progress.finish();
+}
+
+// The failure kind of a negative SUNDIALS flag, given the solver's own flag values.
+inline FailureKind failure_kind(int flag, int too_much_work, int error_test_failure, int convergence_failure) {
+  if (flag == too_much_work) return FailureKind::too_much_work;
+  if (flag == error_test_failure) return FailureKind::step_size_collapse;
+  if (flag == convergence_failure) return FailureKind::newton_divergence;
+  return FailureKind::model_error;
+}
+
+// sample_outputs, and on a SolverFailure the samples so far attached to it as its partial result.
+template <class... Args>
+void sample_outputs_keeping_partial(RunResult& result, const IntegratorSettings& settings, Args&&... args) {
+  try {
+    sample_outputs(settings, std::forward<Args>(args)...);
+  } catch (SolverFailure& failure) {
+    failure.attach_partial(std::make_shared<const RunResult>(result));
+    throw;
+  }
 }
 
 }  // namespace ffrf::coupling::sundials

@@ -1,18 +1,21 @@
 // The elastic-coordinate interface of DESIGN.md §2. A flexible body places a material point at
 // r = R + A(θ)(ū0 + S(x) Φ η); an ElasticCoordinates type supplies everything the floating-frame
 // body needs about η: its size, the inertia invariants projected on Φ, the stiffness ΦᵀKΦ, the
-// geometric stiffness ΦᵀK_gΦ per unit axial force, the shape rows of a point, and the map back
-// to nodal DOFs. nodal/ (Φ = I, sparse) and modal/ (dense, small) implement it; the body is
-// written once as a template over this concept.
+// geometric stiffness ΦᵀK_gΦ per unit axial force, the shape rows of a point, the map back
+// to nodal DOFs, and the projection Φᵀ A Φ of any free-DOF matrix (e.g. a geometric stiffness).
+// nodal/ (Φ = I, sparse) and modal/ (dense, small) implement it; the body is written once as a
+// template over this concept.
 #pragma once
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 #include <concepts>
 
 namespace ffrf::fem {
 
 template <class C>
-concept ElasticCoordinates = requires(const C& coords, double x, const Eigen::VectorXd& eta) {
+concept ElasticCoordinates = requires(const C& coords, double x, const Eigen::VectorXd& eta,
+                                      const Eigen::SparseMatrix<double>& nodal_matrix) {
   { coords.size() } -> std::convertible_to<Eigen::Index>;
   { coords.mass() } -> std::convertible_to<double>;
   { coords.first_moment() } -> std::convertible_to<Eigen::Vector2d>;
@@ -27,6 +30,7 @@ concept ElasticCoordinates = requires(const C& coords, double x, const Eigen::Ve
   coords.displacement_rows(x);        // 2×n  S(x) Φ
   coords.rotation_row(x);             // 1×n  R(x) Φ
   { coords.to_nodal(eta) } -> std::convertible_to<Eigen::VectorXd>;  // q_n = Φ η
+  { coords.project(nodal_matrix) } -> std::convertible_to<typename C::Matrix>;  // Φᵀ A Φ of a free-DOF matrix
 };
 
 }  // namespace ffrf::fem

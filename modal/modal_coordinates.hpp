@@ -34,6 +34,9 @@ class ModalCoordinates {
   Rows displacement_rows(double x) const;
   Rows rotation_row(double x) const;
   Eigen::VectorXd to_nodal(const Eigen::VectorXd& eta) const { return basis_.vectors * eta; }
+  Matrix project(const Eigen::SparseMatrix<double>& nodal_matrix) const {
+    return basis_.vectors.transpose() * (nodal_matrix * basis_.vectors);
+  }
 
   const ModalBasis& basis() const { return basis_; }
   const fem::BeamModel& beam() const { return *beam_; }

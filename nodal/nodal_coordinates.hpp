@@ -33,6 +33,7 @@ class NodalCoordinates {
   Rows displacement_rows(double x) const;
   Rows rotation_row(double x) const;
   Eigen::VectorXd to_nodal(const Eigen::VectorXd& eta) const { return eta; }
+  Matrix project(const Eigen::SparseMatrix<double>& nodal_matrix) const { return nodal_matrix; }
 
   const fem::BeamModel& beam() const { return *beam_; }
 

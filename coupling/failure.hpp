@@ -1,0 +1,69 @@
+// How a run fails or what it runs into, by name: the failure kinds every run is watched for
+// (issue 5's detectors), one detection (kind, time, cause with its numbers, remedy), and the
+// exception a solver that could not finish throws — naming the kind, and carrying the samples up
+// to the failure so a report can chart how it failed (never as if they were a complete run).
+#pragma once
+
+#include <exception>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace ffrf::coupling {
+
+enum class FailureKind {
+  divergence,                  // deflection grew beyond its bound (or non-finite states)
+  step_size_collapse,          // repeated error-test failures at the smallest step
+  error_test_failures,         // many rejected steps (warning)
+  newton_divergence,           // the nonlinear (Newton) iteration did not converge
+  too_much_work,               // the step limit was reached
+  constraint_drift,            // |C| beyond its bound (full coordinates)
+  mass_not_positive_definite,  // loss of positive definiteness of the mass matrix
+  unstable_explicit,           // an explicit step beyond the stability limit
+  wire_slack,                  // the wire went slack
+  snap_load,                   // the wire snapped taut again after slack
+  buckling,                    // compression near or beyond the boom's Euler load
+  model_error,                 // the model refused a state (e.g. a hull out of the water)
+  setup,                       // invalid settings or a solver set-up failure
+};
+std::string_view to_string(FailureKind kind);  // "divergence", "step-size collapse", ...
+
+struct Detection {
+  FailureKind kind;
+  double time = 0.0;   // when [s]
+  bool fatal = false;  // the run stopped there
+  std::string cause;   // what happened, with the numbers
+  std::string remedy;  // what to try
+  double value = 0.0;  // the number behind it: growth rate [1/s], peak tension [N], drift [m], load ratio [-]
+};
+
+struct RunResult;
+
+// A solver that could not finish: which solver, which failure, what, when, and what to try.
+class SolverFailure : public std::runtime_error {
+ public:
+  SolverFailure(FailureKind kind, std::string solver, std::string cause, double time, std::string remedy,
+                double value = 0.0);
+  FailureKind kind() const { return kind_; }
+  const std::string& solver() const { return solver_; }
+  const std::string& cause() const { return cause_; }
+  double time() const { return time_; }
+  const std::string& remedy() const { return remedy_; }
+  double value() const { return value_; }
+  Detection detection() const { return {kind_, time_, true, cause_, remedy_, value_}; }
+  // The samples up to the failure (set by the integrator; may be null).
+  const std::shared_ptr<const RunResult>& partial() const { return partial_; }
+  void attach_partial(std::shared_ptr<const RunResult> partial) { partial_ = std::move(partial); }
+
+ private:
+  FailureKind kind_;
+  std::string solver_, cause_, remedy_;
+  double time_, value_;
+  std::shared_ptr<const RunResult> partial_;
+};
+
+// The failure kind of an exception the model threw inside a solver callback.
+FailureKind model_failure_kind(const std::exception& error);
+
+}  // namespace ffrf::coupling

@@ -1,0 +1,199 @@
+// Failure detectors (see run_monitor.hpp), failure names and SolverFailure.
+#include "coupling/run_monitor.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "coupling/simulation.hpp"
+
+namespace ffrf::coupling {
+namespace {
+
+std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
+  char text[512];
+  std::snprintf(text, sizeof text, pattern, a, b, c, d);
+  return text;
+}
+
+// Least-squares slope of y over x.
+double slope(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    sx += x[i];
+    sy += y[i];
+    sxx += x[i] * x[i];
+    sxy += x[i] * y[i];
+  }
+  const double denominator = n * sxx - sx * sx;
+  return denominator > 0.0 ? (n * sxy - sx * sy) / denominator : 0.0;
+}
+
+}  // namespace
+
+std::string_view to_string(FailureKind kind) {
+  switch (kind) {
+    case FailureKind::divergence: return "divergence";
+    case FailureKind::step_size_collapse: return "step-size collapse";
+    case FailureKind::error_test_failures: return "error-test failures";
+    case FailureKind::newton_divergence: return "Newton divergence";
+    case FailureKind::too_much_work: return "too much work";
+    case FailureKind::constraint_drift: return "constraint drift";
+    case FailureKind::mass_not_positive_definite: return "mass matrix not positive definite";
+    case FailureKind::unstable_explicit: return "explicit instability";
+    case FailureKind::wire_slack: return "wire slack";
+    case FailureKind::snap_load: return "snap load";
+    case FailureKind::buckling: return "buckling";
+    case FailureKind::model_error: return "model error";
+    case FailureKind::setup: return "set-up";
+  }
+  return "?";
+}
+
+SolverFailure::SolverFailure(FailureKind kind, std::string solver, std::string cause, double time, std::string remedy,
+                             double value)
+    : std::runtime_error(solver + " failed at t = " + std::to_string(time) + " s (" + std::string(to_string(kind)) +
+                         "): " + cause + ". Try: " + remedy),
+      kind_(kind), solver_(std::move(solver)), cause_(std::move(cause)), remedy_(std::move(remedy)), time_(time),
+      value_(value) {}
+
+FailureKind model_failure_kind(const std::exception& error) {
+  return dynamic_cast<const MassMatrixError*>(&error) != nullptr ? FailureKind::mass_not_positive_definite
+                                                                 : FailureKind::model_error;
+}
+
+void DivergenceWatch::observe(double t, const CraneOutputs& sample) {
+  const double deflection = sample.tip_deflection.norm();
+  if (!std::isfinite(deflection) || !sample.cargo.allFinite() || !sample.hull.allFinite()) {
+    throw SolverFailure(FailureKind::divergence, solver_, "the state is no longer finite", t,
+                        "reduce the step or tighten --rtol/--atol; check the scene's stiffness and mass values");
+  }
+  if (limits_.boom_length <= 0.0) return;
+  const double bound = limits_.deflection_limit * limits_.boom_length;
+  if (deflection < 0.01 * bound) {
+    times_.clear();
+    log_deflections_.clear();
+    return;
+  }
+  times_.push_back(t);
+  log_deflections_.push_back(std::log(deflection));
+  if (deflection <= bound) return;
+  const double rate = times_.size() >= 3 ? slope(times_, log_deflections_)
+                                         : std::log(deflection / (0.01 * bound)) / std::max(t - times_.front(), 1e-12);
+  char cause[320];
+  std::snprintf(cause, sizeof cause,
+                "the boom tip deflection %.3g m passed the bound %.3g m (%.3g of the boom length), growing at "
+                "σ = %.3g 1/s (e-folding time %.3g s)",
+                deflection, bound, limits_.deflection_limit, rate, 1.0 / std::max(rate, 1e-300));
+  throw SolverFailure(FailureKind::divergence, solver_, cause, t,
+                      "the linear floating-frame boom lost its stiffness: switch on geometric stiffening "
+                      "(--stiffening centrifugal for a spinning boom, static near buckling), or lower the spin rate or load",
+                      rate);
+}
+
+std::vector<SlackInterval> slack_intervals(const RunResult& result, const MonitorLimits& limits) {
+  std::vector<SlackInterval> intervals;
+  if (limits.wire_unstretched_length <= 0.0 || result.samples.empty()) return intervals;
+  if (result.samples.front().wire_length <= limits.wire_unstretched_length) intervals.push_back({0.0});
+  for (const WireEvent& event : result.wire_events) {
+    if (event.slack) {
+      if (intervals.empty() || std::isfinite(intervals.back().end)) intervals.push_back({event.time});
+    } else if (!intervals.empty() && !std::isfinite(intervals.back().end)) {
+      intervals.back().end = event.time;
+    }
+  }
+  return intervals;
+}
+
+std::vector<SnapLoad> snap_loads(const RunResult& result, const MonitorLimits& limits) {
+  std::vector<SnapLoad> snaps;
+  const std::vector<SlackInterval> slack = slack_intervals(result, limits);
+  for (std::size_t i = 0; i < slack.size(); ++i) {
+    if (!std::isfinite(slack[i].end)) break;
+    const double until = i + 1 < slack.size() ? slack[i + 1].start : std::numeric_limits<double>::infinity();
+    SnapLoad snap;
+    snap.time = slack[i].end;
+    for (std::size_t k = 0; k < result.time.size(); ++k) {
+      if (result.time[k] < snap.time || result.time[k] > until) continue;
+      if (result.samples[k].wire_tension > snap.peak_tension) {
+        snap.peak_tension = result.samples[k].wire_tension;
+        snap.peak_time = result.time[k];
+      }
+    }
+    snap.ratio = limits.static_tension > 0.0 ? snap.peak_tension / limits.static_tension : 0.0;
+    snaps.push_back(snap);
+  }
+  return snaps;
+}
+
+double max_constraint_drift(const RunResult& result) {
+  double drift = 0.0;
+  for (const CraneOutputs& sample : result.samples) drift = std::max(drift, std::abs(sample.constraint_residual));
+  return drift;
+}
+
+double max_buckling_load_ratio(const RunResult& result, const MonitorLimits& limits) {
+  if (!std::isfinite(limits.buckling_load)) return 0.0;
+  double compression = 0.0;
+  for (const CraneOutputs& sample : result.samples) compression = std::max(compression, -sample.root_axial_force);
+  return compression / limits.buckling_load;
+}
+
+std::vector<Detection> post_run_detections(const RunResult& result, const MonitorLimits& limits) {
+  std::vector<Detection> found;
+  const std::vector<SlackInterval> slack = slack_intervals(result, limits);
+  if (!slack.empty()) {
+    double total = 0.0;
+    for (const SlackInterval& s : slack) total += std::min(s.end, result.time.back()) - s.start;
+    found.push_back({FailureKind::wire_slack, slack.front().start, false,
+                     format("the wire went slack %.0f times, %.3g s in all (first at t = %.4g s)",
+                            static_cast<double>(slack.size()), total, slack.front().start),
+                     "the cargo lost its support: expect snap loads; reduce the wave or the crane motion, or lower the "
+                     "cargo's excursion (hoisting, a stiffer/longer wire)",
+                     total});
+  }
+  for (const SnapLoad& snap : snap_loads(result, limits)) {
+    found.push_back({FailureKind::snap_load, snap.time, false,
+                     format("the wire snapped taut at t = %.4g s: peak tension %.4g N at t = %.4g s (%.3g x the static tension)",
+                            snap.time, snap.peak_tension, snap.peak_time, snap.ratio),
+                     "check the wire and boom against the peak; the sampled peak is resolved to the output interval",
+                     snap.peak_tension});
+  }
+  const double drift = max_constraint_drift(result);
+  if (drift > limits.constraint_drift_limit) {
+    double when = 0.0;
+    for (std::size_t k = 0; k < result.samples.size(); ++k) {
+      if (std::abs(result.samples[k].constraint_residual) > limits.constraint_drift_limit) {
+        when = result.time[k];
+        break;
+      }
+    }
+    found.push_back({FailureKind::constraint_drift, when, false,
+                     format("the clamp residual |C| reached %.3g m (bound %.3g m)", drift, limits.constraint_drift_limit),
+                     "stabilize the constraints: --integrator ida (index-2), baumgarte or projection, or cvode (minimal "
+                     "coordinates: no drift)",
+                     drift});
+  }
+  const double ratio = max_buckling_load_ratio(result, limits);
+  if (ratio >= limits.buckling_warning_ratio) {
+    found.push_back({FailureKind::buckling, 0.0, false,
+                     format("the boom's root compression reached %.3g of its Euler buckling load %.4g N", ratio,
+                            limits.buckling_load),
+                     ratio >= 1.0 ? "the boom buckles: the linear model is invalid; reduce the load"
+                                  : "switch on geometric stiffening (--stiffening static) so the bending stiffness "
+                                    "loss under compression is modelled",
+                     ratio});
+  }
+  const SolverStats& stats = result.stats;
+  if (stats.steps > 10 && static_cast<double>(stats.error_test_failures) > limits.error_test_failure_ratio * static_cast<double>(stats.steps)) {
+    found.push_back({FailureKind::error_test_failures, result.time.empty() ? 0.0 : result.time.back(), false,
+                     format("%.0f error-test failures in %.0f steps", static_cast<double>(stats.error_test_failures),
+                            static_cast<double>(stats.steps)),
+                     "a discontinuity (wire snap) or a stiff transient: tighten --atol or resolve the event", 0.0});
+  }
+  return found;
+}
+
+}  // namespace ffrf::coupling
