@@ -123,7 +123,7 @@ SpinModesResult solve_spin_modes(const fem::BeamModel& model, double spin_rate, 
   }
   if (out.buckling_load && axial_force <= -*out.buckling_load) {
     out.warnings.push_back(fmt::format("buckled: the compression |P| = {:.6g} N reaches the buckling load P_cr = {:.6g} N "
-                                       "(load ratio {:.4g}); the lowest mode diverges", -axial_force, *out.buckling_load,
+                                       "(|P|/P_cr = {:.4g}); the lowest mode diverges", -axial_force, *out.buckling_load,
                                        -axial_force / *out.buckling_load));
   }
   out.solve_seconds = seconds_since(start);

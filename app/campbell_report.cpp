@@ -53,14 +53,15 @@ std::string load_lines(const fem::BeamMesh& mesh, fem::Boundary boundary, double
   out += fmt::format("spin       Omega = {:g} rad/s ({:.6g} Hz), hub radius r = {:g} m, Omega sqrt(rhoA L^4/EI) = {:.6g}\n",
                      spin, hertz(spin), hub_radius, spin / scale);
   if (axial_force != 0.0 || critical) {
-    out += fmt::format("axial      P = {:g} N ({}), buckling load P_cr = {:.6g} N, load ratio P/P_cr = {}{}\n", axial_force,
+    out += fmt::format("axial      P = {:g} N ({}), buckling load P_cr = {:.6g} N, load ratio P/P_cr = {} (negative: compression){}\n", axial_force,
                        axial_force < 0.0 ? "compression" : axial_force > 0.0 ? "tension" : "none",
                        critical.value_or(0.0), critical ? fmt::format("{:.6g}", axial_force / *critical) : "-",
                        critical && axial_force <= -*critical ? "  BUCKLED" : "");
   }
-  out += boundary == fem::Boundary::clamped_free
-             ? "reference  power series of the rotating clamped-free Euler-Bernoulli beam (Frobenius, long double)\n"
-             : "reference  none (the power series covers clamped-free only)\n";
+  const bool buckled = critical && axial_force <= -*critical;
+  out += boundary != fem::Boundary::clamped_free ? "reference  none (the power series covers clamped-free only)\n"
+         : buckled ? "reference  none: the beam is buckled (the power series needs P > -P_cr)\n"
+                   : "reference  power series of the rotating clamped-free Euler-Bernoulli beam (Frobenius, long double)\n";
   out += "model      in-plane, rotating frame: K + Omega^2 K_c + P K_g - Omega^2 M; Coriolis coupling neglected\n";
   return out;
 }
