@@ -1,19 +1,25 @@
 // `ffrf modes SCENE`: natural frequencies and mode shapes of the scene's boom, next to the
 // analytic Euler–Bernoulli values. Text table, --json on stdout, --out DIR with CSV, JSON and
-// gnuplot charts (written completely or not at all).
+// gnuplot charts (written completely or not at all). With --spin Ω and/or --axial-force P: the modes
+// of the spinning / prestressed beam next to the power series; with --spin-range a:b:n: the
+// Campbell diagram (app/campbell_analysis.hpp).
 #include <fmt/format.h>
 #include <unistd.h>
 
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
+#include "app/campbell_analysis.hpp"
+#include "app/campbell_report.hpp"
 #include "app/commands.hpp"
 #include "app/gnuplot.hpp"
 #include "app/modes_analysis.hpp"
 #include "app/modes_report.hpp"
 #include "app/output_directory.hpp"
 #include "cases/scene_loader.hpp"
+#include "fem/beam_model.hpp"
 
 namespace ffrf::app {
 namespace {
@@ -26,9 +32,13 @@ struct ModesOptions {
   std::string solver = "arpack";
   bool json = false;
   std::string out;
+  std::optional<std::string> spin;         // Ω [rad/s]
+  std::optional<std::string> spin_range;   // "a:b:n"
+  std::optional<std::string> axial_force;  // P [N]
 };
 
 constexpr int default_elastic_modes = 6;
+constexpr int default_campbell_modes = 3;  // bending modes tracked over the spin range
 
 void progress(const std::string& message) {
   if (::isatty(STDERR_FILENO) != 0) fmt::print(stderr, "\r\033[K{}", message);
@@ -60,6 +70,66 @@ void write_outputs(StagedDirectory& out, const ModesResult& result, const ModesC
   out.commit();
 }
 
+// --spin / --axial-force / --spin-range, after the common options were checked.
+int run_spinning(const ModesOptions& options, const cases::Scene& scene, const fem::BeamMesh& mesh,
+                 fem::Boundary boundary, modal::EigenSolverKind solver) {
+  double spin = 0.0, axial_force = 0.0;
+  std::optional<SpinRange> range;
+  try {
+    if (options.spin && options.spin_range) {
+      throw std::invalid_argument(fmt::format("--spin {} and --spin-range {} exclude each other: give one spin rate or one "
+                                              "range", *options.spin, *options.spin_range));
+    }
+    if (options.spin) spin = parse_finite("--spin", *options.spin, 0.0);
+    if (options.spin_range) range = parse_spin_range(*options.spin_range);
+    if (options.axial_force) axial_force = parse_finite("--axial-force", *options.axial_force, std::nullopt);
+  } catch (const std::invalid_argument& error) {
+    return bad_input(error.what());
+  }
+  if (boundary == fem::Boundary::free_free) {
+    return bad_input(fmt::format("--boundary free-free: --spin, --spin-range and --axial-force need a held root "
+                                 "(choose clamped-free or pinned-pinned)"));
+  }
+  const int dof = free_dof_count(mesh, boundary);
+  const int count = options.modes.value_or(std::min(dof - 1, range ? default_campbell_modes : default_elastic_modes));
+  if (count < 1 || count >= dof) {
+    return bad_input(fmt::format("--modes {} is not a valid mode count for N = {} (valid range [1, {}])", count,
+                                 mesh.element_count, dof - 1));
+  }
+  const double hub_radius = spin_hub_radius(scene);
+  const ModesContext context{options.scene, scene.name};
+  std::optional<StagedDirectory> out;
+  if (!options.out.empty()) out.emplace(options.out, "summary.json");
+  const fem::BeamModel model = fem::make_beam_model(mesh, boundary);
+  std::string text, json;
+  if (range) {
+    const CampbellResult result = campbell_diagram(model, *range, hub_radius, axial_force, count, solver, [&](int i) {
+      progress(fmt::format("Campbell diagram: spin {} of {} ...", i + 1, range->count));
+    });
+    progress_done();
+    text = campbell_table(result, context);
+    json = campbell_json(result, context);
+    if (out) {
+      out->write("campbell.csv", campbell_csv(result));
+      out->write("campbell.gp", campbell_script(result, png_terminal()));
+      run_gnuplot(out->staging(), "campbell.gp");
+    }
+  } else {
+    const SpinModesResult result = solve_spin_modes(model, spin, hub_radius, axial_force, count, solver);
+    for (const std::string& warning : result.warnings) fmt::print(stderr, "ffrf modes: warning: {}\n", warning);
+    text = spin_modes_table(result, context);
+    json = spin_modes_json(result, context);
+    if (out) out->write("prestressed_frequencies.csv", spin_modes_csv(result));
+  }
+  if (out) {
+    out->write("summary.json", json);
+    out->commit();
+  }
+  fmt::print("{}", options.json ? json : text);
+  if (!options.out.empty() && !options.json) fmt::print("\nwrote {}\n", options.out);
+  return exit_ok;
+}
+
 int run_modes(const ModesOptions& options) {
   cases::Scene scene;
   try {
@@ -89,6 +159,7 @@ int run_modes(const ModesOptions& options) {
     return bad_input(fmt::format("--solver {}: unknown solver; choose one of {}", options.solver,
                                  modal::eigen_solver_choices()));
   }
+  if (options.spin || options.spin_range || options.axial_force) return run_spinning(options, scene, mesh, boundary, *solver);
   const int dof = free_dof_count(mesh, boundary);
   const int count = options.modes.value_or(std::min(dof - 1, default_elastic_modes + fem::rigid_mode_count(boundary)));
   if (count < 1) return bad_input(fmt::format("--modes {} is not a valid mode count (valid range [1, {}])", count, dof - 1));
@@ -129,7 +200,17 @@ Command add_modes_command(CLI::App& parent) {
   sub->add_option("--out", options->out,
                   "Write modes.csv, mode_shapes_sampled.csv, frequencies.csv, frequency_convergence.csv, summary.json and "
                   "PNG charts "
-                  "(with their gnuplot scripts) into this directory");
+                  "(with their gnuplot scripts) into this directory; with --spin/--axial-force: prestressed_frequencies.csv "
+                  "and summary.json; with --spin-range: campbell.csv, campbell.png (+ .gp) and summary.json");
+  sub->add_option("--spin", options->spin,
+                  "Spin rate Omega [rad/s] >= 0 about the axis normal to the plane: modes in the rotating frame with and "
+                  "without centrifugal stiffening, vs the power series (clamped-free)");
+  sub->add_option("--spin-range", options->spin_range,
+                  "Campbell diagram over n spin rates a:b:n [rad/s] (0 <= a < b, n >= 2) of the lowest --modes bending modes "
+                  "(default 3)");
+  sub->add_option("--axial-force", options->axial_force,
+                  "Uniform axial force P [N] (tension > 0, compression < 0): modes about the prestressed state, with the "
+                  "buckling load");
   return {sub, [options] { return run_modes(*options); }};
 }
 

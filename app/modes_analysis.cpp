@@ -24,6 +24,8 @@ double modes_shift(const fem::BeamMesh& mesh, fem::Boundary boundary) {
   return -s.bending_rigidity() / (s.mass_per_length * std::pow(mesh.length, 4));
 }
 
+double spin_hub_radius(const cases::Scene& /*scene*/) { return 0.0; }
+
 int free_dof_count(const fem::BeamMesh& mesh, fem::Boundary boundary) {
   return fem::make_dof_map(mesh, boundary).free_count();
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cases/scene.hpp"
 #include "fem/boundary.hpp"
 #include "fem/mesh.hpp"
 #include "modal/eigen_solver.hpp"
@@ -33,6 +34,12 @@ struct ModesResult {
 // for free–free −EI/(ρA L⁴) (the ω² of "βL = 1"), which makes K − σM positive definite while the
 // rigid modes (ω² = 0) stay ~500 times nearer σ than the first elastic mode (βL = 4.73).
 double modes_shift(const fem::BeamMesh& mesh, fem::Boundary boundary);
+
+// Distance r [m] from the spin axis to the boom root on the beam axis, for `--spin` and
+// `--spin-range` (the centrifugal force N(x)/Ω² = ρA [r (L − x) + (L² − x²)/2]). The scene has no
+// hub yet: 0 (axis through the root). The lead wires it to scene.hub->radius at merge; everything
+// downstream takes the hub radius as a parameter.
+double spin_hub_radius(const cases::Scene& scene);
 
 // Free DOFs of the mesh under the boundary condition.
 int free_dof_count(const fem::BeamMesh& mesh, fem::Boundary boundary);

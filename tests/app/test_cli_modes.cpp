@@ -1,13 +1,33 @@
 // End-to-end: `ffrf modes` results. The cantilever's bending frequencies from --json against the
 // Euler–Bernoulli values computed here; free–free rigid modes; --out files and PNG charts; a
-// failed run leaves no summary.json.
+// failed run leaves no summary.json. The spinning and prestressed beam (--spin, --spin-range,
+// --axial-force) against the exact ω² = ω₀² − Ω² without stiffening, the published first
+// flapwise frequency of the rotating cantilever (Wright et al. 1982, ω̄_in² = ω̄_flap² − Ω̄²) and
+// the Euler load π²EI/(4L²); bad values exit 2 naming the option and value.
 #include <cmath>
 #include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "cli_harness.hpp"
 
 namespace ffrf::test {
 namespace {
+
+bool is_png(const fs::path& path) {
+  const std::string bytes = read_text(path);
+  return bytes.size() > 8 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
+}
+
+// A number as text with round-trip precision.
+std::string fmt_number(double value) {
+  std::ostringstream text;
+  text.precision(17);
+  text << value;
+  return text.str();
+}
+std::string spin_option(double spin) { return " --spin " + fmt_number(spin); }
 
 Json modes_json(const std::string& args, const TempDir& dir) {
   const RunResult r = run_ffrf("modes " + args + " --json", dir.path());
@@ -58,10 +78,6 @@ TEST(CliModes, FreeFreeFindsThreeRigidModesWithANegativeShift) {
   EXPECT_NEAR(modes[3]["frequency_hz"].number / cantilever_frequency(4.730040745), 1.0, 1e-6);
 }
 
-bool is_png(const fs::path& path) {
-  const std::string bytes = read_text(path);
-  return bytes.size() > 8 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
-}
 
 TEST(CliModes, OutWritesCsvJsonAndPngCharts) {
   TempDir dir;
@@ -101,6 +117,148 @@ TEST(CliModes, FailedRunLeavesNoSummary) {
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir.path())) ++entries;
   EXPECT_EQ(entries, 3);  // out, stdout.txt, stderr.txt: no staging directory left behind
 }
+
+// The spin-up beam (L = 10 m, EA = 2.8e7 N, EI = 1.4e4 N m², ρA = 1.2 kg/m), N = 32, clamped-free.
+constexpr double spin_length = 10.0, spin_ei = 1.4e4, spin_rho_a = 1.2;
+const double spin_scale = std::sqrt(spin_ei / (spin_rho_a * std::pow(spin_length, 4)));  // ω = ω̄ · scale [rad/s]
+constexpr double beta1 = 1.875104069;
+
+fs::path write_spin_scene(const TempDir& dir) {
+  const fs::path path = dir / "spin_up_beam.toml";
+  write_text(path,
+             "[scene]\nname = \"spin-up beam\"\ndescription = \"test-local copy of the spin-up beam\"\n\n"
+             "[boom]\nlength = 10.0\nyoungs_modulus = 2.8e7\narea = 1.0\nsecond_moment = 5.0e-4\ndensity = 1.2\n"
+             "elements = 32\nboundary = \"clamped-free\"\n");
+  return path;
+}
+
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream stream(line);
+  std::string cell;
+  while (std::getline(stream, cell, ',')) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+TEST(CliModesSpin, SpinMatchesExactShiftAndPublishedRotatingCantilever) {
+  TempDir dir;
+  const fs::path scene = write_spin_scene(dir);
+  const double spin = 4.0 * spin_scale;  // Ω̄ = 4 > β₁² = 3.516: without stiffening mode 1 diverges
+  const Json json = modes_json(scene.string() + spin_option(spin), dir);
+  const Json& mode1 = json["modes"][0];
+  EXPECT_EQ(mode1["kind"].text, "bending");
+  EXPECT_TRUE(mode1["stable"].flag);
+  const double published_in_plane = std::sqrt(5.5850 * 5.5850 - 16.0) * spin_scale;  // ω̄_flap(4) = 5.5850
+  EXPECT_NEAR(mode1["stiffened_rad_per_s"].number / published_in_plane, 1.0, 1e-4);
+  EXPECT_NEAR(mode1["series_rad_per_s"].number / published_in_plane, 1.0, 1e-4);
+  EXPECT_LT(mode1["relative_error"].number, 1e-6);
+  // Without stiffening: ω² = ω₀² − Ω² < 0, growth rate √(Ω² − ω₀²).
+  EXPECT_EQ(mode1["unstiffened_rad_per_s"].type, Json::Type::null);
+  const double omega0 = beta1 * beta1 * spin_scale;
+  EXPECT_NEAR(mode1["unstiffened_growth_per_s"].number / std::sqrt(spin * spin - omega0 * omega0), 1.0, 1e-5);
+  const Json& mode2 = json["modes"][1];
+  const double omega02 = std::pow(4.694091133, 2) * spin_scale;
+  EXPECT_NEAR(mode2["unstiffened_rad_per_s"].number / std::sqrt(omega02 * omega02 - spin * spin), 1.0, 1e-6);
+}
+
+TEST(CliModesSpin, TableShowsUnstableModesWithGrowthRateNeverNan) {
+  TempDir dir;
+  const RunResult r = run_ffrf("modes " + write_spin_scene(dir).string() + " --spin 30", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("unstable, growth rate"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("omega series [rad/s]"), std::string::npos);
+}
+
+TEST(CliModesSpin, CampbellCsvMatchesPublishedRotatingCantilever) {
+  TempDir dir;
+  const fs::path out = dir / "campbell";
+  // Five speeds 0 .. 4 Ω̄: rows at Ω̄ = 2 and 4 are exact grid points.
+  const RunResult r = run_ffrf("modes " + write_spin_scene(dir).string() + " --spin-range 0:" +
+                                   fmt_number(4.0 * spin_scale) + ":5 --out '" + out.string() + "'",
+                               dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(is_png(out / "campbell.png"));
+  EXPECT_GT(fs::file_size(out / "campbell.gp"), 0u);
+  std::istringstream csv(read_text(out / "campbell.csv"));
+  std::string line;
+  std::getline(csv, line);
+  const auto header = split_csv_line(line);
+  const auto column = [&](const std::string& name) {
+    for (std::size_t i = 0; i < header.size(); ++i)
+      if (header[i] == name) return i;
+    ADD_FAILURE() << "no column " << name;
+    return std::size_t{0};
+  };
+  EXPECT_EQ(header[0], "spin_rad_per_s");
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(csv, line)) rows.push_back(split_csv_line(line));
+  ASSERT_EQ(rows.size(), 5u);
+  const double published[] = {3.5160, 4.1373, 5.5850};  // ω̄_flap at Ω̄ = 0, 2, 4
+  for (std::size_t k = 0; k < 3; ++k) {
+    const auto& row = rows[2 * k];
+    const double spin_bar = 2.0 * static_cast<double>(k);
+    EXPECT_NEAR(std::stod(row[0]) / spin_scale, spin_bar, 1e-9);
+    const double expected = std::sqrt(published[k] * published[k] - spin_bar * spin_bar) * spin_scale;
+    EXPECT_NEAR(std::stod(row[column("mode1_series_rad_per_s")]) / expected, 1.0, 1e-4) << "Omega_bar " << spin_bar;
+    EXPECT_NEAR(std::stod(row[column("mode1_stiffened_rad_per_s")]) / expected, 1.0, 1e-4) << "Omega_bar " << spin_bar;
+  }
+  // At Ω̄ = 4 the unstiffened first mode diverges: no frequency, growth rate √(Ω² − ω₀²).
+  const double omega0 = beta1 * beta1 * spin_scale, spin = 4.0 * spin_scale;
+  EXPECT_EQ(rows[4][column("mode1_unstiffened_rad_per_s")], "");
+  EXPECT_NEAR(std::stod(rows[4][column("mode1_unstiffened_growth_per_s")]) / std::sqrt(spin * spin - omega0 * omega0), 1.0, 1e-5);
+  const Json summary = JsonParser(read_text(out / "summary.json")).parse();
+  EXPECT_EQ(summary["campbell"].items.size(), 5u);
+}
+
+TEST(CliModesSpin, AxialForceLowersFrequencyAndReportsBuckling) {
+  TempDir dir;
+  const fs::path scene = write_spin_scene(dir);
+  const double critical = std::numbers::pi * std::numbers::pi * spin_ei / (4.0 * spin_length * spin_length);
+  const Json half = modes_json(scene.string() + " --axial-force " + fmt_number(-0.5 * critical), dir);
+  EXPECT_NEAR(half["buckling_load_N"].number / critical, 1.0, 1e-12);
+  EXPECT_NEAR(half["load_ratio"].number, -0.5, 1e-12);
+  EXPECT_FALSE(half["buckled"].flag);
+  const Json& mode1 = half["modes"][0];
+  EXPECT_LT(mode1["stiffened_rad_per_s"].number, mode1["unstiffened_rad_per_s"].number);
+  EXPECT_NEAR(mode1["unstiffened_rad_per_s"].number / (beta1 * beta1 * spin_scale), 1.0, 1e-6);
+  EXPECT_LT(mode1["relative_error"].number, 1e-6);
+
+  const RunResult r = run_ffrf("modes " + scene.string() + " --axial-force " + fmt_number(-1.2 * critical), dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("BUCKLED"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("buckled"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("unstable, growth rate"), std::string::npos) << r.out;
+}
+
+struct BadSpinInput {
+  std::string args;
+  std::string expected;  // in the message
+};
+
+class CliModesBadSpin : public ::testing::TestWithParam<BadSpinInput> {};
+
+TEST_P(CliModesBadSpin, ExitsTwoNamingOptionAndValue) {
+  TempDir dir;
+  const RunResult r = run_ffrf("modes " + write_spin_scene(dir).string() + " " + GetParam().args, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(GetParam().expected), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Values, CliModesBadSpin,
+    ::testing::Values(BadSpinInput{"--spin -1", "--spin -1"}, BadSpinInput{"--spin nan", "--spin nan"},
+                      BadSpinInput{"--spin 1x", "valid range [0, inf)"},
+                      BadSpinInput{"--spin-range 1:2", "--spin-range 1:2: malformed"},
+                      BadSpinInput{"--spin-range 0:10:1", "count n = 1"},
+                      BadSpinInput{"--spin-range 5:2:4", "must exceed the first"},
+                      BadSpinInput{"--spin-range 0:nan:3", "'nan' is not a finite number"},
+                      BadSpinInput{"--spin-range -1:2:3", "is negative"},
+                      BadSpinInput{"--spin 1 --spin-range 0:1:3", "exclude each other"},
+                      BadSpinInput{"--spin 1 --boundary free-free", "need a held root"},
+                      BadSpinInput{"--axial-force inf", "--axial-force inf"}));
 
 }  // namespace
 }  // namespace ffrf::test
