@@ -161,6 +161,7 @@ StableStepMeasurement measure_stable_step(CraneEquations& equations, const Eigen
   };
   const auto within_caps = [&] { return m.trials < search.max_trials && counted.rhs_evaluations() < search.max_rhs_evaluations; };
   const auto record = [&](double h, bool is_stable) {
+    m.trial_log.push_back({h, is_stable});
     if (is_stable) {
       m.stable_step = std::max(m.stable_step, h);
     } else if (m.unstable_step == 0.0 || h < m.unstable_step) {

@@ -32,6 +32,7 @@
 
 #include <complex>
 #include <string>
+#include <vector>
 
 #include "coupling/crane_equations.hpp"
 
@@ -53,6 +54,11 @@ struct StableStepSearch {
   long max_rhs_evaluations = 50'000'000;
 };
 
+struct StabilityTrial {
+  double step;  // [s]
+  bool stable;
+};
+
 struct StableStepMeasurement {
   double stable_step = 0.0;     // largest trial step that stayed stable over the window [s] (0: none)
   double unstable_step = 0.0;   // smallest trial step that blew up [s] (0: none)
@@ -61,6 +67,7 @@ struct StableStepMeasurement {
   long window_steps = 0;        // steps per trial
   bool converged = false;       // bracket narrowed to the precision within the caps
   std::string failure;          // the cause reported by the smallest unstable trial
+  std::vector<StabilityTrial> trial_log;  // every trial in the order run
 
   double relative_width() const { return unstable_step / stable_step - 1.0; }
 };
