@@ -19,7 +19,7 @@
 //    E_ref + E_floor (E_floor = ½ tr M ≈ 10¹⁰ J here, dominated by the hull's pitch inertia), i.e.
 //    an amplitude growth G of 10³ × (E_floor / E_seed)^½ from a seed of energy E_seed; G = 10¹¹
 //    covers seeds down to ≈ 10⁻⁶ J. The window is n = ln G / ln g steps (≈ 800 for p = 2 %), at
-//    least min_window_steps. On the reference crane the measured limits move by < 1 % between
+//    least min_window_steps. On the reference crane the measured limits move by < 2 % between
 //    G = 10¹¹ and 10⁴⁰ and between seed sizes 10⁻⁶ and 10⁻⁹ (rigid, nodal N = 1, 2, 4, 16, modal
 //    k = 2 + static): the window is long enough. Outputs every n/32 steps keep E_ref (the kinetic
 //    energy of the first output) from absorbing the growth it is meant to detect.
