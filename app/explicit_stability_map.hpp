@@ -1,0 +1,62 @@
+// The explicit stability map of a crane scene (for `ffrf stability`): for each boom model the
+// largest fixed step of ARKODE's explicit Runge–Kutta measured by trial runs
+// (coupling::measure_stable_step) against the theory — the boom's own bound (β_I/ω_max undamped;
+// with its stiffness-proportional damping) and the linearized crane's Jacobian bound
+// (coupling::explicit_stable_step) — as a CSV table (units in the column names), a Markdown table
+// and two gnuplot charts: largest stable step vs ω_max (log–log, with β_I/ω) and the model × step
+// stability map (green stable, red unstable, the theoretical boundary drawn over it).
+// The scene is analysed in calm water: the limit belongs to the linearization about the static
+// equilibrium (the 10 s wave does not move it).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app/output_directory.hpp"
+#include "cases/crane_builder.hpp"
+#include "cases/scene.hpp"
+#include "coupling/explicit_stability.hpp"
+
+namespace ffrf::app {
+
+struct ExplicitStabilityRow {
+  cases::BoomChoice choice;
+  std::string label;
+  int elastic_dof = 0;
+  double highest_frequency = 0.0;        // ω_max of the boom's elastic coordinates [rad/s] (0: rigid)
+  double boom_undamped_step = 0.0;       // β_I / ω_max [s] (infinity: rigid)
+  double boom_damped_step = 0.0;         // with the boom's structural damping [s] (infinity: rigid)
+  double jacobian_step = 0.0;            // coupling::explicit_stable_step [s]
+  coupling::StableStepMeasurement measured;
+  double wall_seconds = 0.0;             // equilibrium, theory and every trial
+  std::string failure;                   // non-empty: the model could not be measured (why)
+
+  bool ok() const { return failure.empty() && measured.converged; }
+  // "boom" when the boom's damped bound is within 10 % of the coupled bound, else "crane".
+  std::string limiting_part() const;
+};
+
+struct ExplicitStabilityMap {
+  std::string scene_file, scene_name;
+  double imaginary_axis_boundary = 0.0;  // β_I of the ERK table
+  double wire_cargo_frequency = 0.0;     // √(k_wire / m_cargo) [rad/s]
+  double relative_precision = 0.0;       // of every measurement
+  std::vector<ExplicitStabilityRow> rows;
+};
+
+// Nodal N = 1, 2, 4, …, 64 and modal k = 1 … 12 with static modes on the N = 16 mesh.
+std::vector<cases::BoomChoice> default_stability_models();
+
+// Measures every model (progress: one line per model on stderr). A model whose static equilibrium
+// or measurement fails becomes a row with `failure` set; scene errors (cases::SceneError) propagate.
+ExplicitStabilityMap explicit_stability_map(const cases::Scene& scene, const std::vector<cases::BoomChoice>& models,
+                                            bool progress, const coupling::StableStepSearch& search = {});
+
+std::string explicit_stability_csv(const ExplicitStabilityMap& map);
+std::string explicit_stability_markdown(const ExplicitStabilityMap& map);
+
+// Writes explicit_stability.csv, the chart data and scripts, and draws stable_step_vs_frequency.png
+// and stability_map.png; throws std::runtime_error when gnuplot is missing or fails.
+void write_explicit_stability_map(const StagedDirectory& out, const ExplicitStabilityMap& map);
+
+}  // namespace ffrf::app

@@ -1,0 +1,189 @@
+// Measured explicit stability limit and the ERK stability region (see explicit_stability.hpp).
+#include "coupling/explicit_stability.hpp"
+
+#include <arkode/arkode_erkstep.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "coupling/simulation.hpp"
+
+namespace ffrf::coupling {
+namespace {
+
+// The table of integrate_explicit (integrate_arkode.cpp); the tests check that both agree on the
+// imaginary-axis boundary.
+constexpr ARKODE_ERKTableID table_id = ARKODE_ZONNEVELD_5_3_4;
+
+struct ButcherTable {
+  ARKodeButcherTable table = ARKodeButcherTable_LoadERK(table_id);
+  ButcherTable() = default;
+  ~ButcherTable() { ARKodeButcherTable_Free(table); }
+  ButcherTable(const ButcherTable&) = delete;
+  ButcherTable& operator=(const ButcherTable&) = delete;
+};
+
+const ARKodeButcherTableMem& erk_table() {
+  static const ButcherTable table;
+  return *table.table;
+}
+
+// Forwards every call and counts the right-hand sides (minimal accelerations) of all trials.
+class CountingEquations final : public CraneEquations {
+ public:
+  explicit CountingEquations(CraneEquations& inner) : inner_(inner) {}
+  long rhs_evaluations() const { return count_; }
+
+  int minimal_size() const override { return inner_.minimal_size(); }
+  Eigen::VectorXd initial_guess() const override { return inner_.initial_guess(); }
+  void minimal_accelerations(double t, ConstRef z, ConstRef z_dot, Ref z_ddot) override {
+    ++count_;
+    inner_.minimal_accelerations(t, z, z_dot, z_ddot);
+  }
+  void static_residual(ConstRef z, Ref residual) override { inner_.static_residual(z, residual); }
+  Eigen::VectorXd static_residual_scale() const override { return inner_.static_residual_scale(); }
+  Eigen::VectorXd coordinate_scale() const override { return inner_.coordinate_scale(); }
+  CraneOutputs minimal_outputs(double t, ConstRef z, ConstRef z_dot) override { return inner_.minimal_outputs(t, z, z_dot); }
+  int full_size() const override { return inner_.full_size(); }
+  void full_from_minimal(ConstRef z, ConstRef z_dot, Ref q, Ref v) const override { inner_.full_from_minimal(z, z_dot, q, v); }
+  void full_mass_times(ConstRef q, ConstRef a, Ref out) override { inner_.full_mass_times(q, a, out); }
+  void full_forces(double t, ConstRef q, ConstRef v, Ref out) override { inner_.full_forces(t, q, v, out); }
+  void constraint(ConstRef q, Ref c) const override { inner_.constraint(q, c); }
+  void constraint_jacobian(ConstRef q, Eigen::MatrixXd& jacobian) const override { inner_.constraint_jacobian(q, jacobian); }
+  void constraint_rate_terms(ConstRef q, ConstRef v, Ref gamma) const override { inner_.constraint_rate_terms(q, v, gamma); }
+  Eigen::MatrixXd full_mass_matrix(ConstRef q) override { return inner_.full_mass_matrix(q); }
+  CraneOutputs full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) override {
+    return inner_.full_outputs(t, q, v, lambda);
+  }
+  double wire_stretch_minimal(ConstRef z) override { return inner_.wire_stretch_minimal(z); }
+  double wire_stretch_full(ConstRef q) override { return inner_.wire_stretch_full(q); }
+  int elastic_size() const override { return inner_.elastic_size(); }
+
+ private:
+  CraneEquations& inner_;
+  long count_ = 0;
+};
+
+// Rays from the imaginary axis (undamped modes) to the negative real axis (overdamped modes).
+std::vector<std::complex<double>> left_half_plane_rays() {
+  std::vector<std::complex<double>> rays;
+  for (int degrees = 90; degrees <= 180; degrees += 5) rays.push_back(std::polar(1.0, degrees * std::numbers::pi / 180.0));
+  return rays;
+}
+
+}  // namespace
+
+std::complex<double> explicit_stability_function(std::complex<double> w) {
+  const ARKodeButcherTableMem& table = erk_table();
+  std::vector<std::complex<double>> stages(static_cast<std::size_t>(table.stages));
+  std::complex<double> sum = 0.0;
+  for (int i = 0; i < table.stages; ++i) {
+    std::complex<double> stage = 1.0;
+    for (int j = 0; j < i; ++j) stage += w * table.A[i][j] * stages[static_cast<std::size_t>(j)];
+    stages[static_cast<std::size_t>(i)] = stage;
+    sum += table.b[i] * stage;
+  }
+  return 1.0 + w * sum;
+}
+
+double explicit_ray_boundary(std::complex<double> direction) {
+  constexpr double ds = 0.005, s_max = 20.0, slack = 1e-9;
+  const std::complex<double> d = direction / std::abs(direction);
+  double good = 0.0;
+  for (double s = ds; s <= s_max; s += ds) {
+    if (std::abs(explicit_stability_function(s * d)) > 1.0 + slack) {
+      double bad = s;
+      for (int i = 0; i < 50; ++i) {
+        const double mid = 0.5 * (good + bad);
+        (std::abs(explicit_stability_function(mid * d)) > 1.0 + slack ? bad : good) = mid;
+      }
+      return good;
+    }
+    good = s;
+  }
+  return s_max;
+}
+
+double explicit_mode_step_limit(std::complex<double> eigenvalue) {
+  const double size = std::abs(eigenvalue);
+  return size > 0.0 ? explicit_ray_boundary(eigenvalue) / size : std::numeric_limits<double>::infinity();
+}
+
+long stability_window_steps(const StableStepSearch& search) {
+  double slowest_growth = std::numeric_limits<double>::infinity();
+  for (const std::complex<double> d : left_half_plane_rays()) {
+    const double beyond = (1.0 + 0.5 * search.relative_precision) * explicit_ray_boundary(d);
+    slowest_growth = std::min(slowest_growth, std::abs(explicit_stability_function(beyond * d)));
+  }
+  const double steps = std::log(search.detection_growth) / std::log(slowest_growth);
+  return std::max(search.min_window_steps, static_cast<long>(std::ceil(steps)));
+}
+
+Eigen::VectorXd stability_seed(CraneEquations& equations, double seed_size) {
+  const Eigen::VectorXd scale = equations.coordinate_scale();
+  Eigen::VectorXd seed(scale.size());
+  for (Eigen::Index j = 0; j < seed.size(); ++j) seed(j) = seed_size * scale(j) * std::cos(2.0 + 2.39996 * static_cast<double>(j));
+  return seed;
+}
+
+StableStepMeasurement measure_stable_step(CraneEquations& equations, const Eigen::VectorXd& z0, double h0,
+                                          const StableStepSearch& search) {
+  if (!(h0 > 0.0) || !std::isfinite(h0) || !(search.relative_precision > 0.0)) {
+    throw SolverFailure("ARKODE ERK", "invalid start step " + std::to_string(h0) + " or precision " +
+                                          std::to_string(search.relative_precision), 0.0,
+                        "give a start step > 0 and a relative precision > 0");
+  }
+  CountingEquations counted(equations);
+  const Eigen::VectorXd start = z0 + stability_seed(equations, search.seed_size);
+  StableStepMeasurement m;
+  m.window_steps = stability_window_steps(search);
+  const long steps_per_output = std::max(1L, m.window_steps / 32);
+  const long outputs = (m.window_steps + steps_per_output - 1) / steps_per_output;
+
+  const auto stable = [&](double h) {
+    IntegratorSettings settings;
+    settings.kind = Integrator::arkode;
+    settings.fixed_step = h;
+    settings.output_interval = static_cast<double>(steps_per_output) * h;
+    settings.duration = static_cast<double>(outputs) * settings.output_interval;
+    settings.max_steps = 2 * steps_per_output + 10;
+    ++m.trials;
+    try {
+      integrate_explicit(counted, start, settings);
+      return true;
+    } catch (const SolverFailure& failure) {
+      if (failure.cause().rfind("unstable:", 0) != 0) throw;
+      if (m.unstable_step == 0.0 || h < m.unstable_step) m.failure = failure.cause();
+      return false;
+    }
+  };
+  const auto within_caps = [&] { return m.trials < search.max_trials && counted.rhs_evaluations() < search.max_rhs_evaluations; };
+  const auto record = [&](double h, bool is_stable) {
+    m.trial_log.push_back({h, is_stable});
+    if (is_stable) {
+      m.stable_step = std::max(m.stable_step, h);
+    } else if (m.unstable_step == 0.0 || h < m.unstable_step) {
+      m.unstable_step = h;
+    }
+  };
+
+  constexpr double bracket_factor = 1.5;
+  double h = h0;
+  const bool first = stable(h);
+  record(h, first);
+  while (within_caps() && (m.stable_step == 0.0 || m.unstable_step == 0.0)) {
+    h = first ? h * bracket_factor : h / bracket_factor;
+    record(h, stable(h));
+  }
+  while (m.stable_step > 0.0 && m.unstable_step > 0.0 && m.relative_width() > search.relative_precision && within_caps()) {
+    h = std::sqrt(m.stable_step * m.unstable_step);
+    record(h, stable(h));
+  }
+  m.converged = m.stable_step > 0.0 && m.unstable_step > 0.0 && m.relative_width() <= search.relative_precision;
+  m.rhs_evaluations = counted.rhs_evaluations();
+  return m;
+}
+
+}  // namespace ffrf::coupling
