@@ -14,11 +14,15 @@ namespace ffrf::coupling {
 
 // ida: Lagrange multipliers, stabilized index-2 DAE (IDA BDF); cvode: minimal-coordinate ODE (CVODE
 // BDF); arkode: minimal-coordinate ODE (ARKODE explicit Runge–Kutta, adaptive or fixed step);
-// generalized_alpha: full coordinates, index-3 with the Arnold–Brüls constraint treatment (fixed step).
-enum class Integrator { ida, cvode, arkode, generalized_alpha };
-std::string_view to_string(Integrator integrator);  // "ida", "cvode", "arkode", "generalized-alpha"
+// generalized_alpha: full coordinates, index-3 with the Arnold–Brüls constraint treatment (fixed step);
+// index1, baumgarte, projection: full coordinates as an ODE with the constraint differentiated twice
+// (index 1, CVODE BDF): unstabilized, with Baumgarte's feedback, or with CVODE's projection onto
+// C = 0, C_q v = 0 after every step (integrate_index1.cpp).
+enum class Integrator { ida, cvode, arkode, generalized_alpha, index1, baumgarte, projection };
+// "ida", "cvode", "arkode", "generalized-alpha", "index1", "baumgarte", "projection"
+std::string_view to_string(Integrator integrator);
 std::optional<Integrator> parse_integrator(std::string_view text);
-std::string integrator_choices();  // "ida|cvode|arkode|generalized-alpha"
+std::string integrator_choices();  // "ida|cvode|arkode|generalized-alpha|index1|baumgarte|projection"
 
 struct IntegratorSettings {
   Integrator kind = Integrator::cvode;
@@ -31,6 +35,11 @@ struct IntegratorSettings {
   // for arkode 0 = adaptive with the tolerances, > 0 = this fixed step (outputs interpolated).
   double fixed_step = 0.0;
   double spectral_radius = 0.8;      // ρ∞ ∈ [0, 1] of generalized-α (1: no numerical dissipation)
+  // Baumgarte stabilization frequency ω_b [rad/s] of `baumgarte`: C̈ + 2ω_b Ċ + ω_b² C = 0 (critically
+  // damped drift). 10 rad/s is above the wave (0.63 rad/s) and the cargo's swing and heave-on-wire
+  // modes, so the feedback damps drift faster than the motion varies, and low enough that the added
+  // eigenvalues (−ω_b, double) stay well inside what BDF resolves at the motion's step sizes.
+  double baumgarte_frequency = 10.0;
   bool progress = false;             // print progress on stderr (callers set it for terminals only)
 };
 
@@ -42,6 +51,7 @@ struct SolverStats {
   long error_test_failures = 0;
   long convergence_failures = 0;
   double step = 0.0;               // the step actually taken by a fixed-step run [s] (0: adaptive)
+  long projections = 0;            // constraint projections (CVODE's projection variant only)
   double wall_seconds = 0.0;
 };
 
@@ -87,6 +97,12 @@ double explicit_imaginary_axis_boundary();
 // at rest, fixed step settings.fixed_step; Newton on (q̈, λ) with a modified-Newton iteration matrix.
 RunResult integrate_generalized_alpha(CraneEquations& equations, const Eigen::VectorXd& z0,
                                       const IntegratorSettings& settings);
+// CVODE (BDF, Newton, dense Jacobian) on the full coordinates y = (q, v), q̇ = v, with v̇ and λ from
+// the index-1 system [M C_qᵀ; C_q 0][v̇; λ] = [Q; γ − 2αĊ − β²C] from z0 at rest. settings.kind
+// chooses the constraint treatment: index1 (α = β = 0: drifts), baumgarte (α = β = ω_b,
+// settings.baumgarte_frequency) or projection (α = β = 0, CVODE projects q onto C(q) = 0 and v onto
+// C_q v = 0 in the mass-weighted norm after every step).
+RunResult integrate_index1(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings);
 // Dispatch on settings.kind.
 RunResult integrate(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings);
 
