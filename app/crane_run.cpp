@@ -18,7 +18,10 @@ namespace ffrf::app {
 void add_dynamics_options(CLI::App& sub, DynamicsOptions& options) {
   sub.add_option("--integrator", options.integrator,
                  "Integrator " + coupling::integrator_choices() +
-                     ": ida = Lagrange multipliers (stabilized index-2 DAE), cvode = minimal coordinates (BDF ODE)")
+                     ": cvode = minimal coordinates (BDF ODE), ida = Lagrange multipliers (stabilized index-2 DAE), "
+                     "arkode = minimal coordinates (explicit Runge-Kutta), generalized-alpha = index-3, fixed step (needs --step); "
+                     "index1, baumgarte, projection = full coordinates as an index-1 ODE (BDF): unstabilized (the constraint "
+                     "drifts), with Baumgarte feedback (omega_b = 10 rad/s), or projected onto the constraint after every step")
       ->capture_default_str();
   sub.add_option("--rtol", options.rtol, "Relative tolerance, in (0, 1)")->capture_default_str();
   sub.add_option("--atol", options.atol, "Absolute tolerance (scaled by each coordinate's typical size), in (0, 1)")

@@ -13,18 +13,22 @@ std::string_view to_string(Integrator integrator) {
     case Integrator::cvode: return "cvode";
     case Integrator::arkode: return "arkode";
     case Integrator::generalized_alpha: return "generalized-alpha";
+    case Integrator::index1: return "index1";
+    case Integrator::baumgarte: return "baumgarte";
+    case Integrator::projection: return "projection";
   }
   return "?";
 }
 
 std::optional<Integrator> parse_integrator(std::string_view text) {
-  for (Integrator i : {Integrator::ida, Integrator::cvode, Integrator::arkode, Integrator::generalized_alpha}) {
+  for (Integrator i : {Integrator::ida, Integrator::cvode, Integrator::arkode, Integrator::generalized_alpha,
+                       Integrator::index1, Integrator::baumgarte, Integrator::projection}) {
     if (text == to_string(i)) return i;
   }
   return std::nullopt;
 }
 
-std::string integrator_choices() { return "ida|cvode|arkode|generalized-alpha"; }
+std::string integrator_choices() { return "ida|cvode|arkode|generalized-alpha|index1|baumgarte|projection"; }
 
 namespace {
 
@@ -34,6 +38,9 @@ RunResult dispatch(CraneEquations& equations, const Eigen::VectorXd& z0, const I
     case Integrator::cvode: return integrate_minimal(equations, z0, settings);
     case Integrator::arkode: return integrate_explicit(equations, z0, settings);
     case Integrator::generalized_alpha: return integrate_generalized_alpha(equations, z0, settings);
+    case Integrator::index1:
+    case Integrator::baumgarte:
+    case Integrator::projection: return integrate_index1(equations, z0, settings);
   }
   throw std::invalid_argument("unknown integrator");
 }

@@ -15,11 +15,15 @@ namespace ffrf::coupling {
 
 // ida: Lagrange multipliers, stabilized index-2 DAE (IDA BDF); cvode: minimal-coordinate ODE (CVODE
 // BDF); arkode: minimal-coordinate ODE (ARKODE explicit Runge–Kutta, adaptive or fixed step);
-// generalized_alpha: full coordinates, index-3 with the Arnold–Brüls constraint treatment (fixed step).
-enum class Integrator { ida, cvode, arkode, generalized_alpha };
-std::string_view to_string(Integrator integrator);  // "ida", "cvode", "arkode", "generalized-alpha"
+// generalized_alpha: full coordinates, index-3 with the Arnold–Brüls constraint treatment (fixed step);
+// index1, baumgarte, projection: full coordinates as an ODE with the constraint differentiated twice
+// (index 1, CVODE BDF): unstabilized, with Baumgarte's feedback, or with CVODE's projection onto
+// C = 0, C_q v = 0 after every step (integrate_index1.cpp).
+enum class Integrator { ida, cvode, arkode, generalized_alpha, index1, baumgarte, projection };
+// "ida", "cvode", "arkode", "generalized-alpha", "index1", "baumgarte", "projection"
+std::string_view to_string(Integrator integrator);
 std::optional<Integrator> parse_integrator(std::string_view text);
-std::string integrator_choices();  // "ida|cvode|arkode|generalized-alpha"
+std::string integrator_choices();  // "ida|cvode|arkode|generalized-alpha|index1|baumgarte|projection"
 
 struct IntegratorSettings {
   Integrator kind = Integrator::cvode;
@@ -36,6 +40,11 @@ struct IntegratorSettings {
   // leave out part of the imaginary axis, so undamped stiff modes (a boom without structural damping)
   // force steps that resolve the highest frequency; order ≤ 2 is A-stable (docs/stability.md).
   int max_order = 5;
+  // Baumgarte stabilization frequency ω_b [rad/s] of `baumgarte`: C̈ + 2ω_b Ċ + ω_b² C = 0 (critically
+  // damped drift). 10 rad/s is above the wave (0.63 rad/s) and the cargo's swing and heave-on-wire
+  // modes, so the feedback damps drift faster than the motion varies, and low enough that the added
+  // eigenvalues (−ω_b, double) stay well inside what BDF resolves at the motion's step sizes.
+  double baumgarte_frequency = 10.0;
   bool progress = false;             // print progress on stderr (callers set it for terminals only)
   MonitorLimits monitor;             // the failure detectors' bounds (coupling/run_monitor.hpp)
 };
@@ -48,6 +57,7 @@ struct SolverStats {
   long error_test_failures = 0;
   long convergence_failures = 0;
   double step = 0.0;               // the step actually taken by a fixed-step run [s] (0: adaptive)
+  long projections = 0;            // constraint projections (CVODE's projection variant only)
   double wall_seconds = 0.0;
 };
 
@@ -80,6 +90,12 @@ double explicit_imaginary_axis_boundary();
 // at rest, fixed step settings.fixed_step; Newton on (q̈, λ) with a modified-Newton iteration matrix.
 RunResult integrate_generalized_alpha(CraneEquations& equations, const Eigen::VectorXd& z0,
                                       const IntegratorSettings& settings);
+// CVODE (BDF, Newton, dense Jacobian) on the full coordinates y = (q, v), q̇ = v, with v̇ and λ from
+// the index-1 system [M C_qᵀ; C_q 0][v̇; λ] = [Q; γ − 2αĊ − β²C] from z0 at rest. settings.kind
+// chooses the constraint treatment: index1 (α = β = 0: drifts), baumgarte (α = β = ω_b,
+// settings.baumgarte_frequency) or projection (α = β = 0, CVODE projects q onto C(q) = 0 and v onto
+// C_q v = 0 in the mass-weighted norm after every step).
+RunResult integrate_index1(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings);
 // Dispatch on settings.kind, then the post-run detectors (coupling/run_monitor.hpp) fill
 // RunResult::detections. A fatal detection is a SolverFailure with the partial result attached.
 RunResult integrate(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings);

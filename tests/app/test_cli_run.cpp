@@ -125,6 +125,16 @@ TEST(CliRun, LagrangeMultiplierRunKeepsTheConstraint) {
   EXPECT_NEAR(json["static_equilibrium"]["wire_tension_N"].number / kCargoWeight, 1.0, 1e-8);
 }
 
+TEST(CliRun, ProjectionIntegratorRunsAndKeepsTheConstraint) {
+  TempDir dir;
+  const RunResult r = run_ffrf("run " + kScene + " --boom rigid --integrator projection --duration 2 --json", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json json = JsonParser(r.out).parse();
+  EXPECT_EQ(json["provenance"]["integrator"].text, "projection");
+  EXPECT_LT(json["max_constraint_residual_m"].number, 1e-6) << "projected onto C = 0 after every step";
+  EXPECT_NEAR(json["static_equilibrium"]["wire_tension_N"].number / kCargoWeight, 1.0, 1e-8);
+}
+
 TEST(CliCompare, WritesReportWithTheModelsTheReferenceAndTheCharts) {
   TempDir dir;
   const fs::path out = dir / "compare";

@@ -1,0 +1,294 @@
+// CVODE (variable-order BDF, Newton with a dense Jacobian) on the crane in full coordinates as an
+// ODE y = (q, v): q̇ = v, and v̇, λ from the index-1 system (the clamp at B differentiated twice)
+//   [M(q) C_qᵀ; C_q 0] [v̇; λ] = [Q(q, v, t); γ − 2αĊ − β²C],   γ = −(C_q v)_q v,  Ċ = C_q v,
+// solved through the Schur complement S = C_q M⁻¹ C_qᵀ (3 × 3). Three constraint treatments:
+//  * index1     α = β = 0: only C̈ = 0 is imposed, so the integration errors in the invariants C and
+//               Ċ are never corrected: Ċ random-walks (grows like t) and C like t²;
+//  * baumgarte  α = β = ω_b: the drift obeys C̈ + 2ω_b Ċ + ω_b² C = 0, critically damped;
+//  * projection α = β = 0 plus CVODE's projection (CVodeSetProjFn) after every step: q onto C(q) = 0
+//               by Gauss–Newton in the mass-weighted norm ‖Δq‖_M, then v onto C_q v = 0 (the
+//               M-orthogonal projection, which never raises the kinetic energy); CVODE's error
+//               estimate is projected with the same linear projector.
+// The Jacobian is the forward difference of integrate_cvode.cpp (increments 10⁻⁷·max(|y_j|, 1); see
+// the comment there). All constraint calls are in constraint_terms(), project_positions() and
+// project_velocities().
+#include <cvode/cvode.h>
+#include <cvode/cvode_ls.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "coupling/simulation.hpp"
+#include "coupling/sundials_support.hpp"
+
+namespace ffrf::coupling {
+namespace {
+
+constexpr int constraints = CraneEquations::constraint_count;
+constexpr int max_projection_iterations = 10;
+
+// Workspace of one run (allocated once; the mass matrix itself comes by value from the model).
+struct Index1Data {
+  CraneEquations* equations;
+  int size;        // nq
+  double alpha;    // Baumgarte velocity gain [1/s]
+  double beta;     // Baumgarte position gain [1/s]
+  void* cvode = nullptr;
+  N_Vector error_weights = nullptr;  // CVODE's error weights, read by the projection
+  Eigen::MatrixXd jacobian;        // C_q (3 × nq)
+  Eigen::LLT<Eigen::MatrixXd> mass;  // M = LLᵀ
+  Eigen::MatrixXd mass_inverse_jacobian_t;  // Y = M⁻¹C_qᵀ (nq × 3)
+  Eigen::Matrix3d schur;           // S = C_q Y
+  Eigen::VectorXd forces, free_acceleration, weights, work;
+  Eigen::Vector3d c, c_dot, gamma, lambda;
+  long jacobian_rhs_evaluations = 0;
+  std::string model_error;  // an exception the model threw inside a callback (never crosses C code)
+
+  Index1Data(CraneEquations& e, int n, double a, double b)
+      : equations(&e), size(n), alpha(a), beta(b), jacobian(constraints, n), mass(n), mass_inverse_jacobian_t(n, constraints),
+        forces(n), free_acceleration(n), weights(2 * n), work(n) {}
+};
+
+// C, C_q, Ċ = C_q v and γ at (q, v): the one place the constraint is evaluated for the dynamics.
+void constraint_terms(Index1Data& d, CraneEquations::ConstRef q, CraneEquations::ConstRef v) {
+  d.equations->constraint(q, d.c);
+  d.equations->constraint_jacobian(q, d.jacobian);
+  d.c_dot.noalias() = d.jacobian * v;
+  d.equations->constraint_rate_terms(q, v, d.gamma);
+}
+
+// Factorizes M(q) and forms Y = M⁻¹C_qᵀ and S = C_q Y for the current d.jacobian; false if M is not
+// positive definite.
+bool factorize(Index1Data& d, CraneEquations::ConstRef q) {
+  d.mass.compute(d.equations->full_mass_matrix(q));
+  if (d.mass.info() != Eigen::Success) return false;
+  d.mass_inverse_jacobian_t = d.mass.solve(d.jacobian.transpose());
+  d.schur.noalias() = d.jacobian * d.mass_inverse_jacobian_t;
+  return true;
+}
+
+// v̇ and λ at (t, q, v): v̇ = M⁻¹Q − Y λ with S λ = C_q M⁻¹Q − (γ − 2αĊ − β²C).
+bool accelerations(Index1Data& d, double t, CraneEquations::ConstRef q, CraneEquations::ConstRef v, CraneEquations::Ref v_dot) {
+  constraint_terms(d, q, v);
+  if (!factorize(d, q)) return false;
+  d.equations->full_forces(t, q, v, d.forces);
+  d.free_acceleration = d.mass.solve(d.forces);
+  const Eigen::Vector3d target = d.gamma - 2.0 * d.alpha * d.c_dot - d.beta * d.beta * d.c;
+  d.lambda = d.schur.partialPivLu().solve(d.jacobian * d.free_acceleration - target);
+  v_dot = d.free_acceleration - d.mass_inverse_jacobian_t * d.lambda;
+  return v_dot.allFinite();
+}
+
+int index1_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
+  auto* d = static_cast<Index1Data*>(user);
+  const auto state = sundials::Vector::view(y);
+  auto rate = sundials::Vector::view(y_dot);
+  if (!state.allFinite()) return 1;  // recoverable: CVODE retries with a smaller step
+  const int n = d->size;
+  try {
+    rate.head(n) = state.tail(n);
+    return accelerations(*d, t, state.head(n), state.tail(n), rate.tail(n)) ? 0 : 1;
+  } catch (const std::exception& error) {
+    d->model_error = error.what();
+    return -1;
+  }
+}
+
+int index1_jacobian(sunrealtype t, N_Vector y, N_Vector f_y, SUNMatrix jacobian, void* user, N_Vector work_y, N_Vector work_f,
+                    N_Vector) {
+  auto* d = static_cast<Index1Data*>(user);
+  const auto state = sundials::Vector::view(y);
+  const auto rate = sundials::Vector::view(f_y);
+  auto shifted = sundials::Vector::view(work_y);
+  auto shifted_rate = sundials::Vector::view(work_f);
+  const int n = d->size;
+  shifted = state;
+  try {
+    for (int j = 0; j < 2 * n; ++j) {
+      const double delta = 1e-7 * std::max(std::abs(state(j)), 1.0);
+      shifted(j) = state(j) + delta;
+      shifted_rate.head(n) = shifted.tail(n);
+      const bool ok = accelerations(*d, t, shifted.head(n), shifted.tail(n), shifted_rate.tail(n));
+      shifted(j) = state(j);
+      if (!ok || !shifted_rate.allFinite()) return 1;
+      sunrealtype* column = SUNDenseMatrix_Column(jacobian, j);
+      for (int i = 0; i < 2 * n; ++i) column[i] = (shifted_rate(i) - rate(i)) / delta;
+    }
+  } catch (const std::exception& error) {
+    d->model_error = error.what();
+    return -1;
+  }
+  d->jacobian_rhs_evaluations += 2 * n;
+  return 0;
+}
+
+// x minus its M-orthogonal component normal to C_q x = 0: x ← x − Y S⁻¹ C_q x.
+void remove_normal_component(Index1Data& d, CraneEquations::Ref x) {
+  d.work.noalias() = d.mass_inverse_jacobian_t * d.schur.partialPivLu().solve(d.jacobian * x);
+  x -= d.work;
+}
+
+// Gauss–Newton for min ‖Δq‖_M subject to C(q + Δq) = 0, with M fixed at the step's q: stops when the
+// update's weighted RMS norm over the positions (CVODE's error weights) is below eps (CVODE's epsProj);
+// false if it does not converge.
+bool project_positions(Index1Data& d, CraneEquations::ConstRef q, CraneEquations::Ref q_projected, double eps) {
+  q_projected = q;
+  for (int iteration = 0; iteration < max_projection_iterations; ++iteration) {
+    d.equations->constraint(q_projected, d.c);
+    d.equations->constraint_jacobian(q_projected, d.jacobian);
+    d.mass_inverse_jacobian_t = d.mass.solve(d.jacobian.transpose());
+    d.schur.noalias() = d.jacobian * d.mass_inverse_jacobian_t;
+    d.work = d.mass_inverse_jacobian_t * d.schur.partialPivLu().solve(d.c);
+    q_projected -= d.work;
+    const double update = std::sqrt(d.work.cwiseProduct(d.weights.head(d.size)).squaredNorm() / d.size);
+    if (!q_projected.allFinite()) return false;
+    if (update < eps) break;
+    if (iteration + 1 == max_projection_iterations) return false;
+  }
+  // C_q, Y and S at the projected q, for the velocity projection.
+  d.equations->constraint_jacobian(q_projected, d.jacobian);
+  d.mass_inverse_jacobian_t = d.mass.solve(d.jacobian.transpose());
+  d.schur.noalias() = d.jacobian * d.mass_inverse_jacobian_t;
+  return true;
+}
+
+// v onto C_q v = 0 (linear: one M-orthogonal projection at the projected q).
+void project_velocities(Index1Data& d, CraneEquations::Ref v) { remove_normal_component(d, v); }
+
+// CVProjFn: corr = projected y − ycur; err (if given) gets the same linear projection, block by block
+// (the position block against C_q, the velocity block against C_q; the second-order coupling of the
+// velocity constraint to position errors, (C_q v)_q δq, is left out).
+int index1_projection(sunrealtype, N_Vector ycur, N_Vector corr, sunrealtype eps, N_Vector err, void* user) {
+  auto* d = static_cast<Index1Data*>(user);
+  const int n = d->size;
+  const auto state = sundials::Vector::view(ycur);
+  auto correction = sundials::Vector::view(corr);
+  try {
+    if (CVodeGetErrWeights(d->cvode, d->error_weights) != CV_SUCCESS) return -1;
+    d->weights = sundials::Vector::view(d->error_weights);
+    if (!state.allFinite()) return 1;
+    d->mass.compute(d->equations->full_mass_matrix(state.head(n)));
+    if (d->mass.info() != Eigen::Success) return 1;
+    auto q_projected = correction.head(n);
+    if (!project_positions(*d, state.head(n), q_projected, eps)) return 1;
+    q_projected -= state.head(n);
+    auto v_projected = correction.tail(n);
+    v_projected = state.tail(n);
+    project_velocities(*d, v_projected);
+    v_projected -= state.tail(n);
+    if (err != nullptr) {
+      auto error = sundials::Vector::view(err);
+      remove_normal_component(*d, error.head(n));
+      remove_normal_component(*d, error.tail(n));
+    }
+    return correction.allFinite() ? 0 : 1;
+  } catch (const std::exception& error) {
+    d->model_error = error.what();
+    return -1;
+  }
+}
+
+int wire_root(sunrealtype, N_Vector y, sunrealtype* g, void* user) {
+  auto* d = static_cast<Index1Data*>(user);
+  g[0] = d->equations->wire_stretch_full(sundials::Vector::view(y).head(d->size));
+  return 0;
+}
+
+std::string remedy_for(int flag) {
+  switch (flag) {
+    case CV_TOO_MUCH_WORK: return "raise the step limit, or loosen --rtol/--atol";
+    case CV_ERR_FAILURE: return "repeated error-test failures (step-size collapse): check for a wire snap or tighten --atol";
+    case CV_CONV_FAILURE: return "Newton did not converge: tighten tolerances, or use --integrator cvode (minimal coordinates)";
+    case CV_PROJFUNC_FAIL:
+    case CV_REPTD_PROJFUNC_ERR: return "the projection onto the constraint did not converge: tighten tolerances or use --integrator ida";
+    default: return "check the scene and the tolerances, or use --integrator cvode";
+  }
+}
+
+}  // namespace
+
+RunResult integrate_index1(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings) {
+  const auto start = std::chrono::steady_clock::now();
+  const bool baumgarte = settings.kind == Integrator::baumgarte;
+  const bool projection = settings.kind == Integrator::projection;
+  if (!baumgarte && !projection && settings.kind != Integrator::index1) {
+    throw std::invalid_argument("integrate_index1: settings.kind must be index1, baumgarte or projection");
+  }
+  if (baumgarte && !(settings.baumgarte_frequency > 0.0 && std::isfinite(settings.baumgarte_frequency))) {
+    throw std::invalid_argument("baumgarte_frequency " + std::to_string(settings.baumgarte_frequency) +
+                                ": not a valid stabilization frequency (valid range (0, inf) rad/s)");
+  }
+  const std::string label(to_string(settings.kind));
+  const int n = equations.full_size();
+  sundials::Context context;
+  sundials::Vector y(2 * n, context.ctx), tolerance(2 * n, context.ctx);
+  auto state = y.map();
+  equations.full_from_minimal(z0, Eigen::VectorXd::Zero(z0.size()), state.head(n), state.tail(n));
+
+  // Tolerances as IDA's: each full coordinate scaled by its minimal counterpart's typical size.
+  const Eigen::VectorXd minimal_scale = equations.coordinate_scale();
+  Eigen::VectorXd full_scale(n), ignore(n);
+  equations.full_from_minimal(minimal_scale, minimal_scale, full_scale, ignore);
+  full_scale = full_scale.cwiseAbs().cwiseMax(Eigen::VectorXd::Constant(n, 1e-2));
+  tolerance.map().head(n) = settings.absolute_tolerance * full_scale;
+  tolerance.map().tail(n) = settings.absolute_tolerance * full_scale;
+
+  const double gain = baumgarte ? settings.baumgarte_frequency : 0.0;
+  Index1Data data(equations, n, gain, gain);
+  std::unique_ptr<void, void (*)(void*)> memory(CVodeCreate(CV_BDF, context.ctx), [](void* p) { CVodeFree(&p); });
+  void* cvode = memory.get();
+  data.cvode = cvode;
+  sundials::Vector error_weights(2 * n, context.ctx);
+  data.error_weights = error_weights.v;
+  sundials::DenseSolver linear(y.v, context.ctx);
+  if (CVodeInit(cvode, index1_rhs, 0.0, y.v) != CV_SUCCESS || CVodeSVtolerances(cvode, settings.relative_tolerance, tolerance.v) != CV_SUCCESS ||
+      CVodeSetUserData(cvode, &data) != CV_SUCCESS || CVodeSetLinearSolver(cvode, linear.solver, linear.matrix) != CV_SUCCESS ||
+      CVodeSetJacFn(cvode, index1_jacobian) != CV_SUCCESS || CVodeSetMaxNumSteps(cvode, settings.max_steps) != CV_SUCCESS ||
+      CVodeRootInit(cvode, 1, wire_root) != CV_SUCCESS || (projection && CVodeSetProjFn(cvode, index1_projection) != CV_SUCCESS)) {
+    throw SolverFailure("CVODE (" + label + ")", "set-up failed", 0.0, "report this as a bug");
+  }
+  CVodeSetNoInactiveRootWarn(cvode);
+
+  RunResult result;
+  Eigen::VectorXd v_dot(n);
+  const auto record = [&](double t) {
+    const auto s = y.map();
+    if (!accelerations(data, t, s.head(n), s.tail(n), v_dot)) {
+      throw SolverFailure("CVODE (" + label + ")", "the mass matrix is not positive definite", t, "check the scene's mass values");
+    }
+    result.time.push_back(t);
+    result.samples.push_back(equations.full_outputs(t, s.head(n), s.tail(n), data.lambda));
+  };
+  sundials::sample_outputs(
+      settings, label.c_str(), CV_ROOT_RETURN, [&](double t_out, double& t) { return CVode(cvode, t_out, y.v, &t, CV_NORMAL); },
+      [&] {
+        int direction = 0;
+        CVodeGetRootInfo(cvode, &direction);
+        return direction;
+      },
+      [&](int flag, double t) {
+        if (!data.model_error.empty()) {
+          throw SolverFailure("CVODE (" + label + ")", "the model failed: " + data.model_error, t,
+                              "check the scene's values; tighten --rtol/--atol");
+        }
+        throw SolverFailure("CVODE (" + label + ")", sundials::flag_name(CVodeGetReturnFlagName(flag)), t, remedy_for(flag));
+      },
+      record, result.wire_events);
+
+  long nfe = 0, nfe_ls = 0;
+  CVodeGetNumSteps(cvode, &result.stats.steps);
+  CVodeGetNumRhsEvals(cvode, &nfe);
+  CVodeGetNumLinRhsEvals(cvode, &nfe_ls);
+  result.stats.function_evaluations = nfe + nfe_ls + data.jacobian_rhs_evaluations;
+  CVodeGetNumJacEvals(cvode, &result.stats.jacobian_evaluations);
+  CVodeGetNumNonlinSolvIters(cvode, &result.stats.newton_iterations);
+  CVodeGetNumErrTestFails(cvode, &result.stats.error_test_failures);
+  CVodeGetNumNonlinSolvConvFails(cvode, &result.stats.convergence_failures);
+  if (projection) CVodeGetNumProjEvals(cvode, &result.stats.projections);
+  result.stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace ffrf::coupling
