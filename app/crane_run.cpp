@@ -79,7 +79,7 @@ std::optional<cases::Scene> load_crane_scene(const std::string& path, const std:
   try {
     cases::Scene scene = cases::load_scene(path);
     if (!scene.has_base()) {
-      fmt::print(stderr, "ffrf {}: error: {}: no time-domain system: the scene has neither a [hull] section (a crane "
+      fmt::print(stderr, "ffrf {}: error: {}: not a crane scene: it has neither a [hull] section (a crane "
                  "needs [hull], [cargo], [wire] and boom.angle/root_x/root_y) nor a [hub]; `ffrf modes` analyses a "
                  "single beam\n", command, path);
       return std::nullopt;

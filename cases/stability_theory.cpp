@@ -16,7 +16,7 @@ Eigen::VectorXd frequencies(const Eigen::MatrixXd& stiffness, const Eigen::Matri
   if (stiffness.rows() == 0) return Eigen::VectorXd(0);
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(stiffness, mass, Eigen::EigenvaluesOnly);
   if (solver.info() != Eigen::Success) {
-    throw coupling::SolverFailure("Eigen generalized eigen solver", "K φ = ω² M φ of the boom did not converge", 0.0,
+    throw coupling::SolverFailure(coupling::FailureKind::model_error, "Eigen generalized eigen solver", "K φ = ω² M φ of the boom did not converge", 0.0,
                                   "check the boom section and mass values");
   }
   return solver.eigenvalues().cwiseMax(0.0).cwiseSqrt();

@@ -47,18 +47,25 @@ class CountingEquations final : public CraneEquations {
   Eigen::VectorXd coordinate_scale() const override { return inner_.coordinate_scale(); }
   CraneOutputs minimal_outputs(double t, ConstRef z, ConstRef z_dot) override { return inner_.minimal_outputs(t, z, z_dot); }
   int full_size() const override { return inner_.full_size(); }
-  void full_from_minimal(ConstRef z, ConstRef z_dot, Ref q, Ref v) const override { inner_.full_from_minimal(z, z_dot, q, v); }
+  void full_from_minimal(double t, ConstRef z, ConstRef z_dot, Ref q, Ref v) const override {
+    inner_.full_from_minimal(t, z, z_dot, q, v);
+  }
   void full_mass_times(ConstRef q, ConstRef a, Ref out) override { inner_.full_mass_times(q, a, out); }
   void full_forces(double t, ConstRef q, ConstRef v, Ref out) override { inner_.full_forces(t, q, v, out); }
-  void constraint(ConstRef q, Ref c) const override { inner_.constraint(q, c); }
+  void constraint(double t, ConstRef q, Ref c) const override { inner_.constraint(t, q, c); }
+  void constraint_time_derivative(double t, Ref c_t) const override { inner_.constraint_time_derivative(t, c_t); }
   void constraint_jacobian(ConstRef q, Eigen::MatrixXd& jacobian) const override { inner_.constraint_jacobian(q, jacobian); }
-  void constraint_rate_terms(ConstRef q, ConstRef v, Ref gamma) const override { inner_.constraint_rate_terms(q, v, gamma); }
+  void constraint_rate_terms(double t, ConstRef q, ConstRef v, Ref gamma) const override {
+    inner_.constraint_rate_terms(t, q, v, gamma);
+  }
   Eigen::MatrixXd full_mass_matrix(ConstRef q) override { return inner_.full_mass_matrix(q); }
   CraneOutputs full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) override {
     return inner_.full_outputs(t, q, v, lambda);
   }
-  double wire_stretch_minimal(ConstRef z) override { return inner_.wire_stretch_minimal(z); }
+  double wire_stretch_minimal(double t, ConstRef z) override { return inner_.wire_stretch_minimal(t, z); }
   double wire_stretch_full(ConstRef q) override { return inner_.wire_stretch_full(q); }
+  bool has_wire() const override { return inner_.has_wire(); }
+  int cargo_offset() const override { return inner_.cargo_offset(); }
   int elastic_size() const override { return inner_.elastic_size(); }
 
  private:
@@ -131,7 +138,7 @@ Eigen::VectorXd stability_seed(CraneEquations& equations, double seed_size) {
 StableStepMeasurement measure_stable_step(CraneEquations& equations, const Eigen::VectorXd& z0, double h0,
                                           const StableStepSearch& search) {
   if (!(h0 > 0.0) || !std::isfinite(h0) || !(search.relative_precision > 0.0)) {
-    throw SolverFailure("ARKODE ERK", "invalid start step " + std::to_string(h0) + " or precision " +
+    throw SolverFailure(FailureKind::setup, "ARKODE ERK", "invalid start step " + std::to_string(h0) + " or precision " +
                                           std::to_string(search.relative_precision), 0.0,
                         "give a start step > 0 and a relative precision > 0");
   }

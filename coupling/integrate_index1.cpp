@@ -42,9 +42,10 @@ struct Index1Data {
   Eigen::MatrixXd mass_inverse_jacobian_t;  // Y = M⁻¹C_qᵀ (nq × 3)
   Eigen::Matrix3d schur;           // S = C_q Y
   Eigen::VectorXd forces, free_acceleration, weights, work;
-  Eigen::Vector3d c, c_dot, gamma, lambda;
+  Eigen::Vector3d c, c_t, c_dot, gamma, lambda;
   long jacobian_rhs_evaluations = 0;
   std::string model_error;  // an exception the model threw inside a callback (never crosses C code)
+  FailureKind model_error_kind = FailureKind::model_error;
 
   Index1Data(CraneEquations& e, int n, double a, double b)
       : equations(&e), size(n), alpha(a), beta(b), jacobian(constraints, n), mass(n), mass_inverse_jacobian_t(n, constraints),
@@ -52,11 +53,13 @@ struct Index1Data {
 };
 
 // C, C_q, Ċ = C_q v and γ at (q, v): the one place the constraint is evaluated for the dynamics.
-void constraint_terms(Index1Data& d, CraneEquations::ConstRef q, CraneEquations::ConstRef v) {
-  d.equations->constraint(q, d.c);
+void constraint_terms(Index1Data& d, double t, CraneEquations::ConstRef q, CraneEquations::ConstRef v) {
+  d.equations->constraint(t, q, d.c);
   d.equations->constraint_jacobian(q, d.jacobian);
+  d.equations->constraint_time_derivative(t, d.c_t);
   d.c_dot.noalias() = d.jacobian * v;
-  d.equations->constraint_rate_terms(q, v, d.gamma);
+  d.c_dot += d.c_t;
+  d.equations->constraint_rate_terms(t, q, v, d.gamma);
 }
 
 // Factorizes M(q) and forms Y = M⁻¹C_qᵀ and S = C_q Y for the current d.jacobian; false if M is not
@@ -71,7 +74,7 @@ bool factorize(Index1Data& d, CraneEquations::ConstRef q) {
 
 // v̇ and λ at (t, q, v): v̇ = M⁻¹Q − Y λ with S λ = C_q M⁻¹Q − (γ − 2αĊ − β²C).
 bool accelerations(Index1Data& d, double t, CraneEquations::ConstRef q, CraneEquations::ConstRef v, CraneEquations::Ref v_dot) {
-  constraint_terms(d, q, v);
+  constraint_terms(d, t, q, v);
   if (!factorize(d, q)) return false;
   d.equations->full_forces(t, q, v, d.forces);
   d.free_acceleration = d.mass.solve(d.forces);
@@ -92,6 +95,7 @@ int index1_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
     return accelerations(*d, t, state.head(n), state.tail(n), rate.tail(n)) ? 0 : 1;
   } catch (const std::exception& error) {
     d->model_error = error.what();
+    d->model_error_kind = model_failure_kind(error);
     return -1;
   }
 }
@@ -118,6 +122,7 @@ int index1_jacobian(sunrealtype t, N_Vector y, N_Vector f_y, SUNMatrix jacobian,
     }
   } catch (const std::exception& error) {
     d->model_error = error.what();
+    d->model_error_kind = model_failure_kind(error);
     return -1;
   }
   d->jacobian_rhs_evaluations += 2 * n;
@@ -133,10 +138,10 @@ void remove_normal_component(Index1Data& d, CraneEquations::Ref x) {
 // Gauss–Newton for min ‖Δq‖_M subject to C(q + Δq) = 0, with M fixed at the step's q: stops when the
 // update's weighted RMS norm over the positions (CVODE's error weights) is below eps (CVODE's epsProj);
 // false if it does not converge.
-bool project_positions(Index1Data& d, CraneEquations::ConstRef q, CraneEquations::Ref q_projected, double eps) {
+bool project_positions(Index1Data& d, double t, CraneEquations::ConstRef q, CraneEquations::Ref q_projected, double eps) {
   q_projected = q;
   for (int iteration = 0; iteration < max_projection_iterations; ++iteration) {
-    d.equations->constraint(q_projected, d.c);
+    d.equations->constraint(t, q_projected, d.c);
     d.equations->constraint_jacobian(q_projected, d.jacobian);
     d.mass_inverse_jacobian_t = d.mass.solve(d.jacobian.transpose());
     d.schur.noalias() = d.jacobian * d.mass_inverse_jacobian_t;
@@ -154,13 +159,20 @@ bool project_positions(Index1Data& d, CraneEquations::ConstRef q, CraneEquations
   return true;
 }
 
-// v onto C_q v = 0 (linear: one M-orthogonal projection at the projected q).
-void project_velocities(Index1Data& d, CraneEquations::Ref v) { remove_normal_component(d, v); }
+// v onto C_q v + C_t = 0 (affine: one M-orthogonal projection at the projected q,
+// v ← v − Y S⁻¹ (C_q v + C_t)).
+void project_velocities(Index1Data& d, double t, CraneEquations::Ref v) {
+  d.equations->constraint_time_derivative(t, d.c_t);
+  d.c_dot.noalias() = d.jacobian * v;
+  d.c_dot += d.c_t;
+  d.work.noalias() = d.mass_inverse_jacobian_t * d.schur.partialPivLu().solve(d.c_dot);
+  v -= d.work;
+}
 
 // CVProjFn: corr = projected y − ycur; err (if given) gets the same linear projection, block by block
 // (the position block against C_q, the velocity block against C_q; the second-order coupling of the
 // velocity constraint to position errors, (C_q v)_q δq, is left out).
-int index1_projection(sunrealtype, N_Vector ycur, N_Vector corr, sunrealtype eps, N_Vector err, void* user) {
+int index1_projection(sunrealtype t, N_Vector ycur, N_Vector corr, sunrealtype eps, N_Vector err, void* user) {
   auto* d = static_cast<Index1Data*>(user);
   const int n = d->size;
   const auto state = sundials::Vector::view(ycur);
@@ -172,11 +184,11 @@ int index1_projection(sunrealtype, N_Vector ycur, N_Vector corr, sunrealtype eps
     d->mass.compute(d->equations->full_mass_matrix(state.head(n)));
     if (d->mass.info() != Eigen::Success) return 1;
     auto q_projected = correction.head(n);
-    if (!project_positions(*d, state.head(n), q_projected, eps)) return 1;
+    if (!project_positions(*d, t, state.head(n), q_projected, eps)) return 1;
     q_projected -= state.head(n);
     auto v_projected = correction.tail(n);
     v_projected = state.tail(n);
-    project_velocities(*d, v_projected);
+    project_velocities(*d, t, v_projected);
     v_projected -= state.tail(n);
     if (err != nullptr) {
       auto error = sundials::Vector::view(err);
@@ -186,6 +198,7 @@ int index1_projection(sunrealtype, N_Vector ycur, N_Vector corr, sunrealtype eps
     return correction.allFinite() ? 0 : 1;
   } catch (const std::exception& error) {
     d->model_error = error.what();
+    d->model_error_kind = model_failure_kind(error);
     return -1;
   }
 }
@@ -225,12 +238,12 @@ RunResult integrate_index1(CraneEquations& equations, const Eigen::VectorXd& z0,
   sundials::Context context;
   sundials::Vector y(2 * n, context.ctx), tolerance(2 * n, context.ctx);
   auto state = y.map();
-  equations.full_from_minimal(z0, Eigen::VectorXd::Zero(z0.size()), state.head(n), state.tail(n));
+  equations.full_from_minimal(0.0, z0, Eigen::VectorXd::Zero(z0.size()), state.head(n), state.tail(n));
 
   // Tolerances as IDA's: each full coordinate scaled by its minimal counterpart's typical size.
   const Eigen::VectorXd minimal_scale = equations.coordinate_scale();
   Eigen::VectorXd full_scale(n), ignore(n);
-  equations.full_from_minimal(minimal_scale, minimal_scale, full_scale, ignore);
+  equations.full_from_minimal(0.0, minimal_scale, minimal_scale, full_scale, ignore);
   full_scale = full_scale.cwiseAbs().cwiseMax(Eigen::VectorXd::Constant(n, 1e-2));
   tolerance.map().head(n) = settings.absolute_tolerance * full_scale;
   tolerance.map().tail(n) = settings.absolute_tolerance * full_scale;
@@ -246,23 +259,27 @@ RunResult integrate_index1(CraneEquations& equations, const Eigen::VectorXd& z0,
   if (CVodeInit(cvode, index1_rhs, 0.0, y.v) != CV_SUCCESS || CVodeSVtolerances(cvode, settings.relative_tolerance, tolerance.v) != CV_SUCCESS ||
       CVodeSetUserData(cvode, &data) != CV_SUCCESS || CVodeSetLinearSolver(cvode, linear.solver, linear.matrix) != CV_SUCCESS ||
       CVodeSetJacFn(cvode, index1_jacobian) != CV_SUCCESS || CVodeSetMaxNumSteps(cvode, settings.max_steps) != CV_SUCCESS ||
+      CVodeSetMaxOrd(cvode, settings.max_order) != CV_SUCCESS ||
       CVodeRootInit(cvode, 1, wire_root) != CV_SUCCESS || (projection && CVodeSetProjFn(cvode, index1_projection) != CV_SUCCESS)) {
-    throw SolverFailure("CVODE (" + label + ")", "set-up failed", 0.0, "report this as a bug");
+    throw SolverFailure(FailureKind::setup, "CVODE (" + label + ")", "set-up failed", 0.0, "report this as a bug");
   }
   CVodeSetNoInactiveRootWarn(cvode);
 
   RunResult result;
+  DivergenceWatch watch(settings.monitor, "CVODE (index-1)");
   Eigen::VectorXd v_dot(n);
   const auto record = [&](double t) {
     const auto s = y.map();
     if (!accelerations(data, t, s.head(n), s.tail(n), v_dot)) {
-      throw SolverFailure("CVODE (" + label + ")", "the mass matrix is not positive definite", t, "check the scene's mass values");
+      throw SolverFailure(FailureKind::mass_not_positive_definite, "CVODE (" + label + ")",
+                          "the mass matrix is not positive definite", t, "check the scene's mass values");
     }
     result.time.push_back(t);
     result.samples.push_back(equations.full_outputs(t, s.head(n), s.tail(n), data.lambda));
+    watch.observe(t, result.samples.back());
   };
-  sundials::sample_outputs(
-      settings, label.c_str(), CV_ROOT_RETURN, [&](double t_out, double& t) { return CVode(cvode, t_out, y.v, &t, CV_NORMAL); },
+  sundials::sample_outputs_keeping_partial(
+      result, settings, label.c_str(), CV_ROOT_RETURN, [&](double t_out, double& t) { return CVode(cvode, t_out, y.v, &t, CV_NORMAL); },
       [&] {
         int direction = 0;
         CVodeGetRootInfo(cvode, &direction);
@@ -270,10 +287,11 @@ RunResult integrate_index1(CraneEquations& equations, const Eigen::VectorXd& z0,
       },
       [&](int flag, double t) {
         if (!data.model_error.empty()) {
-          throw SolverFailure("CVODE (" + label + ")", "the model failed: " + data.model_error, t,
+          throw SolverFailure(data.model_error_kind, "CVODE (" + label + ")", "the model failed: " + data.model_error, t,
                               "check the scene's values; tighten --rtol/--atol");
         }
-        throw SolverFailure("CVODE (" + label + ")", sundials::flag_name(CVodeGetReturnFlagName(flag)), t, remedy_for(flag));
+        throw SolverFailure(sundials::failure_kind(flag, CV_TOO_MUCH_WORK, CV_ERR_FAILURE, CV_CONV_FAILURE),
+                            "CVODE (" + label + ")", sundials::flag_name(CVodeGetReturnFlagName(flag)), t, remedy_for(flag));
       },
       record, result.wire_events);
 

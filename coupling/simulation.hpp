@@ -46,7 +46,7 @@ struct IntegratorSettings {
   // eigenvalues (−ω_b, double) stay well inside what BDF resolves at the motion's step sizes.
   double baumgarte_frequency = 10.0;
   bool progress = false;             // print progress on stderr (callers set it for terminals only)
-  MonitorLimits monitor;             // the failure detectors' bounds (coupling/run_monitor.hpp)
+  MonitorLimits monitor = {};        // the failure detectors' bounds (coupling/run_monitor.hpp)
 };
 
 struct SolverStats {
