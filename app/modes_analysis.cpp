@@ -1,6 +1,8 @@
 // Assembly, eigen solve, classification and the convergence study for `ffrf modes`.
 #include "app/modes_analysis.hpp"
 
+#include "cases/crane_builder.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -24,7 +26,7 @@ double modes_shift(const fem::BeamMesh& mesh, fem::Boundary boundary) {
   return -s.bending_rigidity() / (s.mass_per_length * std::pow(mesh.length, 4));
 }
 
-double spin_hub_radius(const cases::Scene& /*scene*/) { return 0.0; }
+double spin_hub_radius(const cases::Scene& scene) { return cases::centrifugal_hub_radius(scene); }
 
 int free_dof_count(const fem::BeamMesh& mesh, fem::Boundary boundary) {
   return fem::make_dof_map(mesh, boundary).free_count();

@@ -36,9 +36,9 @@ struct ModesResult {
 double modes_shift(const fem::BeamMesh& mesh, fem::Boundary boundary);
 
 // Distance r [m] from the spin axis to the boom root on the beam axis, for `--spin` and
-// `--spin-range` (the centrifugal force N(x)/Ω² = ρA [r (L − x) + (L² − x²)/2]). The scene has no
-// hub yet: 0 (axis through the root). The lead wires it to scene.hub->radius at merge; everything
-// downstream takes the hub radius as a parameter.
+// `--spin-range` (the centrifugal force N(x)/Ω² = ρA [r (L − x) + (L² − x²)/2]): hub.radius of a hub
+// scene, the same r the time-domain model uses for a hull crane (cases::centrifugal_hub_radius), 0
+// for a single beam. Everything downstream takes the hub radius as a parameter.
 double spin_hub_radius(const cases::Scene& scene);
 
 // Free DOFs of the mesh under the boundary condition.
