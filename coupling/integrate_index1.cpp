@@ -265,11 +265,23 @@ RunResult integrate_index1(CraneEquations& equations, const Eigen::VectorXd& z0,
   }
   CVodeSetNoInactiveRootWarn(cvode);
 
+  // Projection and the output times: CVODE projects the state at the end of each step, not the values
+  // it interpolates at an output time in between. When the clamp fixes the whole frame (a rigid boom
+  // on a driven hub) the projected error estimate vanishes and steps grow without bound, so the
+  // interpolant drifts off the moving manifold C(q, t) = 0: the projection's steps are capped at the
+  // output interval and every output state is projected as well (docs/theory.md §10).
+  if (projection) CVodeSetMaxStep(cvode, settings.output_interval);
+  sundials::Vector projected_output(2 * n, context.ctx), output_correction(2 * n, context.ctx);
+
   RunResult result;
   DivergenceWatch watch(settings.monitor, "CVODE (index-1)");
   Eigen::VectorXd v_dot(n);
   const auto record = [&](double t) {
-    const auto s = y.map();
+    projected_output.map() = y.map();
+    if (projection && t > 0.0 && index1_projection(t, y.v, output_correction.v, 1e-3, nullptr, &data) == 0) {
+      projected_output.map() += output_correction.map();
+    }
+    const auto s = projected_output.map();
     if (!accelerations(data, t, s.head(n), s.tail(n), v_dot)) {
       throw SolverFailure(FailureKind::mass_not_positive_definite, "CVODE (" + label + ")",
                           "the mass matrix is not positive definite", t, "check the scene's mass values");

@@ -72,7 +72,7 @@ void DivergenceWatch::observe(double t, const CraneOutputs& sample) {
   }
   if (limits_.boom_length <= 0.0) return;
   const double bound = limits_.deflection_limit * limits_.boom_length;
-  if (deflection < 0.01 * bound) {
+  if (deflection < 0.1 * bound) {
     times_.clear();
     log_deflections_.clear();
     return;
@@ -81,7 +81,7 @@ void DivergenceWatch::observe(double t, const CraneOutputs& sample) {
   log_deflections_.push_back(std::log(deflection));
   if (deflection <= bound) return;
   const double rate = times_.size() >= 3 ? slope(times_, log_deflections_)
-                                         : std::log(deflection / (0.01 * bound)) / std::max(t - times_.front(), 1e-12);
+                                         : std::log(deflection / (0.1 * bound)) / std::max(t - times_.front(), 1e-12);
   char cause[320];
   std::snprintf(cause, sizeof cause,
                 "the boom tip deflection %.3g m passed the bound %.3g m (%.3g of the boom length), growing at "

@@ -30,7 +30,8 @@ struct MonitorLimits {
 };
 
 // Watches each output sample; throws SolverFailure(divergence) with the growth rate σ of the
-// deflection (least-squares slope of ln|δ| over the samples since |δ| passed 1 % of the bound)
+// deflection (least-squares slope of ln|δ| over its last decade: the samples since |δ| passed 10 % of
+// the bound, so the rate is the one at detection)
 // when |δ| exceeds deflection_limit · L, or when a sample is not finite.
 class DivergenceWatch {
  public:

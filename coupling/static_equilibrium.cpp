@@ -46,9 +46,21 @@ int static_forces(N_Vector u, N_Vector f, void* user) {
 
 }  // namespace
 
+// KINSOL limits a Newton step to 1000 × ‖D_u u0‖ by default: from a zero guess (a boom on a held hub
+// without cargo, all coordinates elastic) that cap stops the one long step this nearly linear problem
+// needs (KIN_MXNEWT_5X_EXCEEDED). The scaled step is bounded instead by 1e8 typical sizes.
+constexpr double kMaxScaledNewtonStep = 1e8;
+
 StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eigen::VectorXd& guess, double tolerance) {
   const auto start = std::chrono::steady_clock::now();
   const int n = equations.minimal_size();
+  if (n == 0) {  // fully prescribed (a rigid boom on a held or driven hub): nothing to solve
+    StaticEquilibrium rest;
+    rest.z = Eigen::VectorXd(0);
+    rest.outputs = equations.minimal_outputs(0.0, rest.z, rest.z);
+    rest.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return rest;
+  }
   sundials::Context context;
   sundials::Vector u(n, context.ctx), u_scale(n, context.ctx), f_scale(n, context.ctx);
   u.map() = guess;
@@ -62,6 +74,7 @@ StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eige
   if (KINInit(kinsol, static_forces, u.v) != KIN_SUCCESS || KINSetErrHandlerFn(kinsol, quiet_errors, nullptr) != KIN_SUCCESS || KINSetUserData(kinsol, &data) != KIN_SUCCESS ||
       KINSetLinearSolver(kinsol, linear.solver, linear.matrix) != KIN_SUCCESS ||
       KINSetFuncNormTol(kinsol, tolerance) != KIN_SUCCESS || KINSetScaledStepTol(kinsol, 1e-14) != KIN_SUCCESS ||
+      KINSetMaxNewtonStep(kinsol, kMaxScaledNewtonStep) != KIN_SUCCESS ||
       KINSetMaxSetupCalls(kinsol, 1) != KIN_SUCCESS || KINSetNumMaxIters(kinsol, 200) != KIN_SUCCESS) {
     throw SolverFailure(FailureKind::setup, "KINSOL", "set-up failed", 0.0, "report this as a bug");
   }
