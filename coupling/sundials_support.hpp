@@ -89,13 +89,24 @@ class Progress {
 // solver to each output time. `advance(t_out, t)` calls the solver and returns its flag (t: the
 // time reached); on `root_return` the wire crossed its unstretched length and `root_direction()`
 // (< 0: going slack) is recorded as an event and the solver continues; a negative flag goes to
-// `fail(flag, t)`, which throws. `record(t)` samples the outputs at t.
+// `fail(flag, t)`, which throws. `record(t)` samples the outputs at t; a mass matrix that is not
+// positive definite there (the outputs solve for the accelerations, outside the solver's callbacks,
+// first at t = 0) is the SolverFailure mass_not_positive_definite, as inside the callbacks.
 template <class Advance, class RootDirection, class Fail, class Record>
 void sample_outputs(const IntegratorSettings& settings, const char* label, int root_return, Advance advance,
                     RootDirection root_direction, Fail fail, Record record, std::vector<WireEvent>& events) {
   Progress progress(settings.progress, settings.duration, label);
+  const auto sample = [&](double t) {
+    try {
+      record(t);
+    } catch (const MassMatrixError& error) {
+      throw SolverFailure(FailureKind::mass_not_positive_definite, label,
+                          std::string("the model failed: ") + error.what(), t,
+                          "check the scene's masses and added masses (a negative or too small inertia)");
+    }
+  };
   try {
-    record(0.0);
+    sample(0.0);
     const long outputs = std::lround(settings.duration / settings.output_interval);
     double t = 0.0;
     for (long k = 1; k <= outputs; ++k) {
@@ -108,7 +119,7 @@ void sample_outputs(const IntegratorSettings& settings, const char* label, int r
         if (flag < 0) fail(flag, t);
         break;
       }
-      record(t_out);
+      sample(t_out);
       progress.update(t_out);
     }
   } catch (...) {
