@@ -9,7 +9,7 @@
 // Point forces by virtual work (eq. 13), gravity from V = −gᵀ∫ρr, elastic force −Kη (eq. 16)
 // and stiffness-proportional structural damping −βKη̇. Optional geometric (stress) stiffening adds
 // −(K_σ + θ̇² K_c)η: K_σ the geometric stiffness of a constant reference axial force (static
-// prestress), K_c that of the centrifugal axial force per unit θ̇² (docs/theory.md §9). Derivation: docs/theory.md §2; checked
+// prestress), K_c that of the centrifugal axial force per unit θ̇² (docs/theory.md §9, §11). Derivation: docs/theory.md §2; checked
 // against the independent sympy derivation tests/coupling/one_element_reference.hpp.
 // A rigid body is the same body with zero elastic coordinates.
 #pragma once
