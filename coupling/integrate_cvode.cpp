@@ -49,30 +49,19 @@ int ode_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
 int ode_jacobian(sunrealtype t, N_Vector y, N_Vector f_y, SUNMatrix jacobian, void* user, N_Vector work_y, N_Vector work_f,
                  N_Vector) {
   auto* data = static_cast<OdeData*>(user);
-  const auto state = sundials::Vector::view(y);
-  const auto rate = sundials::Vector::view(f_y);
-  auto shifted = sundials::Vector::view(work_y);
-  auto shifted_rate = sundials::Vector::view(work_f);
-  const int n = data->size;
-  shifted = state;
   try {
-    for (int j = 0; j < 2 * n; ++j) {
-      const double delta = 1e-7 * std::max(std::abs(state(j)), 1.0);
-      shifted(j) = state(j) + delta;
-      shifted_rate.head(n) = shifted.tail(n);
-      data->equations->minimal_accelerations(t, shifted.head(n), shifted.tail(n), shifted_rate.tail(n));
-      shifted(j) = state(j);
-      if (!shifted_rate.allFinite()) return 1;
-      sunrealtype* column = SUNDenseMatrix_Column(jacobian, j);
-      for (int i = 0; i < 2 * n; ++i) column[i] = (shifted_rate(i) - rate(i)) / delta;
-    }
+    const int flag = sundials::second_order_jacobian(t, y, f_y, jacobian, work_y, work_f,
+                                                     [data](double s, auto x, auto x_dot, auto a) {
+                                                       data->equations->minimal_accelerations(s, x, x_dot, a);
+                                                       return true;
+                                                     });
+    if (flag == 0) data->jacobian_rhs_evaluations += 2 * data->size;
+    return flag;
   } catch (const std::exception& error) {
     data->model_error = error.what();
     data->model_error_kind = model_failure_kind(error);
     return -1;
   }
-  data->jacobian_rhs_evaluations += 2 * n;
-  return 0;
 }
 
 int wire_root(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {

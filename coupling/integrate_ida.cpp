@@ -61,9 +61,9 @@ int wire_root(sunrealtype, N_Vector y, N_Vector, sunrealtype* g, void* user) {
   return 0;
 }
 
-// λ from the augmented system [M C_qᵀ; C_q 0][v̇; λ] = [Q; γ] at (t, q, v).
-void consistent_multipliers(CraneEquations& equations, DaeData& d, double t, CraneEquations::ConstRef q,
-                            CraneEquations::ConstRef v, Eigen::VectorXd& lambda) {
+// v̇ and λ from the augmented system [M C_qᵀ; C_q 0][v̇; λ] = [Q; γ] at (t, q, v).
+void consistent_accelerations(CraneEquations& equations, DaeData& d, double t, CraneEquations::ConstRef q,
+                              CraneEquations::ConstRef v, CraneEquations::Ref v_dot, CraneEquations::Ref lambda) {
   const int n = d.size;
   Eigen::MatrixXd augmented = Eigen::MatrixXd::Zero(n + constraints, n + constraints);
   augmented.topLeftCorner(n, n) = equations.full_mass_matrix(q);
@@ -76,7 +76,9 @@ void consistent_multipliers(CraneEquations& equations, DaeData& d, double t, Cra
   Eigen::Vector3d gamma;
   equations.constraint_rate_terms(t, q, v, gamma);
   rhs.tail(constraints) = gamma;
-  lambda = augmented.partialPivLu().solve(rhs).tail(constraints);
+  const Eigen::VectorXd solution = augmented.partialPivLu().solve(rhs);
+  v_dot = solution.head(n);
+  lambda = solution.tail(constraints);
 }
 
 std::string remedy_for(int flag) {
@@ -105,24 +107,8 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
   s.setZero();
   s_dot.setZero();
   equations.full_from_minimal(0.0, z0, Eigen::VectorXd::Zero(z0.size()), s.head(n), s.segment(n, n));
-  {
-    const auto q = s.head(n), v = s.segment(n, n);
-    Eigen::MatrixXd augmented = Eigen::MatrixXd::Zero(n + constraints, n + constraints);
-    augmented.topLeftCorner(n, n) = equations.full_mass_matrix(q);
-    equations.constraint_jacobian(q, data.jacobian);
-    augmented.topRightCorner(n, constraints) = data.jacobian.transpose();
-    augmented.bottomLeftCorner(constraints, n) = data.jacobian;
-    Eigen::VectorXd rhs(n + constraints);
-    equations.full_forces(0.0, q, v, data.forces);
-    rhs.head(n) = data.forces;
-    Eigen::VectorXd gamma(constraints);
-    equations.constraint_rate_terms(0.0, q, v, gamma);
-    rhs.tail(constraints) = gamma;
-    const Eigen::VectorXd solution = augmented.partialPivLu().solve(rhs);
-    s_dot.segment(n, n) = solution.head(n);
-    s.segment(2 * n, constraints) = solution.tail(constraints);
-    s_dot.head(n) = v;
-  }
+  consistent_accelerations(equations, data, 0.0, s.head(n), s.segment(n, n), s_dot.segment(n, n), s.segment(2 * n, constraints));
+  s_dot.head(n) = s.segment(n, n);
 
   // Tolerances and the differential/algebraic split.
   const Eigen::VectorXd minimal_scale = equations.coordinate_scale();
@@ -150,13 +136,13 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
 
   RunResult result;
   DivergenceWatch watch(settings.monitor, "IDA");
-  Eigen::VectorXd lambda(constraints);
+  Eigen::VectorXd lambda(constraints), v_dot(n);
   const auto record = [&](double t) {
     const auto state = y.map();
     // λ at the output time from the state, not IDA's interpolant of the algebraic λ: λ is left out of
     // the error test, and where the differential states are polynomials in t (a hub spinning at a
     // constant rate) IDA's steps grow long while the reaction still turns with the hub.
-    consistent_multipliers(equations, data, t, state.head(n), state.segment(n, n), lambda);
+    consistent_accelerations(equations, data, t, state.head(n), state.segment(n, n), v_dot, lambda);
     result.time.push_back(t);
     result.samples.push_back(equations.full_outputs(t, state.head(n), state.segment(n, n), lambda));
     watch.observe(t, result.samples.back());

@@ -103,30 +103,17 @@ int index1_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
 int index1_jacobian(sunrealtype t, N_Vector y, N_Vector f_y, SUNMatrix jacobian, void* user, N_Vector work_y, N_Vector work_f,
                     N_Vector) {
   auto* d = static_cast<Index1Data*>(user);
-  const auto state = sundials::Vector::view(y);
-  const auto rate = sundials::Vector::view(f_y);
-  auto shifted = sundials::Vector::view(work_y);
-  auto shifted_rate = sundials::Vector::view(work_f);
-  const int n = d->size;
-  shifted = state;
   try {
-    for (int j = 0; j < 2 * n; ++j) {
-      const double delta = 1e-7 * std::max(std::abs(state(j)), 1.0);
-      shifted(j) = state(j) + delta;
-      shifted_rate.head(n) = shifted.tail(n);
-      const bool ok = accelerations(*d, t, shifted.head(n), shifted.tail(n), shifted_rate.tail(n));
-      shifted(j) = state(j);
-      if (!ok || !shifted_rate.allFinite()) return 1;
-      sunrealtype* column = SUNDenseMatrix_Column(jacobian, j);
-      for (int i = 0; i < 2 * n; ++i) column[i] = (shifted_rate(i) - rate(i)) / delta;
-    }
+    const int flag = sundials::second_order_jacobian(
+        t, y, f_y, jacobian, work_y, work_f,
+        [d](double s, auto q, auto v, auto v_dot) { return accelerations(*d, s, q, v, v_dot); });
+    if (flag == 0) d->jacobian_rhs_evaluations += 2 * d->size;
+    return flag;
   } catch (const std::exception& error) {
     d->model_error = error.what();
     d->model_error_kind = model_failure_kind(error);
     return -1;
   }
-  d->jacobian_rhs_evaluations += 2 * n;
-  return 0;
 }
 
 // x minus its M-orthogonal component normal to C_q x = 0: x ← x − Y S⁻¹ C_q x.

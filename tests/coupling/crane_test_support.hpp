@@ -62,6 +62,17 @@ inline ConservativeCrane conservative_crane() {
   return crane;
 }
 
+// The spin-up benchmark's beam (cases/spin_up_beam.toml) on a hub spinning at a constant rate from
+// rest: N elements, the given stiffening, no gravity.
+inline cases::Scene constant_spin_beam(double spin_rate, cases::Stiffening stiffening, int elements) {
+  cases::Scene scene = cases::load_scene(FFRF_SOURCE_DIR "/cases/spin_up_beam.toml");
+  scene.hub->motion = cases::HubMotion::constant_spin;
+  scene.hub->spin_rate = spin_rate;
+  scene.boom.mesh.element_count = elements;
+  scene.boom.stiffening = stiffening;
+  return scene;
+}
+
 // Mean period of a signal from its upward mean crossings (linear interpolation between samples).
 inline double mean_period(const std::vector<double>& t, const std::vector<double>& x) {
   double mean = 0.0;

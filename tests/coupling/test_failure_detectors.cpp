@@ -158,31 +158,16 @@ TEST(FailureDetectors, UnstabilizedIndexOneDriftsAndBaumgarteDoesNot) {
 }
 
 // A 10 m Simo–Vu-Quoc beam spun at a constant Ωs = 6 rad/s, above ω1 = 3.80 rad/s, no stiffening.
-cases::Scene spinning_beam(const char* stiffening) {
-  return cases::load_scene_text(std::string(R"(
-[scene]
-name = "constant spin"
-[boom]
-length = 10.0
-youngs_modulus = 7.0e10
-area = 4.0e-4
-second_moment = 2.0e-7
-mass_per_length = 1.2
-elements = 10
-stiffening = ")") + stiffening + R"("
-[hub]
-motion = "constant-spin"
-spin_rate = 6.0
-[environment]
-gravity = 0.0
-[simulation]
-duration = 10.0
-output_interval = 0.01
-)", "constant_spin.toml");
+cases::Scene spinning_beam() {
+  cases::Scene scene = test::constant_spin_beam(6.0, cases::Stiffening::none, 10);
+  scene.simulation.duration = 10.0;
+  scene.simulation.output_interval = 0.01;
+  scene.simulation.deflection_limit = 0.2;
+  return scene;
 }
 
 TEST(FailureDetectors, DivergenceWatchStopsWithAFinitePartialResult) {
-  const cases::Scene scene = spinning_beam("none");
+  const cases::Scene scene = spinning_beam();
   auto equations = cases::build_crane(scene, {cases::BoomKind::nodal, 10, 0, false});
   coupling::IntegratorSettings settings;
   settings.duration = 10.0;

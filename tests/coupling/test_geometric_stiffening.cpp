@@ -92,25 +92,11 @@ TEST(GeometricStiffening, StaticPrestressGivesTheBeamColumnDeflection) {
               nodal_static / beam_column - 1.0, modal_static / beam_column - 1.0);
 }
 
-// The Simo–Vu-Quoc beam (cases/spin_up_beam.toml) at a constant spin Ωs, no gravity.
-cases::Scene constant_spin(double spin_rate, const char* stiffening) {
-  return cases::load_scene_text(std::string(R"(
-[scene]
-name = "constant spin"
-[boom]
-length = 10.0
-youngs_modulus = 7.0e10
-area = 4.0e-4
-second_moment = 2.0e-7
-mass_per_length = 1.2
-elements = 4
-stiffening = ")") + stiffening + R"("
-[hub]
-motion = "constant-spin"
-spin_rate = )" + std::to_string(spin_rate) + R"(
-[environment]
-gravity = 0.0
-)", "constant_spin.toml");
+// The Simo–Vu-Quoc beam (cases/spin_up_beam.toml) at a constant spin Ωs, no gravity, N = 4.
+cases::Scene constant_spin(double spin_rate, cases::Stiffening stiffening) {
+  cases::Scene scene = test::constant_spin_beam(spin_rate, stiffening, 4);
+  scene.simulation.deflection_limit = 0.2;
+  return scene;
 }
 
 coupling::IntegratorSettings spin_settings(const cases::Scene& scene) {
@@ -124,7 +110,7 @@ coupling::IntegratorSettings spin_settings(const cases::Scene& scene) {
 
 TEST(GeometricStiffening, CentrifugalStiffeningPreventsTheSpinDivergence) {
   const double spin = 6.0;
-  const cases::Scene soft = constant_spin(spin, "none");
+  const cases::Scene soft = constant_spin(spin, cases::Stiffening::none);
   const double omega1 = fem::analytic_bending_modes(soft.boom.mesh, fem::Boundary::clamped_free, 1).front().angular_frequency;
   ASSERT_GT(spin, omega1);
   const double sigma = std::sqrt(spin * spin - omega1 * omega1);
@@ -140,7 +126,7 @@ TEST(GeometricStiffening, CentrifugalStiffeningPreventsTheSpinDivergence) {
       EXPECT_NEAR(measured / sigma, 1.0, 0.1) << failure.what();
     }
   }
-  const cases::Scene stiff = constant_spin(spin, "centrifugal");
+  const cases::Scene stiff = constant_spin(spin, cases::Stiffening::centrifugal);
   auto equations = cases::build_crane(stiff, {cases::BoomKind::nodal, 4, 0, false});
   const coupling::IntegratorSettings settings = spin_settings(stiff);
   const coupling::RunResult run = coupling::integrate(*equations, equations->initial_guess(), settings);
