@@ -28,6 +28,7 @@ struct RecommendOptions {
   std::string tolerance = "1%";
   std::string outputs;  // empty: by scene kind
   std::optional<double> duration;
+  ReferenceOptions reference;
   bool json = false;
   std::string out;
 };
@@ -113,6 +114,8 @@ int run_recommend(const RecommendOptions& options) {
     return bad_input(fmt::format("--duration {}: shorter than one output interval of the scene ({} s) (valid range [{}, inf) s)",
                                  request.duration, scene->simulation.output_interval, scene->simulation.output_interval));
   }
+  if (const auto error = reference_options_error(options.reference)) return bad_input(*error);
+  request.reference = options.reference;
   std::optional<StagedDirectory> out;
   if (!options.out.empty()) out.emplace(options.out, "recommendation.json");
   const bool terminal = ::isatty(STDERR_FILENO) != 0;
@@ -156,6 +159,7 @@ Command add_recommend_command(CLI::App& parent) {
                   "Comma-separated outputs the tolerance applies to (default: cargo_heave,cargo_pitch,crane_heave,"
                   "crane_pitch,wire_tension,joint_moment for a crane; tip_deflection for a hub)");
   sub->add_option("--duration", options->duration, "Simulated time [s] of every run (default: simulation.duration of the scene)");
+  add_reference_options(*sub, options->reference);
   sub->add_flag("--json", options->json, "Print the JSON report on stdout instead of the text report");
   sub->add_option("--out", options->out, "Write recommendation.md and recommendation.json into this directory");
   return {sub, [options] { return run_recommend(*options); }};

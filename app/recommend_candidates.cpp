@@ -187,9 +187,8 @@ Recommendation recommend(const cases::Scene& scene, const RecommendRequest& requ
   rec.reference_scene.boom.stiffening = rec.reasoning.reference_stiffening;
   const cases::Scene& s = rec.reference_scene;
   tell("converged reference (nodal, refined level by level) ...");
-  ReferenceOptions options;
-  options.bound = request.tolerance / 10.0;
-  options.start_rtol = std::min(1e-6, rec.reasoning.relative_tolerance / 10.0);
+  ReferenceOptions options = request.reference;
+  options.start_rtol = std::min(options.start_rtol, rec.reasoning.relative_tolerance / 10.0);
   rec.reference = compute_reference(s, options, request.duration);
   rec.reference_state_size = static_cast<int>(2 * cases::build_crane(s, rec.reference.choice)->initial_guess().size());
   rec.candidates = candidate_ladder(s, rec.reasoning);

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "app/crane_reference.hpp"
 #include "app/recommend_reasoning.hpp"
 #include "cases/reference_model.hpp"
 #include "coupling/simulation.hpp"
@@ -47,6 +48,7 @@ struct RecommendRequest {
   double tolerance = 0.01;
   std::vector<coupling::OutputChannel> outputs;
   double duration = 0.0;
+  ReferenceOptions reference;  // its first level's rtol is tightened to a tenth of the candidates'
 };
 
 struct Recommendation {
