@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   std::vector<Command> commands{add_check_command(app), add_modes_command(app), add_run_command(app),
                                 add_compare_command(app), add_sweep_command(app),
+                                add_stability_command(app),
                                 add_scene_reference_command(app)};
   try {
     app.parse(argc, argv);
