@@ -19,7 +19,8 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    return app.exit(error);
+    // --help and --version exit 0; every other parse error (unknown option, missing argument) is bad input.
+    return app.exit(error) == 0 ? exit_ok : exit_bad_input;
   }
   for (const Command& command : commands) {
     if (!command.subcommand->parsed()) continue;

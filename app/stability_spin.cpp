@@ -31,7 +31,7 @@ struct SpinRun {
   std::vector<double> time, deflection;  // tip transverse deflection [m] (up to the failure)
   std::optional<coupling::Detection> failure;
   double max_deflection = 0.0;
-  std::string label() const { return fmt::format("{}, {}", choice.label(), stiffened ? "centrifugal" : "no stiffening"); }
+  std::string label() const { return stiffened ? choice.label() : choice.label() + ", no stiffening"; }
 };
 
 double spin_rate_at(const cases::Hub& hub, double spin, double t) {
@@ -164,7 +164,7 @@ StabilitySection spin_section(const cases::Scene& scene, const StabilityOptions&
         cell.extra = {{"spin_rad_per_s", run.spin},
                       {"spin_rate_at_detection_rad_per_s", rate},
                       {"omega1_rad_per_s", omega1},
-                      {"quasi_static_growth_rate_per_s", rate > omega1 ? std::sqrt(rate * rate - omega1 * omega1) : 0.0}};
+                      {"softening_factor_at_detection", 1.0 - rate * rate / (omega1 * omega1)}};
         cell.detail += fmt::format("; Ω(t) = {} rad/s at detection", shown(rate));
       } else {
         cell = {run.label(), column, true, "bounded", NAN, run.max_deflection, "m", "max |tip transverse deflection|",
@@ -201,27 +201,36 @@ StabilitySection spin_section(const cases::Scene& scene, const StabilityOptions&
   std::string script = campbell_script(campbell, png_terminal());
   std::string marks;
   for (double spin : spins) marks += fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dt 4 lc rgb 'gray40'\n", spin);
-  script.insert(script.find("plot "), marks);
+  script.insert(script.rfind("\nplot ") + 1, marks);
   out.write("campbell.csv", campbell_csv(campbell));
   out.write("campbell.gp", script);
   run_gnuplot(out.staging(), "campbell.gp");
   section.charts = {"spin_tip_deflection.png", "campbell.png"};
 
   int diverged_plain = 0, diverged_stiff = 0;
-  double first_divergent = INFINITY;
+  double first_divergent = INFINITY, lowest_rate = INFINITY, highest_rate = 0.0;
   for (const SpinRun& run : runs) {
     if (!run.failure) continue;
     (run.stiffened ? diverged_stiff : diverged_plain)++;
-    if (!run.stiffened) first_divergent = std::min(first_divergent, run.spin);
+    if (run.stiffened) continue;
+    first_divergent = std::min(first_divergent, run.spin);
+    const double rate = spin_rate_at(hub, run.spin, run.failure->time);
+    lowest_rate = std::min(lowest_rate, rate);
+    highest_rate = std::max(highest_rate, rate);
   }
+  section.numbers.emplace_back("unstiffened_divergent_runs", diverged_plain);
+  section.numbers.emplace_back("stiffened_divergent_runs", diverged_stiff);
   section.finding = fmt::format(
-      "Without stiffening {} of {} runs fail ({} with stiffening): the first divergent spin is Ωs = {} rad/s, above "
-      "ω1 = {} rad/s — the linear floating frame keeps −Ω²M and drops the centrifugal tension, so the first bending "
-      "mode has ω² = ω1² − Ω² and grows at σ = √(Ω² − ω1²) once Ω(t) passes ω1 (the Campbell diagram's dotted branch "
-      "crossing zero). With the centrifugal geometric stiffness the frequencies rise with Ω instead and every run "
-      "stays bounded. Stiffened at Ωs = {} rad/s, the modal k=4+static boom follows the nodal one to "
+      "Without stiffening {} of {} runs fail ({} with stiffening); the first divergent spin is Ωs = {} rad/s, above "
+      "ω1 = {} rad/s. The linear floating frame keeps the softening −Ω²M and drops the centrifugal tension, so its "
+      "bending stiffness is K(1 − Ω²/ω1²) in the first mode: the deflection under the spin-up torque is amplified by "
+      "1/(1 − Ω²/ω1²) and the watch fires already during the spin-up, at Ω(t) = {}–{} rad/s ({}–{} ω1; the larger "
+      "Ωs, the larger the torque and the earlier); past ω1 the mode would grow at σ = √(Ω² − ω1²) (the Campbell "
+      "diagram's dotted branch below zero). With the centrifugal geometric stiffness the frequencies rise with Ω and "
+      "every run stays bounded. Stiffened at Ωs = {} rad/s, the modal k=4+static boom follows the nodal one to "
       "max|δ_nodal − δ_modal| / max|δ_nodal| = {}. Remedy: model the stiffening (boom.stiffening = centrifugal).",
-      diverged_plain, runs.size() / 2, diverged_stiff, shown(first_divergent), shown(omega1), chart_spin, shown(spread, 3));
+      diverged_plain, runs.size() / 2, diverged_stiff, shown(first_divergent), shown(omega1), shown(lowest_rate, 3),
+      shown(highest_rate, 3), shown(lowest_rate / omega1, 2), shown(highest_rate / omega1, 2), chart_spin, shown(spread, 3));
   return section;
 }
 

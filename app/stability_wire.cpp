@@ -123,9 +123,11 @@ StabilitySection wire_section(const cases::Scene& scene, const StabilityOptions&
       continue;
     }
     const double static_tension = wire.run->statics.outputs.wire_tension;
+    constexpr std::size_t listed = 3;  // in the table; summary.json has every one
     std::string intervals;
     for (const coupling::SlackInterval& slack : wire.slack) {
-      intervals += fmt::format("{}{}–{} s", intervals.empty() ? "" : ", ", shown(slack.start),
+      if (&slack - wire.slack.data() == listed) intervals += fmt::format(", … ({} in all)", wire.slack.size());
+      if (&slack - wire.slack.data() < static_cast<std::ptrdiff_t>(listed)) intervals += fmt::format("{}{}–{} s", intervals.empty() ? "" : ", ", shown(slack.start),
                                std::isfinite(slack.end) ? shown(slack.end) : "end");
       StabilityCell cell{label, "slack", false, std::string(coupling::to_string(coupling::FailureKind::wire_slack)),
                          slack.start, std::isfinite(slack.end) ? slack.end - slack.start : NAN, "s",
@@ -134,7 +136,8 @@ StabilitySection wire_section(const cases::Scene& scene, const StabilityOptions&
     }
     std::string peaks;
     for (const coupling::SnapLoad& snap : wire.snaps) {
-      peaks += fmt::format("{}{} MN at {} s (× {})", peaks.empty() ? "" : ", ", shown(snap.peak_tension / 1e6),
+      if (&snap - wire.snaps.data() == listed) peaks += fmt::format(", … ({} in all)", wire.snaps.size());
+      if (&snap - wire.snaps.data() < static_cast<std::ptrdiff_t>(listed)) peaks += fmt::format("{}{} MN at {} s (× {})", peaks.empty() ? "" : ", ", shown(snap.peak_tension / 1e6),
                            shown(snap.peak_time), shown(snap.ratio, 3));
       StabilityCell cell{label, "snap", false, std::string(coupling::to_string(coupling::FailureKind::snap_load)),
                          snap.time, snap.peak_tension, "N",
