@@ -26,7 +26,7 @@ std::string chart_script(const std::vector<DriftRun>& runs, double limit, const 
   std::string gp = fmt::format(
       "set terminal {} size 900,560\nset output 'constraint_drift.png'\nset datafile separator ','\n"
       "set title {}\nset xlabel 'time [s]'\nset ylabel '|C| [m]'\nset logscale y\nset format y '10^{{%L}}'\n"
-      "set key outside right\nset grid\n",
+      "set key below\nset grid\n",
       png_terminal(), gnuplot_quoted(title));
   gp += "plot ";
   int column = 2;

@@ -31,7 +31,7 @@ const char* shade_colours[] = {"#f4a582", "#92c5de"};
 std::string tension_script(const std::vector<WireRun>& runs, const std::string& title) {
   std::string gp = fmt::format(
       "set terminal {} size 1000,560\nset output 'wire_tension.png'\nset datafile separator ','\n"
-      "set title {} noenhanced\nset xlabel 'time [s]'\nset ylabel 'wire tension [MN]'\nset key outside right\nset grid\n"
+      "set title {} noenhanced\nset xlabel 'time [s]'\nset ylabel 'wire tension [MN]'\nset key below\nset grid\n"
       "set style fill transparent solid 0.35 noborder\n",
       png_terminal(), gnuplot_quoted(title));
   for (std::size_t i = 0; i < runs.size(); ++i) {
