@@ -78,7 +78,7 @@ StabilitySection explicit_step_section(const cases::Scene& scene, const Stabilit
       "The explicit method is stable only below a step set by the fastest eigenvalue the model carries: from {} s "
       "({}) down to {} s ({}); the measured steps sit at the theory (the ratio columns). Refining the boom raises "
       "ω_max (the axial and bending frequencies of the shortest element), so the limit falls as β_I/ω_max for an "
-      "undamped boom and faster, ≈ 2/(β ω_max²), when stiffness-proportional damping overdamps the top modes — the "
+      "undamped boom and faster, ≈ 2.785/(β ω_max²), when stiffness-proportional damping overdamps the top modes — the "
       "~1/ω² law measured in docs/performance.md. A modal boom carries only the frequencies it keeps: its best step "
       "here is {} s, set by ω_max = {} rad/s (the static correction modes are stiff). A step above a red cell blows "
       "up (named: {}); remedy: an implicit method (cvode, ida) for elastic booms, or fewer, softer coordinates.",
