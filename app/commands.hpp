@@ -20,6 +20,7 @@ struct Command {
 Command add_check_command(CLI::App& parent);            // command_check.cpp
 Command add_modes_command(CLI::App& parent);            // command_modes.cpp
 Command add_scene_reference_command(CLI::App& parent);  // command_scene_reference.cpp
+Command add_stability_command(CLI::App& parent);        // command_stability.cpp
 Command add_recommend_command(CLI::App& parent);        // command_recommend.cpp
 
 }  // namespace ffrf::app

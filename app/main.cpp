@@ -14,12 +14,14 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   std::vector<Command> commands{add_check_command(app), add_modes_command(app), add_run_command(app),
                                 add_compare_command(app), add_sweep_command(app),
-                                add_scene_reference_command(app),
-                                add_recommend_command(app)};
+                                add_stability_command(app),
+                                add_recommend_command(app),
+                                add_scene_reference_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    return app.exit(error);
+    // --help and --version exit 0; every other parse error (unknown option, missing argument) is bad input.
+    return app.exit(error) == 0 ? exit_ok : exit_bad_input;
   }
   for (const Command& command : commands) {
     if (!command.subcommand->parsed()) continue;
