@@ -24,10 +24,10 @@ Json stability_summary(const TempDir& dir, const std::string& scene) {
 
 double extra(const Json& cell, const std::string& name) { return cell[name].number; }
 
-TEST(CliStability, SpinUpUnstiffenedFailsAsSpinApproachesFirstBendingFrequencyStiffenedStaysBounded) {
+TEST(CliStability, SpinUpUnstiffenedDivergesOnceTheSpinPassesTheFirstBendingFrequencyStiffenedStaysBounded) {
   TempDir dir;
   const Json summary = stability_summary(dir, "cases/spin_up_beam.toml");
-  // Scene: EI = 7e10 · 2e-7 N m², ρA = 1.2 kg/m, L = 10 m, spin-up over Ts = 15 s, divergence at 0.2 L.
+  // Scene: EI = 7e10 · 2e-7 N m², ρA = 1.2 kg/m, L = 10 m, spin-up over Ts = 15 s, divergence at 0.5 L.
   const double omega1 = 1.875104068711961 * 1.875104068711961 * std::sqrt(7e10 * 2e-7 / (1.2 * 1e4));
   const double ts = 15.0;
   const auto spin_rate = [&](double spin, double t) {
@@ -35,7 +35,6 @@ TEST(CliStability, SpinUpUnstiffenedFailsAsSpinApproachesFirstBendingFrequencySt
   };
   const Json& cells = summary["sections"]["spin"]["cells"];
   ASSERT_EQ(cells.items.size(), 12u);  // 3 spins × 2 stiffenings × 2 models
-  std::map<std::pair<std::string, double>, double> detection_rate;
   for (const Json& cell : cells.items) {
     const double spin = extra(cell, "spin_rad_per_s");
     const bool stiffened = extra(cell, "stiffened") != 0.0;
@@ -44,7 +43,7 @@ TEST(CliStability, SpinUpUnstiffenedFailsAsSpinApproachesFirstBendingFrequencySt
       // K + Ω²K_c (or Ωs below ω1): bounded, well inside the watch's bound.
       EXPECT_TRUE(cell["ok"].flag);
       EXPECT_EQ(cell["status"].text, "bounded");
-      EXPECT_LT(cell["value"].number, 0.2 * 10.0);
+      EXPECT_LT(cell["value"].number, 0.5 * 10.0);
       continue;
     }
     ASSERT_FALSE(cell["ok"].flag);
@@ -52,21 +51,15 @@ TEST(CliStability, SpinUpUnstiffenedFailsAsSpinApproachesFirstBendingFrequencySt
     const double t = cell["time_s"].number;
     EXPECT_NEAR(extra(cell, "omega1_rad_per_s"), omega1, 1e-3 * omega1);
     EXPECT_NEAR(extra(cell, "spin_rate_at_detection_rad_per_s"), spin_rate(spin, t), 1e-9);
-    // The stiffness K(1 − Ω²/ω1²) collapses during the spin-up: the watch fires before Ts, once Ω(t) is
-    // close to ω1 (the quasi-static amplification 1/(1 − Ω²/ω1²) of the spin-up torque's deflection
-    // must reach 2 m / the ~0.2–0.6 m of a stiff response: Ω between 0.7 ω1 and ω1).
+    // The stiffness K(1 − Ω²/ω1²) collapses as Ω(t) reaches ω1; the 0.5 L bound is passed once the
+    // spin has gone beyond ω1 (the softened mode then grows exponentially), before Ts. The fitted rate
+    // is positive and no faster than the instantaneous √(Ω² − ω1²) (Ω still rises through the window).
     EXPECT_LT(t, ts);
-    EXPECT_GT(spin_rate(spin, t), 0.7 * omega1);
-    EXPECT_LT(spin_rate(spin, t), omega1);
+    const double omega = spin_rate(spin, t);
+    EXPECT_GT(omega, omega1);
+    EXPECT_LT(omega, 1.1 * omega1);
     EXPECT_GT(cell["value"].number, 0.0);  // a growth rate σ [1/s]
-    detection_rate[{cell["row"].text, spin}] = spin_rate(spin, t);
-  }
-  // Larger Ωs: larger torque, so the same deflection needs less amplification — it fails at a lower Ω(t).
-  for (const std::string row : {"nodal N=10, no stiffening", "modal k=4+static (N=10), no stiffening"}) {
-    const auto at4 = detection_rate.find({row, 4.0});
-    const auto at6 = detection_rate.find({row, 6.0});
-    ASSERT_TRUE(at4 != detection_rate.end() && at6 != detection_rate.end()) << row;
-    EXPECT_LT(at6->second, at4->second);
+    EXPECT_LE(cell["value"].number, 1.05 * std::sqrt(omega * omega - omega1 * omega1));
   }
   // The nodal and modal stiffened runs agree (second method).
   EXPECT_LT(summary["sections"]["spin"]["numbers"]["nodal_modal_disagreement_stiffened_4"].number, 0.02);
