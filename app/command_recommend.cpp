@@ -84,13 +84,6 @@ std::optional<std::vector<coupling::OutputChannel>> parse_outputs(const std::str
   return outputs;
 }
 
-// A crane's motions and loads; a hub scene's tip deflection (it has no cargo or hull).
-std::vector<coupling::OutputChannel> default_outputs(const cases::Scene& scene) {
-  using coupling::OutputChannel;
-  if (!scene.is_crane()) return {OutputChannel::tip_deflection};
-  return {OutputChannel::cargo_heave, OutputChannel::cargo_pitch,  OutputChannel::crane_heave,
-          OutputChannel::crane_pitch, OutputChannel::wire_tension, OutputChannel::joint_moment};
-}
 
 int run_recommend(const RecommendOptions& options) {
   const std::optional<cases::Scene> scene = load_crane_scene(options.scene, "recommend");
@@ -102,7 +95,7 @@ int run_recommend(const RecommendOptions& options) {
   RecommendRequest request;
   request.tolerance = *tolerance;
   if (options.outputs.empty()) {
-    request.outputs = default_outputs(*scene);
+    request.outputs = default_recommend_outputs(*scene);
   } else {
     std::string error;
     const auto outputs = parse_outputs(options.outputs, error);

@@ -90,7 +90,13 @@ int run_crane(const RunOptions& options) {
   if (const auto error = boom_choice(options, *scene, choice)) return bad_input(*error);
   const SettingsOrError settings = integrator_settings(options.dynamics, *scene);
   if (!settings.settings) return bad_input(settings.error);
-  const RunContext context = make_context(options.scene, *scene, *settings.settings);
+  RunContext context = make_context(options.scene, *scene, *settings.settings);
+  try {
+    context.warnings = model_warnings(*scene, choice);
+  } catch (const std::exception& error) {  // the boom's modes could not be solved: no advice, the run decides
+    fmt::print(stderr, "ffrf run: note: no modelling advice ({})\n", error.what());
+  }
+  fmt::print(stderr, "{}", warnings_text(context.warnings));
 
   // The input is valid: from here on, DIR's old completeness marker no longer describes DIR.
   std::optional<StagedDirectory> out;

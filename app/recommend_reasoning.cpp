@@ -161,4 +161,11 @@ RecommendReasoning reason_about(const cases::Scene& scene, double tolerance,
   return r;
 }
 
+std::vector<coupling::OutputChannel> default_recommend_outputs(const cases::Scene& scene) {
+  using coupling::OutputChannel;
+  if (!scene.is_crane()) return {OutputChannel::tip_deflection};
+  return {OutputChannel::cargo_heave, OutputChannel::cargo_pitch,  OutputChannel::crane_heave,
+          OutputChannel::crane_pitch, OutputChannel::wire_tension, OutputChannel::joint_moment};
+}
+
 }  // namespace ffrf::app

@@ -53,6 +53,9 @@ struct RecommendReasoning {
   std::vector<std::string> statements; // the reasoning in plain words with its numbers
 };
 
+// The outputs judged by default: a crane's motions and loads; a hub scene's tip deflection.
+std::vector<coupling::OutputChannel> default_recommend_outputs(const cases::Scene& scene);
+
 // Throws modal::EigenSolverError when the boom's modes cannot be solved.
 RecommendReasoning reason_about(const cases::Scene& scene, double tolerance,
                                 const std::vector<coupling::OutputChannel>& outputs);

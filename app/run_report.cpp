@@ -62,7 +62,7 @@ RunContext make_context(const std::string& scene_file, const cases::Scene& scene
   ::gmtime_r(&now, &utc);
   char date[32];
   std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return {scene_file, &scene, settings, date};
+  return {scene_file, &scene, settings, date, {}};
 }
 
 std::string static_report(const cases::Scene& scene, const ModelRun& run) {
@@ -185,6 +185,8 @@ std::string run_json(const RunContext& context, const ModelRun& run) {
   write_settings_json(json, context);
   json.end_object();
   write_model_json(json, *context.scene, run);
+  json.key("model_warnings");
+  write_warnings_json(json, context.warnings);
   json.end_object();
   return json.str();
 }

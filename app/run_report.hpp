@@ -7,6 +7,7 @@
 
 #include "app/crane_run.hpp"
 #include "app/json_writer.hpp"
+#include "app/run_warnings.hpp"
 
 namespace ffrf::app {
 
@@ -16,6 +17,7 @@ struct RunContext {
   const cases::Scene* scene = nullptr;
   coupling::IntegratorSettings settings;
   std::string date;  // ISO 8601, UTC
+  ModelWarnings warnings;  // `ffrf run`: the model against what the scene needs
 };
 RunContext make_context(const std::string& scene_file, const cases::Scene& scene,
                         const coupling::IntegratorSettings& settings);
