@@ -202,10 +202,18 @@ Recommendation recommend(const cases::Scene& scene, const RecommendRequest& requ
       break;
     }
   }
-  // Minimality: the next cheaper candidate must fail its run; run it even when pruned, and should it
+  // Minimality: the next cheaper *model* must fail its run (an integrator twin of the chosen model,
+  // e.g. its explicit variant, proves nothing about the model); run it even when pruned, and should it
   // pass (the reasoning was too cautious), move down and check again.
+  const auto same_model = [&](const Candidate& a, const Candidate& b) {
+    return a.choice.kind == b.choice.kind && a.choice.elements == b.choice.elements && a.choice.modes == b.choice.modes &&
+           a.choice.static_modes == b.choice.static_modes &&
+           a.choice.stiffening.value_or(s.boom.stiffening) == b.choice.stiffening.value_or(s.boom.stiffening);
+  };
   while (rec.chosen && *rec.chosen > 0) {
-    const std::size_t j = *rec.chosen - 1;
+    std::size_t j = *rec.chosen - 1;
+    while (j > 0 && same_model(rec.candidates[j], rec.candidates[*rec.chosen])) --j;
+    if (same_model(rec.candidates[j], rec.candidates[*rec.chosen])) break;  // nothing cheaper
     Candidate& c = rec.candidates[j];
     if (c.status == CandidateStatus::pruned) {
       tell(c.label() + " (minimality check) ...");

@@ -133,7 +133,7 @@ double centrifugal_hub_radius(const Scene& scene) {
   if (scene.hub) return scene.hub->radius;
   if (!scene.boom.mount) return 0.0;
   const BoomMount& mount = *scene.boom.mount;
-  return std::max(0.0, mount.root_x * std::cos(mount.angle) + mount.root_y * std::sin(mount.angle));
+  return mount.root_x * std::cos(mount.angle) + mount.root_y * std::sin(mount.angle);
 }
 
 fem::AxialForce static_reference_axial_force(const Scene& scene) {

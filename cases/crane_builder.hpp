@@ -44,8 +44,8 @@ double boom_stiffness_damping(const Scene& scene);
 
 // Boom angle above the horizontal in the as-built posture (hull crane: boom.angle; hub: hub.angle).
 double boom_angle_at_rest(const Scene& scene);
-// Distance along the boom axis from the axis the base turns about (hub axis, or G1 of a hull,
-// clamped at 0) to the root B: the r of the centrifugal axial force.
+// Signed distance along the boom axis from the axis the base turns about (hub axis, or G1 of a
+// hull) to the root B: the r of the centrifugal axial force (negative when the axis lies ahead).
 double centrifugal_hub_radius(const Scene& scene);
 // The reference axial force of static stiffening: beam statics of the undeformed boom in its
 // as-built posture under self-weight and the hanging cargo's weight at the tip (compression < 0):

@@ -146,7 +146,9 @@ void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z
       rhs -= hull_elastic_mass_ * schur_rhs_;
     }
     const Eigen::LDLT<Eigen::Matrix3d> schur_factor(schur);
-    if (schur_factor.info() != Eigen::Success || !schur_factor.isPositive() || !(schur_factor.vectorD().minCoeff() > 0.0)) {
+    // A non-finite state is a divergence for the integrator to report, not a mass-matrix failure.
+    if (schur.allFinite() &&
+        (schur_factor.info() != Eigen::Success || !schur_factor.isPositive() || !(schur_factor.vectorD().minCoeff() > 0.0))) {
       throw MassMatrixError(schur_factor.vectorD().minCoeff());
     }
     hull_a = schur_factor.solve(rhs);

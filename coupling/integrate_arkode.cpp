@@ -13,6 +13,7 @@
 #include <complex>
 #include <cstdio>
 #include <limits>
+#include <string>
 
 #include "coupling/simulation.hpp"
 #include "coupling/sundials_support.hpp"
@@ -30,6 +31,8 @@ struct ErkData {
   double energy_bound = std::numeric_limits<double>::infinity();
   double energy_reference = 0.0;  // E_ref + E_floor
   double diverged_energy = 0.0, diverged_time = 0.0;
+  std::string model_error = {};  // an exception the model threw inside a callback
+  FailureKind model_error_kind = FailureKind::model_error;
 };
 
 int erk_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
@@ -37,9 +40,16 @@ int erk_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
   const auto state = sundials::Vector::view(y);
   auto rate = sundials::Vector::view(y_dot);
   const int n = data->size;
-  rate.head(n) = state.tail(n);
-  data->equations->minimal_accelerations(t, state.head(n), state.tail(n), rate.tail(n));
-  return rate.allFinite() ? 0 : 1;  // recoverable: adaptive ERK retries with a smaller step
+  if (!state.allFinite()) return 1;  // recoverable: adaptive ERK retries with a smaller step
+  try {
+    rate.head(n) = state.tail(n);
+    data->equations->minimal_accelerations(t, state.head(n), state.tail(n), rate.tail(n));
+  } catch (const std::exception& error) {  // never across ARKODE's C frames
+    data->model_error = error.what();
+    data->model_error_kind = model_failure_kind(error);
+    return -1;
+  }
+  return rate.allFinite() ? 0 : 1;
 }
 
 int wire_root(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
@@ -231,6 +241,10 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
         return direction;
       },
       [&](int flag, double t) {
+        if (!data.model_error.empty()) {
+          throw SolverFailure(data.model_error_kind, solver_name, "the model failed: " + data.model_error, t,
+                              "check the scene's values; reduce --step or use an implicit integrator (cvode, ida)");
+        }
         if (flag == ARK_POSTPROCESS_STEP_FAIL) throw unstable(data.diverged_time, data.diverged_energy);
         if (fixed && flag != ARK_TOO_MUCH_WORK) throw unstable(t, std::numeric_limits<double>::infinity());
         throw SolverFailure(flag == ARK_TOO_MUCH_WORK ? FailureKind::too_much_work : FailureKind::model_error, solver_name,

@@ -1,6 +1,6 @@
 // CVODE (variable-order BDF, Newton with a dense Jacobian) on the crane in full coordinates as an
 // ODE y = (q, v): q̇ = v, and v̇, λ from the index-1 system (the clamp at B differentiated twice)
-//   [M(q) C_qᵀ; C_q 0] [v̇; λ] = [Q(q, v, t); γ − 2αĊ − β²C],   γ = −(C_q v)_q v,  Ċ = C_q v,
+//   [M(q) C_qᵀ; C_q 0] [v̇; λ] = [Q(q, v, t); γ − 2αĊ − β²C],  γ = −(C_q v)_q v − C_tt,  Ċ = C_q v + C_t,
 // solved through the Schur complement S = C_q M⁻¹ C_qᵀ (3 × 3). Three constraint treatments:
 //  * index1     α = β = 0: only C̈ = 0 is imposed, so the integration errors in the invariants C and
 //               Ċ are never corrected: Ċ random-walks (grows like t) and C like t²;

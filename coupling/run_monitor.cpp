@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "coupling/simulation.hpp"
@@ -72,21 +73,38 @@ void DivergenceWatch::observe(double t, const CraneOutputs& sample) {
   }
   if (limits_.boom_length <= 0.0) return;
   const double bound = limits_.deflection_limit * limits_.boom_length;
-  if (deflection < 0.1 * bound) {
+  // The window opens when |δ| first passes 10 % of the bound and closes only on a real decay below
+  // 1 %, so the dips of a growing oscillation stay in it. Its record highs (samples above all before
+  // them) are the envelope: the peaks of a growing oscillation, every sample of a monotone one.
+  if (deflection < 0.01 * bound) {
     times_.clear();
     log_deflections_.clear();
     return;
   }
-  times_.push_back(t);
-  log_deflections_.push_back(std::log(deflection));
+  if (times_.empty() && deflection < 0.1 * bound) return;
+  if (log_deflections_.empty() || std::log(deflection) > log_deflections_.back()) {
+    times_.push_back(t);
+    log_deflections_.push_back(std::log(deflection));
+  }
   if (deflection <= bound) return;
-  const double rate = times_.size() >= 3 ? slope(times_, log_deflections_)
-                                         : std::log(deflection / (0.1 * bound)) / std::max(t - times_.front(), 1e-12);
+  double rate = std::numeric_limits<double>::quiet_NaN();  // unresolved: jumped past the bound at once
+  if (times_.size() >= 3) {
+    rate = slope(times_, log_deflections_);
+  } else if (times_.size() == 2 && times_.back() > times_.front()) {
+    rate = (log_deflections_.back() - log_deflections_.front()) / (times_.back() - times_.front());
+  }
   char cause[320];
-  std::snprintf(cause, sizeof cause,
-                "the boom tip deflection %.3g m passed the bound %.3g m (%.3g of the boom length), growing at "
-                "σ = %.3g 1/s (e-folding time %.3g s)",
-                deflection, bound, limits_.deflection_limit, rate, 1.0 / std::max(rate, 1e-300));
+  if (std::isfinite(rate)) {
+    std::snprintf(cause, sizeof cause,
+                  "the boom tip deflection %.3g m passed the bound %.3g m (%.3g of the boom length), growing at "
+                  "σ = %.3g 1/s (e-folding time %.3g s)",
+                  deflection, bound, limits_.deflection_limit, rate, 1.0 / std::max(rate, 1e-300));
+  } else {
+    std::snprintf(cause, sizeof cause,
+                  "the boom tip deflection %.3g m passed the bound %.3g m (%.3g of the boom length) within one output "
+                  "interval: growth rate unresolved",
+                  deflection, bound, limits_.deflection_limit);
+  }
   throw SolverFailure(FailureKind::divergence, solver_, cause, t,
                       "the linear floating-frame boom lost its stiffness: switch on geometric stiffening "
                       "(--stiffening centrifugal for a spinning boom, static near buckling), or lower the spin rate or load",
@@ -178,7 +196,11 @@ std::vector<Detection> post_run_detections(const RunResult& result, const Monito
   }
   const double ratio = max_buckling_load_ratio(result, limits);
   if (ratio >= limits.buckling_warning_ratio) {
-    found.push_back({FailureKind::buckling, 0.0, false,
+    std::size_t largest = 0;  // the sample of the largest compression
+    for (std::size_t k = 1; k < result.samples.size(); ++k) {
+      if (result.samples[k].root_axial_force < result.samples[largest].root_axial_force) largest = k;
+    }
+    found.push_back({FailureKind::buckling, result.time.empty() ? 0.0 : result.time[largest], false,
                      format("the boom's root compression reached %.3g of its Euler buckling load %.4g N", ratio,
                             limits.buckling_load),
                      ratio >= 1.0 ? "the boom buckles: the linear model is invalid; reduce the load"

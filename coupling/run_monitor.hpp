@@ -30,8 +30,9 @@ struct MonitorLimits {
 };
 
 // Watches each output sample; throws SolverFailure(divergence) with the growth rate σ of the
-// deflection (least-squares slope of ln|δ| over its last decade: the samples since |δ| passed 10 % of
-// the bound, so the rate is the one at detection)
+// deflection: the least-squares slope of ln|δ| over its envelope (the record highs since |δ| passed
+// 10 % of the bound, kept through the dips of an oscillation until it decays below 1 %), NaN
+// ("unresolved") when the bound was passed within one output interval
 // when |δ| exceeds deflection_limit · L, or when a sample is not finite.
 class DivergenceWatch {
  public:

@@ -46,8 +46,8 @@ AxialForce static_axial_force(const BeamMesh& mesh, double load_per_length, doub
 }
 
 AxialForce centrifugal_axial_force(const BeamMesh& mesh, double hub_radius) {
-  if (!std::isfinite(hub_radius) || hub_radius < 0.0) {
-    throw std::invalid_argument("hub radius r = " + std::to_string(hub_radius) + " m must be finite and >= 0");
+  if (!std::isfinite(hub_radius)) {
+    throw std::invalid_argument("hub radius r = " + std::to_string(hub_radius) + " m must be finite");
   }
   const double length = mesh.length;
   const double rho_a = mesh.section.mass_per_length;

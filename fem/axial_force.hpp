@@ -24,8 +24,9 @@ using AxialForce = std::function<double(double x)>;
 AxialForce static_axial_force(const BeamMesh& mesh, double load_per_length, double tip_force);
 
 // Centrifugal axial force per unit Ω² [N s²] of a beam spinning about an axis normal to the plane that lies a
-// distance hub_radius behind the root on the beam axis: N(x)/Ω² = ρA [r (L − x) + (L² − x²)/2].
-// Throws std::invalid_argument for a negative or non-finite hub radius.
+// distance hub_radius behind the root on the beam axis (r < 0: the axis lies ahead of the root, on
+// the beam's line): N(x)/Ω² = ρA [r (L − x) + (L² − x²)/2]. Throws std::invalid_argument for a
+// non-finite hub radius.
 AxialForce centrifugal_axial_force(const BeamMesh& mesh, double hub_radius);
 
 // Geometric stiffness on the free DOFs, K_g = Σ_e ∫ N(x) (∂S_v/∂x)ᵀ(∂S_v/∂x) dx, by 4-point Gauss–Legendre

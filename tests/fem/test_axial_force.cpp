@@ -53,7 +53,11 @@ TEST(AxialForce, CentrifugalDistributionSatisfiesEquilibriumAndFreeTip) {
   }
   // The root carries the whole centrifugal force ∫₀ᴸ ρAΩ²(r + s) ds.
   EXPECT_NEAR(per_spin2(0.0), rho_a * (hub_radius * mesh.length + 0.5 * mesh.length * mesh.length), 1e-9);
-  EXPECT_THROW(centrifugal_axial_force(mesh, -1.0), std::invalid_argument);
+  EXPECT_THROW(centrifugal_axial_force(mesh, std::nan("")), std::invalid_argument);
+  // An axis ahead of the root (r < 0, on the beam's line): the same integral ∫ₓᴸ ρA (r + s) ds.
+  const AxialForce ahead = centrifugal_axial_force(mesh, -1.0);
+  EXPECT_NEAR(ahead(0.0), rho_a * (-1.0 * mesh.length + 0.5 * mesh.length * mesh.length), 1e-9 * rho_a * mesh.length * mesh.length);
+  EXPECT_NEAR(ahead(mesh.length), 0.0, 1e-12);
 }
 
 // Transverse slope dv/dx of the element's Hermite functions as polynomials in ξ (coefficients of
