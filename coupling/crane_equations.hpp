@@ -18,7 +18,6 @@ namespace ffrf::coupling {
 // One output sample: what a time-series row and the static report show.
 struct CraneOutputs {
   Eigen::Vector3d hull = Eigen::Vector3d::Zero();        // G1 (or hub) x [m], y [m], pitch [rad]
-  Eigen::Vector3d hull_velocity = Eigen::Vector3d::Zero();  // [m/s, m/s, rad/s]
   Eigen::Vector3d cargo = Eigen::Vector3d::Zero();       // G2 x [m], y [m], pitch [rad]
   Eigen::Vector2d tip_deflection = Eigen::Vector2d::Zero();  // elastic (u, v) at A′ in the boom frame [m]
   double wire_tension = 0.0;                             // [N]
@@ -73,13 +72,18 @@ class CraneEquations {
   virtual void constraint_time_derivative(double t, Ref c_t) const = 0;    // C_t (velocity level: C_q v + C_t = 0)
   // γ with C_q q̈ = γ: −(C_q v)_q v − C_tt (C_q does not depend on t).
   virtual void constraint_rate_terms(double t, ConstRef q, ConstRef v, Ref gamma) const = 0;
-  virtual Eigen::MatrixXd full_mass_matrix(ConstRef q) = 0;
+  // M(q), filled in place (resized only when its size differs: allocation-free in a solver loop).
+  virtual void full_mass_matrix(ConstRef q, Eigen::MatrixXd& mass) = 0;
+  Eigen::MatrixXd full_mass_matrix(ConstRef q) {
+    Eigen::MatrixXd mass;
+    full_mass_matrix(q, mass);
+    return mass;
+  }
   virtual CraneOutputs full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) = 0;
 
   // Wire slack indicator ℓ − L0 [m] (root function for event location); 1 m when there is no wire.
   virtual double wire_stretch_minimal(double t, ConstRef z) = 0;
   virtual double wire_stretch_full(ConstRef q) = 0;
-  virtual bool has_wire() const = 0;
   // Index of the cargo's (x, y, θ) in the minimal coordinates; −1 without a cargo.
   virtual int cargo_offset() const = 0;
   // Elastic coordinate count (0 for the rigid boom).

@@ -45,13 +45,17 @@ void CraneSystem<Coords>::full_mass_times(ConstRef q, ConstRef a, Ref out) {
 }
 
 template <fem::ElasticCoordinates Coords>
-Eigen::MatrixXd CraneSystem<Coords>::full_mass_matrix(ConstRef q) {
-  const int size = full_size();
-  Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(size, size);
+void CraneSystem<Coords>::full_mass_matrix(ConstRef q, Eigen::MatrixXd& mass) {
+  const int size = full_size(), b = elastic_at_;
+  mass.setZero(size, size);
   if (hull_free()) mass.topLeftCorner<3, 3>() = hull_rigid_inertia().asDiagonal();
   if (has_cargo()) mass.block<3, 3>(cargo_at_, cargo_at_) = cargo_inertia().asDiagonal();
-  mass.bottomRightCorner(3 + n_, 3 + n_) = m_.boom.mass_matrix(q.tail(3 + n_));
-  return mass;
+  boom_q_ = q.tail(3 + n_);
+  m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_);
+  mass.block<3, 3>(b, b) = boom_reference_mass_;
+  mass.block(b, b + 3, 3, n_) = boom_coupling_;
+  mass.block(b + 3, b, n_, 3) = boom_coupling_.transpose();
+  mass.bottomRightCorner(n_, n_) = elastic_mass_dense_;
 }
 
 template <fem::ElasticCoordinates Coords>

@@ -37,11 +37,11 @@ class CraneSystem final : public CraneEquations {
   void constraint_jacobian(ConstRef q, Eigen::MatrixXd& jacobian) const override;
   void constraint_time_derivative(double t, Ref c_t) const override;
   void constraint_rate_terms(double t, ConstRef q, ConstRef v, Ref gamma) const override;
-  Eigen::MatrixXd full_mass_matrix(ConstRef q) override;
+  using CraneEquations::full_mass_matrix;
+  void full_mass_matrix(ConstRef q, Eigen::MatrixXd& mass) override;
   CraneOutputs full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) override;
   double wire_stretch_minimal(double t, ConstRef z) override;
   double wire_stretch_full(ConstRef q) override;
-  bool has_wire() const override { return has_cargo(); }
   int cargo_offset() const override { return has_cargo() ? cargo_at_ : -1; }
   int elastic_size() const override { return n_; }
 
@@ -80,6 +80,7 @@ class CraneSystem final : public CraneEquations {
   int cargo_at_;    // index of the cargo block (0 with a fixed hull, 3 otherwise)
   int elastic_at_;  // minimal: index of η; full: index of the boom frame (R_B, θ_B) (cargo_at_ + 3 or + 0)
   MassFactor<typename Coords::Matrix> elastic_mass_factor_;
+  Eigen::MatrixXd elastic_mass_dense_;  // M_ff as a dense block of the full mass matrix (constant)
   Eigen::VectorXd elastic_scale_;  // typical size of each elastic coordinate (see the constructor)
   // workspace (allocated once)
   Eigen::VectorXd boom_q_, boom_v_, boom_force_;

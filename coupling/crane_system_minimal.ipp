@@ -26,6 +26,7 @@ CraneSystem<Coords>::CraneSystem(CraneModel<Coords> model)
     const double largest = m_.boom.coords().to_nodal(Eigen::VectorXd::Unit(n_, i)).cwiseAbs().maxCoeff();
     elastic_scale_(i) = largest > 0.0 ? 0.01 / largest : 0.01;
   }
+  elastic_mass_dense_ = Eigen::MatrixXd(m_.boom.coords().mass_ff());
   if (n_ > 0) {
     elastic_mass_factor_.compute(m_.boom.coords().mass_ff());
     if (elastic_mass_factor_.info() != Eigen::Success) {
@@ -256,7 +257,6 @@ CraneOutputs CraneSystem<Coords>::common_outputs(const Eigen::Vector3d& hull_q, 
                                                  const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v) {
   CraneOutputs out;
   out.hull = hull_q;
-  out.hull_velocity = hull_v;
   out.cargo = cargo_q;
   out.tip_deflection = m_.boom_tip.shape * boom_q_.tail(n_);
   out.wire_tension = wire_.tension;

@@ -58,13 +58,13 @@ class CountingEquations final : public CraneEquations {
   void constraint_rate_terms(double t, ConstRef q, ConstRef v, Ref gamma) const override {
     inner_.constraint_rate_terms(t, q, v, gamma);
   }
-  Eigen::MatrixXd full_mass_matrix(ConstRef q) override { return inner_.full_mass_matrix(q); }
+  using CraneEquations::full_mass_matrix;
+  void full_mass_matrix(ConstRef q, Eigen::MatrixXd& mass) override { inner_.full_mass_matrix(q, mass); }
   CraneOutputs full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) override {
     return inner_.full_outputs(t, q, v, lambda);
   }
   double wire_stretch_minimal(double t, ConstRef z) override { return inner_.wire_stretch_minimal(t, z); }
   double wire_stretch_full(ConstRef q) override { return inner_.wire_stretch_full(q); }
-  bool has_wire() const override { return inner_.has_wire(); }
   int cargo_offset() const override { return inner_.cargo_offset(); }
   int elastic_size() const override { return inner_.elastic_size(); }
 

@@ -46,7 +46,8 @@ int dae_residual(sunrealtype t, N_Vector y, N_Vector y_dot, N_Vector r, void* us
     d->equations->constraint(t, q, d->c);
     res.segment(2 * n, constraints) = d->c;
     d->equations->constraint_time_derivative(t, d->c_t);
-    res.tail(constraints) = d->jacobian * v + d->c_t;
+    res.tail(constraints).noalias() = d->jacobian * v;
+    res.tail(constraints) += d->c_t;
     return res.allFinite() ? 0 : 1;
   } catch (const std::exception& error) {
     d->model_error = error.what();

@@ -38,6 +38,7 @@ struct Index1Data {
   void* cvode = nullptr;
   N_Vector error_weights = nullptr;  // CVODE's error weights, read by the projection
   Eigen::MatrixXd jacobian;        // C_q (3 × nq)
+  Eigen::MatrixXd mass_matrix;     // M(q) workspace
   Eigen::LLT<Eigen::MatrixXd> mass;  // M = LLᵀ
   Eigen::MatrixXd mass_inverse_jacobian_t;  // Y = M⁻¹C_qᵀ (nq × 3)
   Eigen::Matrix3d schur;           // S = C_q Y
@@ -48,7 +49,7 @@ struct Index1Data {
   FailureKind model_error_kind = FailureKind::model_error;
 
   Index1Data(CraneEquations& e, int n, double a, double b)
-      : equations(&e), size(n), alpha(a), beta(b), jacobian(constraints, n), mass(n), mass_inverse_jacobian_t(n, constraints),
+      : equations(&e), size(n), alpha(a), beta(b), jacobian(constraints, n), mass_matrix(n, n), mass(n), mass_inverse_jacobian_t(n, constraints),
         forces(n), free_acceleration(n), weights(2 * n), work(n) {}
 };
 
@@ -65,7 +66,8 @@ void constraint_terms(Index1Data& d, double t, CraneEquations::ConstRef q, Crane
 // Factorizes M(q) and forms Y = M⁻¹C_qᵀ and S = C_q Y for the current d.jacobian; false if M is not
 // positive definite.
 bool factorize(Index1Data& d, CraneEquations::ConstRef q) {
-  d.mass.compute(d.equations->full_mass_matrix(q));
+  d.equations->full_mass_matrix(q, d.mass_matrix);
+  d.mass.compute(d.mass_matrix);
   if (d.mass.info() != Eigen::Success) return false;
   d.mass_inverse_jacobian_t = d.mass.solve(d.jacobian.transpose());
   d.schur.noalias() = d.jacobian * d.mass_inverse_jacobian_t;
@@ -78,9 +80,12 @@ bool accelerations(Index1Data& d, double t, CraneEquations::ConstRef q, CraneEqu
   if (!factorize(d, q)) return false;
   d.equations->full_forces(t, q, v, d.forces);
   d.free_acceleration = d.mass.solve(d.forces);
-  const Eigen::Vector3d target = d.gamma - 2.0 * d.alpha * d.c_dot - d.beta * d.beta * d.c;
-  d.lambda = d.schur.partialPivLu().solve(d.jacobian * d.free_acceleration - target);
-  v_dot = d.free_acceleration - d.mass_inverse_jacobian_t * d.lambda;
+  Eigen::Vector3d rhs;
+  rhs.noalias() = d.jacobian * d.free_acceleration;
+  rhs -= d.gamma - 2.0 * d.alpha * d.c_dot - d.beta * d.beta * d.c;
+  d.lambda = d.schur.partialPivLu().solve(rhs);
+  v_dot = d.free_acceleration;
+  v_dot.noalias() -= d.mass_inverse_jacobian_t * d.lambda;
   return v_dot.allFinite();
 }
 
@@ -118,7 +123,9 @@ int index1_jacobian(sunrealtype t, N_Vector y, N_Vector f_y, SUNMatrix jacobian,
 
 // x minus its M-orthogonal component normal to C_q x = 0: x ← x − Y S⁻¹ C_q x.
 void remove_normal_component(Index1Data& d, CraneEquations::Ref x) {
-  d.work.noalias() = d.mass_inverse_jacobian_t * d.schur.partialPivLu().solve(d.jacobian * x);
+  Eigen::Vector3d normal;
+  normal.noalias() = d.jacobian * x;
+  d.work.noalias() = d.mass_inverse_jacobian_t * d.schur.partialPivLu().solve(normal);
   x -= d.work;
 }
 
@@ -132,7 +139,7 @@ bool project_positions(Index1Data& d, double t, CraneEquations::ConstRef q, Cran
     d.equations->constraint_jacobian(q_projected, d.jacobian);
     d.mass_inverse_jacobian_t = d.mass.solve(d.jacobian.transpose());
     d.schur.noalias() = d.jacobian * d.mass_inverse_jacobian_t;
-    d.work = d.mass_inverse_jacobian_t * d.schur.partialPivLu().solve(d.c);
+    d.work.noalias() = d.mass_inverse_jacobian_t * d.schur.partialPivLu().solve(d.c);
     q_projected -= d.work;
     const double update = std::sqrt(d.work.cwiseProduct(d.weights.head(d.size)).squaredNorm() / d.size);
     if (!q_projected.allFinite()) return false;
@@ -168,7 +175,8 @@ int index1_projection(sunrealtype t, N_Vector ycur, N_Vector corr, sunrealtype e
     if (CVodeGetErrWeights(d->cvode, d->error_weights) != CV_SUCCESS) return -1;
     d->weights = sundials::Vector::view(d->error_weights);
     if (!state.allFinite()) return 1;
-    d->mass.compute(d->equations->full_mass_matrix(state.head(n)));
+    d->equations->full_mass_matrix(state.head(n), d->mass_matrix);
+    d->mass.compute(d->mass_matrix);
     if (d->mass.info() != Eigen::Success) return 1;
     auto q_projected = correction.head(n);
     if (!project_positions(*d, t, state.head(n), q_projected, eps)) return 1;

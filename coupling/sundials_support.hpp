@@ -90,9 +90,9 @@ class Progress {
 // solver to each output time. `advance(t_out, t)` calls the solver and returns its flag (t: the
 // time reached); on `root_return` the wire crossed its unstretched length and `root_direction()`
 // (< 0: going slack) is recorded as an event and the solver continues; a negative flag goes to
-// `fail(flag, t)`, which throws. `record(t)` samples the outputs at t; a mass matrix that is not
-// positive definite there (the outputs solve for the accelerations, outside the solver's callbacks,
-// first at t = 0) is the SolverFailure mass_not_positive_definite, as inside the callbacks.
+// `fail(flag, t)`, which throws. `record(t)` samples the outputs at t; an exception the model throws
+// there (the outputs solve for the accelerations outside the solver's callbacks, first at t = 0)
+// becomes a SolverFailure of its kind (model_failure_kind), as inside the callbacks.
 template <class Advance, class RootDirection, class Fail, class Record>
 void sample_outputs(const IntegratorSettings& settings, const char* label, int root_return, Advance advance,
                     RootDirection root_direction, Fail fail, Record record, std::vector<WireEvent>& events) {
@@ -100,10 +100,14 @@ void sample_outputs(const IntegratorSettings& settings, const char* label, int r
   const auto sample = [&](double t) {
     try {
       record(t);
-    } catch (const MassMatrixError& error) {
-      throw SolverFailure(FailureKind::mass_not_positive_definite, label,
-                          std::string("the model failed: ") + error.what(), t,
-                          "check the scene's masses and added masses (a negative or too small inertia)");
+    } catch (const SolverFailure&) {
+      throw;
+    } catch (const std::exception& error) {
+      const FailureKind kind = model_failure_kind(error);
+      throw SolverFailure(kind, label, std::string("the model failed: ") + error.what(), t,
+                          kind == FailureKind::mass_not_positive_definite
+                              ? "check the scene's masses and added masses (a negative or too small inertia)"
+                              : "check the scene's values; tighten --rtol/--atol");
     }
   };
   try {
