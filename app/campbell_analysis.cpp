@@ -90,16 +90,6 @@ SpinRange parse_spin_range(const std::string& text) {
   return {a, b, static_cast<int>(n)};
 }
 
-std::optional<double> buckling_load(const fem::BeamMesh& mesh, fem::Boundary boundary) {
-  const double euler = std::numbers::pi * std::numbers::pi * mesh.section.bending_rigidity() / (mesh.length * mesh.length);
-  switch (boundary) {
-    case fem::Boundary::clamped_free: return euler / 4.0;
-    case fem::Boundary::pinned_pinned: return euler;
-    case fem::Boundary::free_free: return std::nullopt;
-  }
-  return std::nullopt;
-}
-
 SpinModesResult solve_spin_modes(const fem::BeamModel& model, double spin_rate, double hub_radius, double axial_force,
                                  int count, modal::EigenSolverKind solver) {
   const auto start = std::chrono::steady_clock::now();
@@ -112,7 +102,7 @@ SpinModesResult solve_spin_modes(const fem::BeamModel& model, double spin_rate, 
   const auto reference = reference_omega2(model.mesh, model.boundary, spin_rate, hub_radius, axial_force, bending_count);
 
   SpinModesResult out{model.mesh, model.boundary, solver, model.dofs.free_count(), spin_rate, hub_radius, axial_force,
-                      buckling_load(model.mesh, model.boundary), with.shift, {}, 0.0, {}};
+                      fem::euler_buckling_load(model.mesh, model.boundary), with.shift, {}, 0.0, {}};
   for (const auto& mode : with.modes) {
     SpinModeRow row{mode.kind, mode.order, std::nullopt, mode.omega_squared, std::nullopt, mode.axial_energy_share};
     for (const auto& other : without.modes) {

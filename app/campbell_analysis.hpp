@@ -29,9 +29,6 @@ SpinRange parse_spin_range(const std::string& text);
 // Parses a finite number for the option `name` within [minimum, inf); throws std::invalid_argument.
 double parse_finite(const std::string& name, const std::string& text, std::optional<double> minimum);
 
-// The buckling load of a uniform compression for the boundary [N]: π²EI/(4L²) clamped-free,
-// π²EI/L² pinned-pinned; none for free-free.
-std::optional<double> buckling_load(const fem::BeamMesh& mesh, fem::Boundary boundary);
 
 // One mode at one spin: ω² [rad²/s²] (negative: divergence) without geometric stiffness (K − Ω²M:
 // no centrifugal stiffening, no P) and with it (K + Ω²K_c + P K_g,1 − Ω²M), and the power series

@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "cases/scene_loader.hpp"
+#include "fem/analytic_beam.hpp"
 #include "coupling/planar.hpp"
 
 namespace ffrf::app {
@@ -152,7 +153,7 @@ coupling::MonitorLimits monitor_limits(const cases::Scene& scene) {
   limits.boom_length = mesh.length;
   limits.deflection_limit = scene.simulation.deflection_limit;
   limits.constraint_drift_limit = scene.simulation.constraint_drift_limit;
-  limits.buckling_load = std::numbers::pi * std::numbers::pi * mesh.section.bending_rigidity() / (4.0 * mesh.length * mesh.length);
+  limits.buckling_load = *fem::euler_buckling_load(mesh, fem::Boundary::clamped_free);  // the root is clamped
   limits.wire_unstretched_length = scene.wire ? scene.wire->unstretched_length : 0.0;
   return limits;
 }

@@ -81,7 +81,7 @@ void loads(const cases::Scene& scene, const std::vector<coupling::OutputChannel>
   const double cargo_weight = scene.cargo ? scene.cargo->mass * g : 0.0;
   r.static_tip_deflection = (cargo_weight * L * L * L / 3.0 + rhoA * g * std::pow(L, 4) / 8.0) * std::cos(phi) / EI;
   r.axial_load = (rhoA * g * L + cargo_weight) * std::sin(phi);
-  r.euler_load = std::numbers::pi * std::numbers::pi * EI / (4.0 * L * L);
+  r.euler_load = *fem::euler_buckling_load(scene.boom.mesh, fem::Boundary::clamped_free);
   if (contains(outputs, coupling::OutputChannel::tip_deflection)) {
     r.rigid_error = 1.0;
     r.statements.push_back("Rigid boom: the tip deflection is a chosen output and a rigid boom has none (error 100 %).");

@@ -29,10 +29,7 @@ StabilitySection bdf_order_section(const cases::Scene& scene, const StabilityOpt
   double rtol = 0.0;
   for (int order : {2, 5}) {
     dynamics.max_order = order;
-    const SettingsOrError settings = integrator_settings(dynamics, scene);
-    if (!settings.settings) throw std::invalid_argument(settings.error);
-    coupling::IntegratorSettings quiet = *settings.settings;
-    quiet.progress = false;
+    const coupling::IntegratorSettings quiet = experiment_settings(dynamics, scene);
     rtol = quiet.relative_tolerance;
     stability_progress(options, fmt::format("BDF order: cvode max_order {} on {}, {} s", order, choice.label(), quiet.duration));
     OrderRun run{order, std::nullopt, std::nullopt};

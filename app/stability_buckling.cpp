@@ -23,9 +23,10 @@ StabilitySection buckling_section(const cases::Scene& scene, const StabilityOpti
   const coupling::StaticEquilibrium statics = coupling::solve_static_equilibrium(*equations, equations->initial_guess());
   const double axial = statics.outputs.root_axial_force;  // tension > 0
   const fem::BeamMesh& mesh = scene.boom.mesh;
-  const double euler = std::numbers::pi * std::numbers::pi * mesh.section.bending_rigidity() / (4.0 * mesh.length * mesh.length);
+  const coupling::MonitorLimits limits = monitor_limits(scene);
+  const double euler = limits.buckling_load;
   const double ratio = std::max(0.0, -axial) / euler;
-  const double warning = monitor_limits(scene).buckling_warning_ratio;
+  const double warning = limits.buckling_warning_ratio;
 
   StabilitySection section;
   section.key = "buckling";

@@ -67,10 +67,7 @@ StabilitySection constraint_drift_section(const cases::Scene& scene, const Stabi
   const cases::BoomChoice choice{cases::BoomKind::nodal, 4};
   DynamicsOptions dynamics;
   dynamics.duration = std::min(scene.simulation.duration, options.quick ? 10.0 : 60.0);
-  const SettingsOrError settings = integrator_settings(dynamics, scene);
-  if (!settings.settings) throw std::invalid_argument(settings.error);
-  coupling::IntegratorSettings run_settings = *settings.settings;
-  run_settings.progress = false;
+  const coupling::IntegratorSettings run_settings = experiment_settings(dynamics, scene);
   const double limit = run_settings.monitor.constraint_drift_limit;
 
   const auto make = [&] { return cases::build_crane(scene, choice); };

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <stdexcept>
+
 #include <cstdio>
 
 namespace ffrf::app {
@@ -87,6 +89,14 @@ void write_section_json(JsonWriter& json, const StabilitySection& section) {
   }
   json.end_array();
   json.end_object();
+}
+
+coupling::IntegratorSettings experiment_settings(const DynamicsOptions& dynamics, const cases::Scene& scene) {
+  const SettingsOrError settings = integrator_settings(dynamics, scene);
+  if (!settings.settings) throw std::invalid_argument(settings.error);
+  coupling::IntegratorSettings quiet = *settings.settings;
+  quiet.progress = false;
+  return quiet;
 }
 
 }  // namespace ffrf::app

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/crane_run.hpp"
 #include "app/json_writer.hpp"
 #include "app/output_directory.hpp"
 #include "cases/crane_builder.hpp"
@@ -57,6 +58,10 @@ std::string markdown_table(const std::vector<std::string>& header, const std::ve
 std::string gnuplot_quoted(const std::string& text);
 // A progress line on stderr when options.progress.
 void stability_progress(const StabilityOptions& options, const std::string& line);
+
+// The integrator settings of one experiment's run: `ffrf run`'s for these options and scene, without
+// the progress line (the command prints its own); throws std::invalid_argument for bad options.
+coupling::IntegratorSettings experiment_settings(const DynamicsOptions& dynamics, const cases::Scene& scene);
 // Engineering numbers for the report ("-" when not finite).
 std::string shown(double value, int digits = 4);
 

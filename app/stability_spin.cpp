@@ -48,10 +48,7 @@ SpinRun run_spin(const cases::Scene& scene, double spin, const cases::BoomChoice
   run.choice.stiffening = stiffened ? cases::Stiffening::centrifugal : cases::Stiffening::none;
   cases::Scene spun = scene;
   spun.hub->spin_rate = spin;
-  const SettingsOrError settings = integrator_settings(DynamicsOptions{}, spun);
-  if (!settings.settings) throw std::invalid_argument(settings.error);
-  coupling::IntegratorSettings quiet = *settings.settings;
-  quiet.progress = false;
+  const coupling::IntegratorSettings quiet = experiment_settings(DynamicsOptions{}, spun);
   const coupling::RunResult* samples = nullptr;
   ModelRun model;
   std::shared_ptr<const coupling::RunResult> partial;
@@ -138,15 +135,15 @@ StabilitySection spin_section(const cases::Scene& scene, const StabilityOptions&
   StabilitySection section;
   section.key = "spin";
   section.title = "Spin: the linear floating frame with and without centrifugal stiffening";
-  const SettingsOrError settings = integrator_settings(DynamicsOptions{}, scene);
+  const coupling::IntegratorSettings settings = experiment_settings(DynamicsOptions{}, scene);
   section.provenance = fmt::format(
       "Hub motion {} to Ωs over Ts = {} s, Ωs ∈ {{{}}} rad/s; models {} and {}; stiffening none (K − Ω²M) and centrifugal "
       "(K + Ω²K_c); cvode, rtol {:g}, BDF order ≤ {}, {} s each. Divergence watch: |tip deflection| > {} L, growth rate "
       "σ fitted to ln|δ|. First bending frequency at rest ω1 = {} rad/s (clamped–free, analytic). Data: "
       "`spin_tip_deflection.csv`, `campbell.csv`.",
       hub.motion == cases::HubMotion::spin_up ? "spin-up" : "constant spin", hub.spin_up_time, fmt::join(spins, ", "),
-      models[0].label(), models[1].label(), settings.settings->relative_tolerance, settings.settings->max_order,
-      settings.settings->duration, scene.simulation.deflection_limit, shown(omega1));
+      models[0].label(), models[1].label(), settings.relative_tolerance, settings.max_order,
+      settings.duration, scene.simulation.deflection_limit, shown(omega1));
 
   std::vector<std::string> header{"model, stiffening"};
   for (double spin : spins) header.push_back(fmt::format("Ωs = {} rad/s", spin));

@@ -78,10 +78,7 @@ StabilitySection wire_section(const cases::Scene& scene, const StabilityOptions&
   const double lift = lifted.simulation.cargo_lift;
   DynamicsOptions dynamics;
   dynamics.duration = std::min(scene.simulation.duration, options.quick ? 3.0 : 20.0);
-  const SettingsOrError settings = integrator_settings(dynamics, lifted);
-  if (!settings.settings) throw std::invalid_argument(settings.error);
-  coupling::IntegratorSettings quiet = *settings.settings;
-  quiet.progress = false;
+  const coupling::IntegratorSettings quiet = experiment_settings(dynamics, lifted);
 
   std::vector<WireRun> runs{{{cases::BoomKind::rigid, scene.boom.mesh.element_count}, {}, {}, {}, {}},
                             {{cases::BoomKind::nodal, scene.boom.mesh.element_count}, {}, {}, {}, {}}};

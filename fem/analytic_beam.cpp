@@ -73,4 +73,14 @@ std::vector<AnalyticMode> analytic_axial_modes(const BeamMesh& mesh, Boundary bo
 
 int rigid_mode_count(Boundary boundary) { return boundary == Boundary::free_free ? 3 : 0; }
 
+std::optional<double> euler_buckling_load(const BeamMesh& mesh, Boundary boundary) {
+  const double euler = std::numbers::pi * std::numbers::pi * mesh.section.bending_rigidity() / (mesh.length * mesh.length);
+  switch (boundary) {
+    case Boundary::clamped_free: return euler / 4.0;
+    case Boundary::pinned_pinned: return euler;
+    case Boundary::free_free: return std::nullopt;
+  }
+  return std::nullopt;
+}
+
 }  // namespace ffrf::fem

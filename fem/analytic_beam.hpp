@@ -6,6 +6,7 @@
 // by bracketing and bisection of the frequency equation, not tabulated.
 #pragma once
 
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -28,6 +29,9 @@ struct AnalyticMode {
 std::vector<AnalyticMode> analytic_bending_modes(const BeamMesh& mesh, Boundary boundary, int count);
 // The lowest `count` axial modes of the boundary condition.
 std::vector<AnalyticMode> analytic_axial_modes(const BeamMesh& mesh, Boundary boundary, int count);
+// Euler buckling load of the uniform column [N]: π²EI/(4L²) clamped–free, π²EI/L² pinned–pinned;
+// none for free–free.
+std::optional<double> euler_buckling_load(const BeamMesh& mesh, Boundary boundary);
 // Number of zero-frequency rigid-body modes in the plane (3 for free-free, 0 otherwise).
 int rigid_mode_count(Boundary boundary);
 

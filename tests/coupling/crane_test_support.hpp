@@ -4,6 +4,9 @@
 
 #include <cmath>
 #include <functional>
+#include <iomanip>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "cases/crane_builder.hpp"
@@ -60,6 +63,30 @@ inline ConservativeCrane conservative_crane() {
   crane.start(3) += 1.0;
   crane.start(4) += 0.5;
   return crane;
+}
+
+// A 10 m boom on a fixed hub at 45° carrying a 2 m cargo box on a 5 m wire whose hook sits
+// straight above G2 (the wire hangs vertically through G2).
+struct HubCrane {
+  double youngs_modulus, area, second_moment, mass_per_length;  // boom section [Pa, m², m⁴, kg/m]
+  int elements;
+  double cargo_mass, wire_stiffness;  // [kg, N/m]
+  double duration = 1.0, output_interval = 0.01;  // [s]
+};
+inline cases::Scene hub_crane_scene(const HubCrane& c) {
+  const auto number = [](double value) {
+    std::ostringstream text;
+    text << std::setprecision(17) << value;
+    return text.str();
+  };
+  const std::string text = "[scene]\nname = \"hub crane\"\n[boom]\nlength = 10.0\nyoungs_modulus = " + number(c.youngs_modulus) +
+                           "\narea = " + number(c.area) + "\nsecond_moment = " + number(c.second_moment) +
+                           "\nmass_per_length = " + number(c.mass_per_length) + "\nelements = " + std::to_string(c.elements) +
+                           "\n[hub]\nangle = \"45 deg\"\nmotion = \"fixed\"\n[cargo]\nmass = " + number(c.cargo_mass) +
+                           "\nlength = 2.0\nheight = 2.0\nhook_x = 0.0\nhook_y = 1.0\n[wire]\nunstretched_length = 5.0"
+                           "\nstiffness = " + number(c.wire_stiffness) + "\n[simulation]\nduration = " + number(c.duration) +
+                           "\noutput_interval = " + number(c.output_interval) + "\n";
+  return cases::load_scene_text(text, "hub_crane.toml");
 }
 
 // The spin-up benchmark's beam (cases/spin_up_beam.toml) on a hub spinning at a constant rate from

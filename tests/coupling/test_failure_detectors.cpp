@@ -24,36 +24,6 @@ namespace {
 
 using namespace ffrf;
 
-// A 10 m boom at φ = 45° on a fixed hub, cargo of mass `cargo_mass` [kg] on a 5 m wire.
-std::string hub_crane_toml(double cargo_mass) {
-  return R"(
-[scene]
-name = "hub crane"
-[boom]
-length = 10.0
-youngs_modulus = 2.1e11
-area = 1.0e-3
-second_moment = 1.0e-5
-mass_per_length = 10.0
-elements = 4
-[hub]
-angle = "45 deg"
-motion = "fixed"
-[cargo]
-mass = )" + std::to_string(cargo_mass) + R"(
-length = 2.0
-height = 2.0
-hook_x = 0.0
-hook_y = 1.0
-[wire]
-unstretched_length = 5.0
-stiffness = 1.0e7
-[simulation]
-duration = 1.0
-output_interval = 0.01
-)";
-}
-
 coupling::MonitorLimits limits_of(const cases::Scene& scene) {
   coupling::MonitorLimits limits;
   const fem::BeamMesh& mesh = scene.boom.mesh;
@@ -72,7 +42,7 @@ const coupling::Detection* find(const std::vector<coupling::Detection>& detectio
 
 TEST(FailureDetectors, BucklingMarginFromBeamStatics) {
   for (const double cargo_mass : {5000.0, 2000.0}) {
-    const cases::Scene scene = cases::load_scene_text(hub_crane_toml(cargo_mass), "hub_crane.toml");
+    const cases::Scene scene = test::hub_crane_scene({2.1e11, 1.0e-3, 1.0e-5, 10.0, 4, cargo_mass, 1.0e7});
     const double g = scene.environment.gravity, phi = std::numbers::pi / 4.0, L = scene.boom.mesh.length;
     const double compression = (scene.boom.mesh.section.mass_per_length * g * L + cargo_mass * g) * std::sin(phi);
     const coupling::MonitorLimits limits = limits_of(scene);

@@ -34,30 +34,7 @@ constexpr double kLength = 10.0, kE = 2.1e11, kI = 1.0e-4, kRhoA = 1.0;
 cases::Scene prestressed_boom(double fraction) {
   const double euler = std::numbers::pi * std::numbers::pi * kE * kI / (4.0 * kLength * kLength);
   const double weight = fraction * euler / std::sin(std::numbers::pi / 4.0);
-  const std::string text = R"(
-[scene]
-name = "prestressed boom"
-[boom]
-length = )" + std::to_string(kLength) + R"(
-youngs_modulus = )" + std::to_string(kE) + R"(
-area = 1.0e-2
-second_moment = )" + std::to_string(kI) + R"(
-mass_per_length = )" + std::to_string(kRhoA) + R"(
-elements = 32
-[hub]
-angle = "45 deg"
-motion = "fixed"
-[cargo]
-mass = )" + std::to_string(weight / 9.81) + R"(
-length = 2.0
-height = 2.0
-hook_x = 0.0
-hook_y = 1.0
-[wire]
-unstretched_length = 5.0
-stiffness = 1.0e9
-)";
-  return cases::load_scene_text(text, "prestressed_boom.toml");
+  return test::hub_crane_scene({kE, 1.0e-2, kI, kRhoA, 32, weight / 9.81, 1.0e9});
 }
 
 double static_tip_deflection(const cases::Scene& scene, cases::BoomChoice choice) {
