@@ -13,22 +13,6 @@
 namespace ffrf::coupling {
 namespace {
 
-// The table of integrate_explicit (integrate_arkode.cpp); the tests check that both agree on the
-// imaginary-axis boundary.
-constexpr ARKODE_ERKTableID table_id = ARKODE_ZONNEVELD_5_3_4;
-
-struct ButcherTable {
-  ARKodeButcherTable table = ARKodeButcherTable_LoadERK(table_id);
-  ButcherTable() = default;
-  ~ButcherTable() { ARKodeButcherTable_Free(table); }
-  ButcherTable(const ButcherTable&) = delete;
-  ButcherTable& operator=(const ButcherTable&) = delete;
-};
-
-const ARKodeButcherTableMem& erk_table() {
-  static const ButcherTable table;
-  return *table.table;
-}
 
 // Forwards every call and counts the right-hand sides (minimal accelerations) of all trials.
 class CountingEquations final : public CraneEquations {
@@ -81,37 +65,6 @@ std::vector<std::complex<double>> left_half_plane_rays() {
 }
 
 }  // namespace
-
-std::complex<double> explicit_stability_function(std::complex<double> w) {
-  const ARKodeButcherTableMem& table = erk_table();
-  std::vector<std::complex<double>> stages(static_cast<std::size_t>(table.stages));
-  std::complex<double> sum = 0.0;
-  for (int i = 0; i < table.stages; ++i) {
-    std::complex<double> stage = 1.0;
-    for (int j = 0; j < i; ++j) stage += w * table.A[i][j] * stages[static_cast<std::size_t>(j)];
-    stages[static_cast<std::size_t>(i)] = stage;
-    sum += table.b[i] * stage;
-  }
-  return 1.0 + w * sum;
-}
-
-double explicit_ray_boundary(std::complex<double> direction) {
-  constexpr double ds = 0.005, s_max = 20.0, slack = 1e-9;
-  const std::complex<double> d = direction / std::abs(direction);
-  double good = 0.0;
-  for (double s = ds; s <= s_max; s += ds) {
-    if (std::abs(explicit_stability_function(s * d)) > 1.0 + slack) {
-      double bad = s;
-      for (int i = 0; i < 50; ++i) {
-        const double mid = 0.5 * (good + bad);
-        (std::abs(explicit_stability_function(mid * d)) > 1.0 + slack ? bad : good) = mid;
-      }
-      return good;
-    }
-    good = s;
-  }
-  return s_max;
-}
 
 double explicit_mode_step_limit(std::complex<double> eigenvalue) {
   const double size = std::abs(eigenvalue);

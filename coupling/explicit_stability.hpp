@@ -35,13 +35,10 @@
 #include <vector>
 
 #include "coupling/crane_equations.hpp"
+#include "coupling/erk_stability_region.hpp"
 
 namespace ffrf::coupling {
 
-// R(w) of the explicit table integrate_explicit uses.
-std::complex<double> explicit_stability_function(std::complex<double> w);
-// s*(d): the largest s with |R(s d)| ≤ 1 on (0, s] along the unit direction d (≤ 20).
-double explicit_ray_boundary(std::complex<double> direction);
 // Largest stable step of one linear mode with eigenvalue λ (Re λ ≤ 0): s*(λ/|λ|) / |λ|.
 double explicit_mode_step_limit(std::complex<double> eigenvalue);
 

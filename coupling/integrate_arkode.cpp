@@ -15,13 +15,13 @@
 #include <limits>
 #include <string>
 
+#include "coupling/erk_stability_region.hpp"
 #include "coupling/simulation.hpp"
 #include "coupling/sundials_support.hpp"
 
 namespace ffrf::coupling {
 namespace {
 
-constexpr ARKODE_ERKTableID table_id = ARKODE_ZONNEVELD_5_3_4;
 constexpr double energy_growth_bound = 1e6;
 constexpr const char* solver_name = "ARKODE ERK";
 
@@ -71,45 +71,6 @@ int energy_watch(sunrealtype t, N_Vector y, void* user) {
   return 1;
 }
 
-// Stability function R(w) = 1 + w bᵀ(I − wA)⁻¹𝟙 of an explicit table (A strictly lower).
-std::complex<double> stability_function(const ARKodeButcherTableMem& table, std::complex<double> w) {
-  std::vector<std::complex<double>> k(static_cast<std::size_t>(table.stages));
-  std::complex<double> sum = 0.0;
-  for (int i = 0; i < table.stages; ++i) {
-    std::complex<double> stage = 1.0;
-    for (int j = 0; j < i; ++j) stage += w * table.A[i][j] * k[static_cast<std::size_t>(j)];
-    k[static_cast<std::size_t>(i)] = stage;
-    sum += table.b[i] * stage;
-  }
-  return 1.0 + w * sum;
-}
-
-// Largest s with |R(s d)| ≤ 1 on (0, s] along the unit direction d (scan, then bisection).
-double ray_boundary(const ARKodeButcherTableMem& table, std::complex<double> d) {
-  constexpr double ds = 0.005, s_max = 20.0, slack = 1e-9;
-  double good = 0.0;
-  for (double s = ds; s <= s_max; s += ds) {
-    if (std::abs(stability_function(table, s * d)) > 1.0 + slack) {
-      double bad = s;
-      for (int i = 0; i < 40; ++i) {
-        const double mid = 0.5 * (good + bad);
-        (std::abs(stability_function(table, mid * d)) > 1.0 + slack ? bad : good) = mid;
-      }
-      return good;
-    }
-    good = s;
-  }
-  return s_max;
-}
-
-struct Table {
-  ARKodeButcherTable table = ARKodeButcherTable_LoadERK(table_id);
-  ~Table() { ARKodeButcherTable_Free(table); }
-  Table() = default;
-  Table(const Table&) = delete;
-  Table& operator=(const Table&) = delete;
-};
-
 std::string remedy_for(int flag, double limit) {
   const std::string limit_text = std::isfinite(limit) ? " (the linearized stability limit is ≈ " + std::to_string(limit) + " s)" : "";
   switch (flag) {
@@ -144,19 +105,15 @@ double explicit_stable_step(CraneEquations& equations, const Eigen::VectorXd& z0
   }
   const Eigen::VectorXcd eigenvalues = Eigen::EigenSolver<Eigen::MatrixXd>(jacobian, false).eigenvalues();
   const double largest = eigenvalues.cwiseAbs().maxCoeff();
-  const Table table;
   double limit = std::numeric_limits<double>::infinity();
   for (const std::complex<double> mu : eigenvalues) {
     if (std::abs(mu) < 1e-2 * largest) continue;  // slow modes never bind
-    limit = std::min(limit, ray_boundary(*table.table, mu / std::abs(mu)) / std::abs(mu));
+    limit = std::min(limit, explicit_ray_boundary(mu) / std::abs(mu));
   }
   return limit;
 }
 
-double explicit_imaginary_axis_boundary() {
-  const Table table;
-  return ray_boundary(*table.table, {0.0, 1.0});
-}
+double explicit_imaginary_axis_boundary() { return explicit_ray_boundary({0.0, 1.0}); }
 
 RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings) {
   const auto start = std::chrono::steady_clock::now();
@@ -185,7 +142,7 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
                                                [](void* p) { ERKStepFree(&p); });
   void* erk = memory.get();
   if (!erk || ERKStepSVtolerances(erk, settings.relative_tolerance, tolerance.v) != ARK_SUCCESS ||
-      ERKStepSetTableNum(erk, table_id) != ARK_SUCCESS || ERKStepSetUserData(erk, &data) != ARK_SUCCESS ||
+      ERKStepSetTableNum(erk, explicit_table_id) != ARK_SUCCESS || ERKStepSetUserData(erk, &data) != ARK_SUCCESS ||
       ERKStepSetMaxNumSteps(erk, settings.max_steps) != ARK_SUCCESS || ERKStepRootInit(erk, 1, wire_root) != ARK_SUCCESS ||
       (fixed && (ERKStepSetFixedStep(erk, settings.fixed_step) != ARK_SUCCESS ||
                  ERKStepSetPostprocessStepFn(erk, energy_watch) != ARK_SUCCESS))) {
