@@ -302,15 +302,7 @@ RunResult integrate_index1(CraneEquations& equations, const Eigen::VectorXd& z0,
       },
       record, result.wire_events);
 
-  long nfe = 0, nfe_ls = 0;
-  CVodeGetNumSteps(cvode, &result.stats.steps);
-  CVodeGetNumRhsEvals(cvode, &nfe);
-  CVodeGetNumLinRhsEvals(cvode, &nfe_ls);
-  result.stats.function_evaluations = nfe + nfe_ls + data.jacobian_rhs_evaluations;
-  CVodeGetNumJacEvals(cvode, &result.stats.jacobian_evaluations);
-  CVodeGetNumNonlinSolvIters(cvode, &result.stats.newton_iterations);
-  CVodeGetNumErrTestFails(cvode, &result.stats.error_test_failures);
-  CVodeGetNumNonlinSolvConvFails(cvode, &result.stats.convergence_failures);
+  sundials::cvode_statistics(cvode, data.jacobian_rhs_evaluations, result.stats);
   if (projection) CVodeGetNumProjEvals(cvode, &result.stats.projections);
   result.stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

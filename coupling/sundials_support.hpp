@@ -3,6 +3,8 @@
 // terminal progress line.
 #pragma once
 
+#include <cvode/cvode.h>
+#include <cvode/cvode_ls.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>
@@ -159,6 +161,20 @@ int second_order_jacobian(double t, N_Vector y, N_Vector f_y, SUNMatrix jacobian
     for (Eigen::Index i = 0; i < 2 * n; ++i) column[i] = (shifted_rate(i) - rate(i)) / delta;
   }
   return 0;
+}
+
+// CVODE's counters into the run's statistics; `jacobian_rhs_evaluations` are the right-hand sides
+// our own difference-quotient Jacobian (second_order_jacobian) spent, which CVODE does not count.
+inline void cvode_statistics(void* cvode, long jacobian_rhs_evaluations, SolverStats& stats) {
+  long rhs = 0, linear_rhs = 0;
+  CVodeGetNumSteps(cvode, &stats.steps);
+  CVodeGetNumRhsEvals(cvode, &rhs);
+  CVodeGetNumLinRhsEvals(cvode, &linear_rhs);
+  stats.function_evaluations = rhs + linear_rhs + jacobian_rhs_evaluations;
+  CVodeGetNumJacEvals(cvode, &stats.jacobian_evaluations);
+  CVodeGetNumNonlinSolvIters(cvode, &stats.newton_iterations);
+  CVodeGetNumErrTestFails(cvode, &stats.error_test_failures);
+  CVodeGetNumNonlinSolvConvFails(cvode, &stats.convergence_failures);
 }
 
 // The failure kind of a negative SUNDIALS flag, given the solver's own flag values.
