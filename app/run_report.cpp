@@ -174,6 +174,7 @@ void write_model_json(JsonWriter& json, const cases::Scene& scene, const ModelRu
   json.field("convergence_failures", count(st.convergence_failures));
   json.field("wall_time_s", st.wall_seconds).field("real_time_factor", run.real_time_factor);
   if (st.step > 0.0) json.field("fixed_step_s", st.step);
+  if (st.projections > 0) json.field("projections", count(st.projections));
   json.end_object();
 }
 
@@ -232,6 +233,7 @@ std::string dynamics_text(const ModelRun& run) {
                       "            {} error-test and {} convergence failures\n",
                       st.steps, st.function_evaluations, st.jacobian_evaluations, st.newton_iterations,
                       st.error_test_failures, st.convergence_failures);
+  if (st.projections > 0) text += fmt::format("            {} constraint projections\n", st.projections);
   text += fmt::format("wall time   {:.3g} s ({:.4g}x real time)\n", st.wall_seconds, run.real_time_factor);
   return text;
 }
