@@ -1,36 +1,67 @@
-// gnuplot scripts and their execution for `ffrf modes --out`.
+// gnuplot scripts and their execution: gnuplot runs without a shell, its standard input from
+// /dev/null, so a charting command started from a terminal never waits for a key press.
 #include "app/gnuplot.hpp"
 
 #include <array>
-#include <cstdio>
+#include <cerrno>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
+extern char** environ;
+
 namespace ffrf::app {
 namespace {
 
-// Quotes a path for /bin/sh.
-std::string shell_quote(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-std::string capture(const std::string& command, int& status) {
-  std::string output;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) {
-    status = -1;
-    return output;
+// Runs `program args…` in `directory` (empty: the current one) without a shell, its standard input
+// from /dev/null (never the user's terminal: a pager there would wait for a key press that never
+// comes), standard output and error captured together. Returns the exit status (−1 when it could
+// not be started or was killed by a signal).
+int run_captured(const std::vector<std::string>& argv, const std::filesystem::path& directory,
+                 std::string& output) {
+  int pipe_fds[2];
+  if (::pipe(pipe_fds) != 0) return -1;
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], STDERR_FILENO);
+  posix_spawn_file_actions_addclose(&actions, pipe_fds[0]);
+  posix_spawn_file_actions_addclose(&actions, pipe_fds[1]);
+  if (!directory.empty()) posix_spawn_file_actions_addchdir_np(&actions, directory.c_str());
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawned = ::posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(pipe_fds[1]);
+  if (spawned != 0) {
+    ::close(pipe_fds[0]);
+    return -1;
   }
   std::array<char, 4096> buffer{};
-  std::size_t n = 0;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) output.append(buffer.data(), n);
-  status = ::pclose(pipe);
-  return output;
+  ssize_t n = 0;
+  while ((n = ::read(pipe_fds[0], buffer.data(), buffer.size())) != 0) {
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
+    output.append(buffer.data(), static_cast<std::size_t>(n));
+  }
+  ::close(pipe_fds[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) return -1;
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 std::string header(const std::string& terminal, const std::string& output, const std::string& title) {
@@ -48,9 +79,9 @@ std::string header(const std::string& terminal, const std::string& output, const
 }  // namespace
 
 std::string png_terminal() {
-  int status = 0;
-  const std::string terminals = capture("gnuplot -e 'set terminal' 2>&1", status);
-  if (status != 0) {
+  // GPVAL_TERMINALS is one line: no pager (`set terminal` pages its list on a terminal).
+  std::string terminals;
+  if (run_captured({"gnuplot", "-e", "print GPVAL_TERMINALS"}, {}, terminals) != 0) {
     throw std::runtime_error("gnuplot is needed for the charts of --out but could not be run "
                              "(install it: apt-get install gnuplot-nox)");
   }
@@ -58,10 +89,8 @@ std::string png_terminal() {
 }
 
 void run_gnuplot(const std::filesystem::path& directory, const std::string& script) {
-  int status = 0;
-  const std::string output =
-      capture(fmt::format("cd {} && gnuplot {} 2>&1", shell_quote(directory.string()), shell_quote(script)), status);
-  if (status != 0) throw std::runtime_error(fmt::format("gnuplot {} failed: {}", script, output));
+  std::string output;
+  if (run_captured({"gnuplot", script}, directory, output) != 0) throw std::runtime_error(fmt::format("gnuplot {} failed: {}", script, output));
 }
 
 std::string mode_shapes_script(const ModesResult& r, const std::string& terminal) {

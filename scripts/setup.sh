@@ -21,6 +21,9 @@ fi
 
 werror=OFF
 [ "${CI:-}" = "true" ] && werror=ON
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DFFRF_WERROR="$werror" > build.log 2>&1 || { cat build.log; exit 1; }
+# ccache, when the machine has it, makes rebuilds of unchanged files free (not needed, not installed).
+launcher=()
+command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DFFRF_WERROR="$werror" "${launcher[@]}" > build.log 2>&1 || { cat build.log; exit 1; }
 cmake --build build -j"$(nproc)" >> build.log 2>&1 || { tail -n 60 build.log; echo "build failed: full log in build.log"; exit 1; }
 echo "ffrf set-up: built in ./build (log: build.log)"
