@@ -51,7 +51,6 @@ TEST(WaveSynthesis, WholePeriodVarianceEqualsM0LessTheTails) {
   for (double w = sea.components.frequency.front(); w < sea.components.frequency.back(); w += h)
     curvature += std::abs(spectral_density(spectrum, w + h) - 2 * spectral_density(spectrum, w) + spectral_density(spectrum, w - h)) / h;
   EXPECT_NEAR(sea.band_m0, cells, step * step / 24.0 * curvature);
-  EXPECT_GT(std::abs(sea.band_m0 - cells), 0.0);
   EXPECT_NEAR(sea.band_m0 / 0.25, 1.0 - 1e-3, 5e-5);
   EXPECT_NEAR(sea.spectrum_m0, 0.25, 1e-12);
   // The sea repeats exactly after 2π/Δω.
