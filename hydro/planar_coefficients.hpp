@@ -21,7 +21,7 @@ using PlanarVector = Eigen::Vector3d;
 using PlanarComplexVector = Eigen::Vector3cd;
 
 struct PlanarRadiation {
-  std::vector<double> frequency;           // ω [rad/s], strictly increasing, > 0
+  std::vector<double> frequency;           // ω [rad/s], strictly increasing, ≥ 0 (BEM files: > 0)
   std::vector<PlanarMatrix> added_mass;    // A(ω_i)
   std::vector<PlanarMatrix> damping;       // B(ω_i)
   bool has_zero_frequency = false, has_infinite_frequency = false;
