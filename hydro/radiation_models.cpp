@@ -56,14 +56,22 @@ StateSpaceRadiationModel::StateSpaceRadiationModel(const RadiationStateSpace& mo
   output_input_ = model.c * input_;
   current_ = output_input_;
   state_.setZero(r);
+  scratch_.setZero(r);
 }
 
 PlanarVector StateSpaceRadiationModel::history_force() const {
-  return output_propagator_ * state_ + output_input_ * last_velocity_;
+  PlanarVector force;
+  force.noalias() = output_propagator_ * state_;
+  force.noalias() += output_input_ * last_velocity_;
+  return force;
 }
 
+// No allocation: the new state goes to the preallocated scratch, then the two swap.
 void StateSpaceRadiationModel::push(const PlanarVector& velocity) {
-  state_ = propagator_ * state_ + input_ * (last_velocity_ + velocity);
+  const PlanarVector sum = last_velocity_ + velocity;
+  scratch_.noalias() = propagator_ * state_;
+  scratch_.noalias() += input_ * sum;
+  state_.swap(scratch_);
   last_velocity_ = velocity;
 }
 

@@ -84,7 +84,7 @@ class StateSpaceRadiationModel final : public RadiationModel {
   PlanarMatrix added_mass_, current_;
   Eigen::MatrixXd propagator_, input_;  // P, Q
   Eigen::Matrix<double, 3, Eigen::Dynamic> output_propagator_, output_input_;  // C P, C Q
-  Eigen::VectorXd state_;
+  Eigen::VectorXd state_, scratch_;
   PlanarVector last_velocity_ = PlanarVector::Zero();
 };
 
