@@ -47,12 +47,17 @@ TEST(WelchSpectrum, SinusoidPowerAndWhiteNoiseLevel) {
   EXPECT_NEAR(level, dt / kPi, 0.02 * dt / kPi);  // 513 bins × ~127 segments average
 }
 
+// A deterministic-amplitude JONSWAP sea (Hs 2 m, Tp 8 s, γ 3.3) that repeats after `period`.
+SeaRealisation jonswap_sea(std::uint64_t seed, double period) {
+  SynthesisOptions options;
+  options.record_length = period;
+  options.seed = seed;
+  return synthesize(jonswap(2.0, 8.0, 3.3), options);
+}
+
 TEST(WelchSpectrum, SynthesizedSeaReturnsItsSpectrumMoments) {
   const auto spectrum = jonswap(2.0, 8.0, 3.3);
-  SynthesisOptions options;
-  options.record_length = 10800.0;
-  options.seed = 17;
-  const auto sea = synthesize(spectrum, options);
+  const auto sea = jonswap_sea(17, 10800.0);
   const double dt = 0.25;
   const auto eta = elevation_record(sea.components, 0.0, dt, 43200);
   const auto s = welch_spectrum(eta, dt);
@@ -189,11 +194,7 @@ TEST(ExtremeValues, TensionAmplificationOfASinusoid) {
 }
 
 TEST(IrregularComparison, StatisticsSeeThroughAPhaseDriftThatRuinsTheTimeHistory) {
-  const auto spectrum = jonswap(2.0, 8.0, 3.3);
-  SynthesisOptions o;
-  o.record_length = 3600.0;
-  o.seed = 23;
-  const auto sea = synthesize(spectrum, o);
+  const auto sea = jonswap_sea(23, 3600.0);
   const double dt = 0.25;
   const auto reference = elevation_record(sea.components, 0.0, dt, 14400);
   const auto shifted = elevation_record(sea.components, 3.0, dt, 14400);  // same sea, 3 s later
