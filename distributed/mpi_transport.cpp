@@ -75,7 +75,8 @@ void send_number(std::uint64_t value, int rank, Tag tag, Session& session) {
 
 class MpiTransport final : public RankTransport {
  public:
-  explicit MpiTransport(Session& session) : session_(session), busy_(static_cast<std::size_t>(session.size()), false) {}
+  explicit MpiTransport(Session& session)
+      : session_(session), busy_(static_cast<std::size_t>(session.size()), false), task_of_(busy_.size(), 0) {}
 
   std::size_t ranks() const override { return busy_.size() - 1; }
   std::size_t busy() const override { return busy_count_; }
@@ -88,6 +89,7 @@ class MpiTransport final : public RankTransport {
   void send_task(int rank, std::size_t position) override {
     send_number(position, rank, tag_task, session_);
     busy_[static_cast<std::size_t>(rank)] = true;
+    task_of_[static_cast<std::size_t>(rank)] = position;
     ++busy_count_;
   }
   std::optional<TaskOutcome> poll() override {
@@ -106,10 +108,12 @@ class MpiTransport final : public RankTransport {
       throw EngineError(fmt::format("rank {} sent an outcome rank 0 cannot read ({} bytes)", status.MPI_SOURCE, length));
     }
     const auto rank = static_cast<std::size_t>(status.MPI_SOURCE);
-    if (rank < busy_.size() && busy_[rank]) {
-      busy_[rank] = false;
-      --busy_count_;
+    if (rank >= busy_.size() || !busy_[rank] || outcome->index != task_of_[rank]) {
+      session_.mark_broken();
+      throw EngineError(fmt::format("rank {} sent the outcome of task {}, which it was not given", rank, outcome->index));
     }
+    busy_[rank] = false;
+    --busy_count_;
     return outcome;
   }
   void release() override {
@@ -127,6 +131,7 @@ class MpiTransport final : public RankTransport {
  private:
   Session& session_;
   std::vector<bool> busy_;
+  std::vector<std::size_t> task_of_;  // the position each busy rank is computing
   std::size_t busy_count_ = 0;
 };
 
