@@ -47,7 +47,8 @@ std::deque<std::size_t> pending_tasks(const std::vector<Task>& tasks, const std:
 FarmResult run_farm(Session& session, const std::vector<Task>& tasks, const WorkFunction& work,
                     const FarmOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  validate_tasks(tasks);
+  validate_tasks(tasks);  // every rank checks its arguments the same way before any message
+  const std::size_t root_threads = compute_threads(session, options);
   const Handshake handshake{stable_hash(options.settings), task_list_hash(tasks), options.shard};
   FarmResult result;
   result.processes = session.size();
@@ -83,7 +84,7 @@ FarmResult run_farm(Session& session, const std::vector<Task>& tasks, const Work
   const std::vector<std::size_t> positions = shard_positions(tasks, options.shard);
   std::deque<std::size_t> pending = pending_tasks(tasks, positions, known);
   result.resumed = positions.size() - pending.size();
-  result.root_threads = compute_threads(session, options);
+  result.root_threads = root_threads;
 
   std::size_t resumed_failures = 0;
   for (std::size_t position : positions) resumed_failures += known[position] && !known[position]->ok ? 1 : 0;

@@ -222,6 +222,19 @@ TEST(Farm, ShardsMergeIntoTheWholeAndGapsOrOverlapsAreNamed) {
   }
 }
 
+TEST(Farm, BadOptionsAreRefusedBeforeAJournalExists) {
+  ScratchDirectory dir;
+  CountingWork work(3);
+  try {
+    farm(numbered_tasks(3), work, options_for(dir / "out", -2));
+    ADD_FAILURE() << "-2 threads accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("-2 compute threads (valid range [0, inf)"), std::string::npos) << error.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  EXPECT_EQ(work.total_calls(), 0u);
+}
+
 TEST(AtomicFile, ReplacesTheTargetWholeAndLeavesNoTemporary) {
   ScratchDirectory dir;
   write_file_atomically(dir / "table.csv", "old\n");
