@@ -2,7 +2,7 @@
 // `mpirun --oversubscribe -np 3`. Independent facts: the tables are byte-identical to the
 // single-thread run (timing.csv, the timing, is apart); every task is computed exactly once (the
 // program's own trace files); rank 0 computes too; a failing task is a row and the others
-// complete; a mismatched journal is refused; a torn last line is ignored and its task recomputed;
+// complete; a rank that built another task list is named; a mismatched journal is refused; a torn last line is ignored and its task recomputed;
 // shard jobs merge into the whole table; progress only on a terminal. Kills: test_farm_kill_resume.
 #include <gtest/gtest.h>
 #include <fmt/format.h>
@@ -86,6 +86,19 @@ TEST_P(Failures, AFailingTaskIsARowAndTheOthersComplete) {
 
 INSTANTIATE_TEST_SUITE_P(Engine, Failures, ::testing::Values(alone, Launcher{"mpirun_np3", 3}),
                          [](const auto& param_info) { return param_info.param.name; });
+
+TEST(Ranks, ARankWithAnotherTaskListIsNamedAndNothingIsComputed) {
+  if (!mpirun_unavailable_reason().empty()) GTEST_SKIP() << mpirun_unavailable_reason();
+  ScratchDirectory dir;
+  const RunOutput run = run_toy_farm(Launcher{"np3", 3},
+                                     {"--out", (dir / "out").string(), "--tasks", "10", "--skew-rank", "2", "--trace",
+                                      (dir / "trace").string()},
+                                     dir.path());
+  EXPECT_EQ(run.end.exit_code, 3) << run.out << run.err;
+  EXPECT_NE(run.err.find("engine error: rank 2 built another farm than rank 0"), std::string::npos) << run.err;
+  EXPECT_TRUE(traced_computations(dir / "trace").empty());
+  EXPECT_FALSE(std::filesystem::exists(dir / "out/table.csv"));
+}
 
 TEST(Journal, AJournalOfAnotherTaskListOrSettingsIsRefusedWithTheReason) {
   ScratchDirectory dir;

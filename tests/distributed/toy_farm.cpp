@@ -3,9 +3,10 @@
 // random numbers drawn from a counter-based stream seeded by the task's key. It writes table.csv
 // (results only, in task order) and timing.csv (wall time and rank per task) into --out when every
 // task is done; `--merge` builds the same table from shard journals. Knobs for the tests: a task
-// that fails every k-th, a trace of which process computed what, a rank that dies.
+// that fails every k-th, a trace of which process computed what, a rank that dies, a rank that
+// builds another task list.
 //   toy_farm --out DIR [--tasks N] [--samples S] [--threads T] [--shard i/n] [--settings TEXT]
-//            [--fail-every K] [--trace DIR] [--lose-rank-after I] [--retry-failed]
+//            [--fail-every K] [--trace DIR] [--lose-rank-after I] [--skew-rank R] [--retry-failed]
 //   toy_farm --merge JOURNAL_OR_DIR... --out DIR
 // Exit 0 when the table is written, 2 for bad input or a journal that cannot serve, 3 for an
 // engine failure.
@@ -43,6 +44,7 @@ struct ToyOptions {
   std::size_t fail_every = 0;
   std::string trace;
   long lose_rank_after = -1;
+  int skew_rank = -1;
   bool retry_failed = false;
   std::vector<std::string> merge;
 };
@@ -113,7 +115,8 @@ int run(Session& session, const ToyOptions& options) {
   }
   if (!options.trace.empty()) std::filesystem::create_directories(options.trace);
   std::vector<std::string> keys;
-  for (std::size_t i = 0; i < options.tasks; ++i) keys.push_back(fmt::format("pi-{}-samples-{}", i, task_samples(i, options.samples)));
+  const std::size_t count = options.tasks + (session.rank() == options.skew_rank ? 1 : 0);
+  for (std::size_t i = 0; i < count; ++i) keys.push_back(fmt::format("pi-{}-samples-{}", i, task_samples(i, options.samples)));
   const std::vector<Task> tasks = make_tasks(keys);
   const int rank = session.rank();
   const WorkFunction work = [&](const Task& task) {
@@ -157,6 +160,7 @@ int main(int argc, char** argv) {
   app.add_option("--fail-every", options.fail_every, "Task i fails when (i + 1) % K == 0");
   app.add_option("--trace", options.trace, "Append each computed task's index to DIR/trace-<pid>.txt");
   app.add_option("--lose-rank-after", options.lose_rank_after, "A rank > 0 kills itself on a task >= I");
+  app.add_option("--skew-rank", options.skew_rank, "This rank builds one task more than the others");
   app.add_flag("--retry-failed", options.retry_failed, "Recompute tasks journaled as failed");
   app.add_option("--merge", options.merge, "Merge these shard journals (files or directories) into --out");
   CLI11_PARSE(app, argc, argv);
