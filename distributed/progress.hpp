@@ -1,0 +1,50 @@
+// Progress of a farm on a terminal: tasks done of the total (how many resumed from the journal),
+// failed, elapsed time and the estimated time to go, on one stderr line overwritten in place —
+// only when stderr is a terminal; quiet otherwise (logs, pipes, batch jobs). The estimate is the
+// elapsed time per task finished in this run times the tasks left: with p workers busy, tasks
+// finish p times as often, which the observed rate already contains.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <optional>
+#include <string>
+
+namespace ffrf::distributed {
+
+struct ProgressCounts {
+  std::size_t total = 0;     // tasks of this run (the shard's)
+  std::size_t resumed = 0;   // found in the journal at the start
+  std::size_t computed = 0;  // finished in this run
+  std::size_t failed = 0;    // of resumed + computed
+};
+
+// Seconds to go, from the rate of this run's completions; std::nullopt before the first one.
+std::optional<double> estimated_seconds_left(const ProgressCounts& counts, double elapsed_seconds);
+std::string format_duration(double seconds);  // "42s", "3m05s", "2h07m"
+// "label: 12/40 done (3 resumed), 1 failed, elapsed 1m02s, ETA 2m10s"
+std::string progress_line(const std::string& label, const ProgressCounts& counts, double elapsed_seconds);
+
+class ProgressMeter {
+ public:
+  // Shown when `terminal` (by default: stderr is a terminal).
+  ProgressMeter(std::string label, ProgressCounts start, std::optional<bool> terminal = std::nullopt);
+  ~ProgressMeter() { close(); }
+  ProgressMeter(const ProgressMeter&) = delete;
+  ProgressMeter& operator=(const ProgressMeter&) = delete;
+  void finished(bool ok);  // one more task computed
+  void tick();             // redraws (at most every 0.25 s) so that the elapsed time moves
+  void close();            // last redraw and a line end
+  const ProgressCounts& counts() const { return counts_; }
+
+ private:
+  void draw(bool force);
+  std::string label_;
+  ProgressCounts counts_;
+  bool shown_;
+  bool closed_ = false;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last_draw_{};
+};
+
+}  // namespace ffrf::distributed
