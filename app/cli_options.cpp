@@ -1,17 +1,40 @@
-// The converged reference for the crane commands (see crane_reference.hpp).
-#include "app/crane_reference.hpp"
+// The options the commands share and the lines they print on stderr (see cli_options.hpp).
+#include "app/cli_options.hpp"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
-#include <algorithm>
-#include <cmath>
+#include <cstdio>
+
+#include "app/commands.hpp"
 
 namespace ffrf::app {
 
-void add_reference_options(CLI::App& sub, ReferenceOptions& options) {
+void add_dynamics_options(CLI::App& sub, DynamicsOptions& options) {
+  sub.add_option("--integrator", options.integrator,
+                 "Integrator " + coupling::integrator_choices() +
+                     ": cvode = minimal coordinates (BDF ODE), ida = Lagrange multipliers (stabilized index-2 DAE), "
+                     "arkode = minimal coordinates (explicit Runge-Kutta), generalized-alpha = index-3, fixed step (needs --step); "
+                     "index1, baumgarte, projection = full coordinates as an index-1 ODE (BDF): unstabilized (the constraint "
+                     "drifts), with Baumgarte feedback (omega_b = 10 rad/s), or projected onto the constraint after every step")
+      ->capture_default_str();
+  sub.add_option("--rtol", options.rtol, "Relative tolerance, in (0, 1)")->capture_default_str();
+  sub.add_option("--atol", options.atol, "Absolute tolerance (scaled by each coordinate's typical size), in (0, 1)")
+      ->capture_default_str();
+  sub.add_option("--duration", options.duration, "Simulated time [s] (default: simulation.duration of the scene)");
+  sub.add_option("--max-order", options.max_order,
+                 "Largest BDF order of cvode and ida, 1-5 (default: 2 for an undamped boom, where BDF 3-5 are not "
+                 "stable on its undamped stiff modes; 5 otherwise)");
+  sub.add_option("--step", options.step,
+                 "Fixed time step [s] of generalized-alpha (required) and arkode (0: adaptive), at most the output interval")
+      ->capture_default_str();
+}
+
+void add_reference_options(CLI::App& sub, study::ReferenceOptions& options) {
   sub.add_option("--reference-elements", options.start_elements, "Reference: elements of the first level")
       ->capture_default_str();
-  sub.add_option("--reference-rtol", options.start_rtol, "Reference: CVODE relative tolerance of the first level")
+  sub.add_option("--reference-rtol", options.start_relative_tolerance,
+                 "Reference: CVODE relative tolerance of the first level")
       ->capture_default_str();
   sub.add_option("--reference-bound", options.bound,
                  "Reference: converged when the worst normalized RMS change between two levels is below this")
@@ -21,102 +44,103 @@ void add_reference_options(CLI::App& sub, ReferenceOptions& options) {
       ->capture_default_str();
 }
 
-std::optional<std::string> reference_options_error(const ReferenceOptions& o) {
-  if (o.start_elements < 1) {
-    return fmt::format("--reference-elements {}: not a valid element count (valid range [1, inf))", o.start_elements);
-  }
-  if (!(o.start_rtol > 0.0 && o.start_rtol < 1.0)) {
-    return fmt::format("--reference-rtol {}: not a valid tolerance (valid range (0, 1))", o.start_rtol);
-  }
-  if (!(o.bound > 0.0 && std::isfinite(o.bound))) {
-    return fmt::format("--reference-bound {}: not a valid bound (valid range (0, inf))", o.bound);
-  }
-  if (o.max_levels < 1 || o.max_levels > 6) {
-    return fmt::format("--reference-levels {}: not a valid level count (valid range [1, 6])", o.max_levels);
-  }
-  return std::nullopt;
+void add_stiffening_option(CLI::App& sub, std::string& stiffening) {
+  sub.add_option("--stiffening", stiffening,
+                 "Geometric stiffening none|static|centrifugal|both of every model and the reference (default: "
+                 "boom.stiffening of the scene)");
 }
 
-double error_window(const cases::Scene& scene, double duration) {
-  const double ramp = cases::ramp_end(scene);
-  return duration > ramp + 1e-9 ? ramp : 0.0;
-}
-
-cases::ConvergedReference compute_reference(const cases::Scene& scene, const ReferenceOptions& options, double duration) {
-  cases::ReferenceRequest request;
-  request.start_elements = options.start_elements;
-  request.start_relative_tolerance = options.start_rtol;
-  request.bound = options.bound;
-  request.max_levels = error_window(scene, duration) > 0.0 || cases::ramp_end(scene) == 0.0 ? options.max_levels : 1;
-  request.duration = duration;
-  return cases::converged_reference(scene, request);
-}
-
-std::string reference_label(const cases::ConvergedReference& r) {
-  return fmt::format("reference ({}, rtol {:g})", r.choice.label(), r.settings.relative_tolerance);
-}
-
-ModelRun reference_model_run(const cases::Scene& scene, const cases::ConvergedReference& r) {
-  ModelRun run;
-  run.choice = r.choice;
-  run.elastic_dof = 3 * r.choice.elements;
-  run.result = r.run;
-  run.statics.outputs = r.run.samples.front();  // the run starts at rest in static equilibrium
-  summarize_run(scene, r.settings.duration, run);
-  return run;
-}
-
-std::string reference_verdict(const cases::ConvergedReference& r) {
-  if (r.levels.size() < 2) {
-    return "**Not checked for convergence**: only one level was run (the run ends within the wave ramp, or "
-           "--reference-levels 1), so the reference is merely the finest model here.";
+std::string_view option_name(study::Setting setting) {
+  switch (setting) {
+    case study::Setting::relative_tolerance: return "--rtol";
+    case study::Setting::absolute_tolerance: return "--atol";
+    case study::Setting::duration: return "--duration";
+    case study::Setting::fixed_step: return "--step";
+    case study::Setting::max_order: return "--max-order";
+    case study::Setting::reference_elements: return "--reference-elements";
+    case study::Setting::reference_tolerance: return "--reference-rtol";
+    case study::Setting::reference_bound: return "--reference-bound";
+    case study::Setting::reference_levels: return "--reference-levels";
+    case study::Setting::tolerance: return "--tolerance";
+    case study::Setting::jobs: return "--jobs";
   }
-  const double change = r.levels.back().change;
-  if (r.converged) {
-    return fmt::format("**Converged**: the last refinement changed the outputs by {:.3g} (worst normalized RMS over the "
-                       "channels), below the bound {:g}; errors smaller than about {:.1g} cannot be resolved against it.",
-                       change, r.bound, change);
-  }
-  return fmt::format("**Not converged**: after {} levels the last refinement still changed the outputs by {:.3g}, above "
-                     "the bound {:g}; errors below about {:.1g} are not meaningful (raise --reference-levels).",
-                     r.levels.size(), change, r.bound, change);
+  return "?";
 }
 
-std::string reference_levels_markdown(const cases::ConvergedReference& r) {
-  std::string t = "| level | elements N | CVODE rtol | change vs previous level | steps | RHS evaluations | wall time [s] |\n"
-                  "|--:|--:|--:|--:|--:|--:|--:|\n";
-  for (std::size_t i = 0; i < r.levels.size(); ++i) {
-    const cases::ReferenceLevel& l = r.levels[i];
-    t += fmt::format("| {} | {} | {:g} | {} | {} | {} | {:.3g} |\n", i, l.elements, l.relative_tolerance,
-                     i == 0 ? std::string("-") : fmt::format("{:.3g}", l.change), l.stats.steps,
-                     l.stats.function_evaluations, l.stats.wall_seconds);
-  }
-  return t;
+std::string option_message(const study::SettingError& error) {
+  return fmt::format("{} {}: {}", option_name(error.setting()), error.value(), error.problem());
 }
 
-std::string reference_levels_text(const cases::ConvergedReference& r) {
-  std::string t = fmt::format("{:>5} {:>4} {:>8} {:>10} {:>8} {:>9}\n", "level", "N", "rtol", "change", "steps", "wall [s]");
-  for (std::size_t i = 0; i < r.levels.size(); ++i) {
-    const cases::ReferenceLevel& l = r.levels[i];
-    t += fmt::format("{:>5} {:>4} {:>8.0e} {:>10} {:>8} {:>9.3g}\n", i, l.elements, l.relative_tolerance,
-                     i == 0 ? std::string("-") : fmt::format("{:.3g}", l.change), l.stats.steps, l.stats.wall_seconds);
+coupling::IntegratorSettings integrator_settings(const DynamicsOptions& options, const scene::Scene& scene) {
+  const auto kind = coupling::parse_integrator(options.integrator);
+  if (!kind) {
+    throw BadOption(fmt::format("--integrator {}: unknown integrator; choose one of {}", options.integrator,
+                                coupling::integrator_choices()));
   }
-  t += fmt::format("{} (bound {:g})\n", r.converged ? "converged" : "NOT converged", r.bound);
-  return t;
+  study::DynamicsRequest request{*kind, options.rtol, options.atol, options.duration, options.step, options.max_order};
+  try {
+    coupling::IntegratorSettings settings = study::integrator_settings(scene, request);
+    settings.progress = stderr_is_terminal();
+    return settings;
+  } catch (const study::SettingError& error) {
+    throw BadOption(option_message(error));
+  }
 }
 
-void write_reference_json(JsonWriter& json, const cases::ConvergedReference& r) {
-  json.field("model", r.choice.label());
-  json.field("relative_tolerance", r.settings.relative_tolerance);
-  json.field("converged", r.converged).field("bound", r.bound).field("window_start_s", r.window_start);
-  json.key("levels").begin_array();
-  for (const cases::ReferenceLevel& l : r.levels) {
-    json.begin_object();
-    json.field("elements", l.elements).field("relative_tolerance", l.relative_tolerance).field("change", l.change);
-    json.field("steps", static_cast<double>(l.stats.steps)).field("wall_s", l.stats.wall_seconds);
-    json.end_object();
+void apply_stiffening(const std::string& stiffening, scene::Scene& scene) {
+  if (stiffening.empty()) return;
+  const auto parsed = scene::parse_stiffening(stiffening);
+  if (!parsed) {
+    throw BadOption(fmt::format("--stiffening {}: unknown stiffening; choose one of none, static, centrifugal, both", stiffening));
   }
-  json.end_array();
+  scene.boom.stiffening = *parsed;
+}
+
+std::optional<scene::Scene> load_scene(const std::string& path, const std::string& command, bool needs_base) {
+  try {
+    scene::Scene scene = scene::load_scene(path);
+    if (needs_base && !scene.has_base()) {
+      bad_input(command, fmt::format("{}: not a crane scene: it has neither a [hull] section (a crane needs [hull], [cargo], "
+                                     "[wire] and boom.angle/root_x/root_y) nor a [hub]; `ffrf modes` analyses a single beam",
+                                     path));
+      return std::nullopt;
+    }
+    return scene;
+  } catch (const scene::SceneError& error) {
+    for (const auto& problem : error.problems()) fmt::print(stderr, "{}\n", scene::format_problem(problem));
+    bad_input(command, fmt::format("{}: {} problem{} in the scene", path, error.problems().size(),
+                                   error.problems().size() == 1 ? "" : "s"));
+    return std::nullopt;
+  }
+}
+
+int bad_input(const std::string& command, const std::string& message) {
+  fmt::print(stderr, "ffrf {}: error: {}\n", command, message);
+  return exit_bad_input;
+}
+
+int scene_error(const std::string& command, const std::string& path, const scene::SceneError& error, const std::string& what) {
+  for (const auto& problem : error.problems()) fmt::print(stderr, "{}\n", scene::format_problem(problem));
+  return bad_input(command, fmt::format("{}: the scene cannot make {}", path, what));
+}
+
+int solver_failure(const std::string& command, const std::string& what, const coupling::SolverFailure& failure,
+                   const std::string& out) {
+  fmt::print(stderr, "ffrf {}: solver failure ({}): {}\n", command, what, failure.what());
+  if (!out.empty()) fmt::print(stderr, "ffrf {}: nothing written to {}\n", command, out);
+  return exit_solver_failure;
+}
+
+bool stderr_is_terminal() { return ::isatty(STDERR_FILENO) != 0; }
+
+void progress(const std::string& command, const std::string& what, bool newline) {
+  if (!stderr_is_terminal()) return;
+  if (what.empty()) {
+    fmt::print(stderr, "\r\033[K");  // clears the line
+  } else {
+    fmt::print(stderr, "\r\033[Kffrf {}: {}{}", command, what, newline ? "\n" : "");
+  }
+  std::fflush(stderr);
 }
 
 }  // namespace ffrf::app

@@ -1,50 +1,65 @@
-// The converged reference of `ffrf compare` and `ffrf sweep` (cases/reference_model.hpp): its
-// command-line options, the window errors are measured over, the reference as a ModelRun (for the
-// charts and statistics) and its convergence table for the reports.
+// What the commands share on the command line: the dynamics options (integrator, tolerances,
+// duration, step, BDF order) and the reference options, each mapped to the study's request; the
+// option name of each study setting (so the study's neutral messages name the flag); loading a
+// scene with every problem printed; and the error, failure and progress lines on stderr.
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 
-#include "app/crane_run.hpp"
-#include "app/json_writer.hpp"
-#include "cases/reference_model.hpp"
+#include "coupling/failure.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_loader.hpp"
+#include "study/reference.hpp"
+#include "study/run_pipeline.hpp"
 
 namespace ffrf::app {
 
-// Level i: nodal N = elements·2^i, CVODE rtol = rtol·10^(−i); stop when the worst normalized RMS
-// change between two levels is below the bound, or after max_levels levels.
-struct ReferenceOptions {
-  int start_elements = 8;
-  double start_rtol = 1e-6;
-  double bound = 1e-3;
-  int max_levels = 3;
+// Integrator options as typed on the command line.
+struct DynamicsOptions {
+  std::string integrator = "cvode";
+  double rtol = 1e-6;
+  double atol = 1e-6;
+  std::optional<double> duration;
+  double step = 0.0;  // fixed step [s] (generalized-alpha: required; arkode: 0 = adaptive)
+  int max_order = 0;  // largest BDF order of cvode/ida; 0 = from the physics
 };
-void add_reference_options(CLI::App& sub, ReferenceOptions& options);
-// The message naming a bad option, or nothing.
-std::optional<std::string> reference_options_error(const ReferenceOptions& options);
+void add_dynamics_options(CLI::App& sub, DynamicsOptions& options);
+void add_reference_options(CLI::App& sub, study::ReferenceOptions& options);
+// --stiffening none|static|centrifugal|both (empty: the scene's boom.stiffening).
+void add_stiffening_option(CLI::App& sub, std::string& stiffening);
 
-// Errors are measured after the wave ramp; a run that ends within the ramp (or calm water) is
-// measured over its whole length (like the statistics window of crane_series.hpp).
-double error_window(const cases::Scene& scene, double duration);
+// A command-line value that is not valid: the message names the option, the value and the range.
+struct BadOption : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
-// The reference for runs of `duration` seconds. A run that ends within the wave ramp has no
-// window to check convergence on: then only the first level is run (reported as not converged).
-// Throws coupling::SolverFailure.
-cases::ConvergedReference compute_reference(const cases::Scene& scene, const ReferenceOptions& options, double duration);
+// The integrator settings for a scene (progress on a terminal); throws BadOption.
+coupling::IntegratorSettings integrator_settings(const DynamicsOptions& options, const scene::Scene& scene);
+// Applies --stiffening to the scene; throws BadOption for an unknown name.
+void apply_stiffening(const std::string& stiffening, scene::Scene& scene);
+// The option a study setting comes from ("--rtol").
+std::string_view option_name(study::Setting setting);
+// "--rtol 0: not a valid tolerance (valid range (0, 1))"
+std::string option_message(const study::SettingError& error);
 
-// "reference (nodal N=32, rtol 1e-08)"
-std::string reference_label(const cases::ConvergedReference& reference);
-// The reference's run with statistics, as if it were one compared model (static = the t = 0 sample).
-ModelRun reference_model_run(const cases::Scene& scene, const cases::ConvergedReference& reference);
+// Loads the scene; prints every problem on stderr and returns nothing on failure (exit 2). With
+// `needs_base`, a scene without [hull] or [hub] is refused (the crane commands).
+std::optional<scene::Scene> load_scene(const std::string& path, const std::string& command, bool needs_base);
 
-// One sentence: converged or not, at which level, against which bound.
-std::string reference_verdict(const cases::ConvergedReference& reference);
-// The level table (elements, rtol, change, steps, wall time) as Markdown and as plain text.
-std::string reference_levels_markdown(const cases::ConvergedReference& reference);
-std::string reference_levels_text(const cases::ConvergedReference& reference);
-// Writes the reference's keys (model, settings, levels, converged) into an open JSON object.
-void write_reference_json(JsonWriter& json, const cases::ConvergedReference& reference);
+// "ffrf CMD: error: MESSAGE" on stderr; returns exit_bad_input.
+int bad_input(const std::string& command, const std::string& message);
+// Every problem of a scene that cannot make the crane, then the error line; returns exit_bad_input.
+int scene_error(const std::string& command, const std::string& path, const scene::SceneError& error, const std::string& what);
+// "ffrf CMD: solver failure (WHAT): ..." (and "nothing written to OUT"); returns exit_solver_failure.
+int solver_failure(const std::string& command, const std::string& what, const coupling::SolverFailure& failure,
+                   const std::string& out);
+
+// True when stderr is a terminal (progress lines are printed there only).
+bool stderr_is_terminal();
+// A progress line for a terminal: "\r\033[Kffrf CMD: WHAT" (nothing when stderr is not a terminal;
+// an empty WHAT clears the line).
+void progress(const std::string& command, const std::string& what, bool newline = false);
 
 }  // namespace ffrf::app

@@ -1,15 +1,16 @@
 // Text, JSON, CSV and gnuplot renderings of the spinning / prestressed modes and the Campbell diagram.
-#include "app/campbell_report.hpp"
+#include "report/campbell_report.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
 
-#include "app/json_writer.hpp"
+#include "report/json.hpp"
 #include "fem/analytic_rotating_beam.hpp"
 
-namespace ffrf::app {
+namespace ffrf::report {
 namespace {
 
 double hertz(double angular_frequency) { return angular_frequency / (2.0 * std::numbers::pi); }
@@ -66,10 +67,12 @@ std::string load_lines(const fem::BeamMesh& mesh, fem::Boundary boundary, double
   return out;
 }
 
-void rate_json(JsonWriter& json, const std::string& prefix, const std::optional<double>& omega2) {
-  json.field(prefix + "_omega2_rad2_per_s2", omega2);
-  json.field(prefix + "_rad_per_s", omega2 && *omega2 >= 0.0 ? std::optional<double>(rate(*omega2)) : std::nullopt);
-  json.field(prefix + "_growth_per_s", omega2 ? std::optional<double>(*omega2 < 0.0 ? rate(*omega2) : 0.0) : std::nullopt);
+Json optional_number(const std::optional<double>& value) { return value ? Json(*value) : Json(nullptr); }
+
+void rate_json(Json& json, const std::string& prefix, const std::optional<double>& omega2) {
+  json[prefix + "_omega2_rad2_per_s2"] = optional_number(omega2);
+  json[prefix + "_rad_per_s"] = optional_number(omega2 && *omega2 >= 0.0 ? std::optional<double>(rate(*omega2)) : std::nullopt);
+  json[prefix + "_growth_per_s"] = optional_number(omega2 ? std::optional<double>(*omega2 < 0.0 ? rate(*omega2) : 0.0) : std::nullopt);
 }
 
 std::string csv_rate(const std::optional<double>& omega2) {
@@ -81,7 +84,7 @@ std::string csv_growth(const std::optional<double>& omega2) {
 
 }  // namespace
 
-std::string spin_modes_table(const SpinModesResult& r, const ModesContext& context) {
+std::string spin_modes_table(const study::SpinModesResult& r, const ModesContext& context) {
   std::string out = beam_lines(r.mesh, r.boundary, r.dof, context);
   out += load_lines(r.mesh, r.boundary, r.spin_rate, r.hub_radius, r.axial_force, r.buckling_load);
   out += fmt::format("solver     {}, shift sigma = {:.6g} rad^2/s^2 (below the spectrum), {} modes, {:.3g} s\n\n",
@@ -92,7 +95,7 @@ std::string spin_modes_table(const SpinModesResult& r, const ModesContext& conte
                      spinning ? "omega stiffened [rad/s]" : "omega prestressed [rad/s]", "f [Hz]",
                      "omega series [rad/s]", "rel. error");
   for (std::size_t j = 0; j < r.rows.size(); ++j) {
-    const SpinModeRow& row = r.rows[j];
+    const study::SpinModeRow& row = r.rows[j];
     out += fmt::format("{:>4}  {:<8} {:>5}  {:>32}  {:>32}  {:>14}  {:>32}  {:>17}\n", j + 1, fem::to_string(row.kind),
                        row.order, rate_cell(row.plain_omega2), rate_cell(row.stiffened_omega2),
                        row.stiffened_omega2 >= 0.0 ? fmt::format("{:.8g}", hertz(rate(row.stiffened_omega2))) : "-",
@@ -101,44 +104,42 @@ std::string spin_modes_table(const SpinModesResult& r, const ModesContext& conte
   return out;
 }
 
-std::string spin_modes_json(const SpinModesResult& r, const ModesContext& context) {
-  JsonWriter json;
-  json.begin_object();
-  json.field("scene", context.scene_file).field("scene_name", context.scene_name);
-  json.field("elements", r.mesh.element_count).field("dof", r.dof);
-  json.field("boundary", fem::to_string(r.boundary)).field("solver", modal::to_string(r.solver));
-  json.field("spin_rad_per_s", r.spin_rate).field("hub_radius_m", r.hub_radius).field("axial_force_N", r.axial_force);
-  json.field("buckling_load_N", r.buckling_load);
-  json.field("load_ratio", r.buckling_load ? std::optional<double>(r.axial_force / *r.buckling_load) : std::nullopt);
-  json.field("buckled", r.buckling_load && r.axial_force <= -*r.buckling_load);
-  json.field("shift_rad2_per_s2", r.shift).field("solve_s", r.solve_seconds);
-  json.key("warnings").begin_array();
-  for (const std::string& warning : r.warnings) json.value(warning);
-  json.end_array();
-  json.key("modes").begin_array();
+std::string spin_modes_json(const study::SpinModesResult& r, const ModesContext& context) {
+  Json json{{"scene", context.scene_file},
+            {"scene_name", context.scene_name},
+            {"elements", r.mesh.element_count},
+            {"dof", r.dof},
+            {"boundary", fem::to_string(r.boundary)},
+            {"solver", modal::to_string(r.solver)},
+            {"spin_rad_per_s", r.spin_rate},
+            {"hub_radius_m", r.hub_radius},
+            {"axial_force_N", r.axial_force},
+            {"buckling_load_N", optional_number(r.buckling_load)},
+            {"load_ratio", optional_number(r.buckling_load ? std::optional<double>(r.axial_force / *r.buckling_load) : std::nullopt)},
+            {"buckled", r.buckling_load && r.axial_force <= -*r.buckling_load},
+            {"shift_rad2_per_s2", r.shift},
+            {"solve_s", r.solve_seconds},
+            {"warnings", r.warnings}};
+  json["modes"] = Json::array();
   for (std::size_t j = 0; j < r.rows.size(); ++j) {
-    const SpinModeRow& row = r.rows[j];
-    json.begin_object();
-    json.field("mode", static_cast<int>(j + 1)).field("kind", fem::to_string(row.kind)).field("order", row.order);
-    json.field("stable", row.stiffened_omega2 >= 0.0);
-    rate_json(json, "stiffened", row.stiffened_omega2);
-    rate_json(json, "unstiffened", row.plain_omega2);
-    rate_json(json, "series", row.reference_omega2);
-    json.field("relative_error", relative_error(row.stiffened_omega2, row.reference_omega2));
-    json.field("axial_energy_share", row.axial_energy_share);
-    json.end_object();
+    const study::SpinModeRow& row = r.rows[j];
+    Json mode{{"mode", j + 1}, {"kind", fem::to_string(row.kind)}, {"order", row.order}, {"stable", row.stiffened_omega2 >= 0.0}};
+    rate_json(mode, "stiffened", row.stiffened_omega2);
+    rate_json(mode, "unstiffened", row.plain_omega2);
+    rate_json(mode, "series", row.reference_omega2);
+    mode["relative_error"] = optional_number(relative_error(row.stiffened_omega2, row.reference_omega2));
+    mode["axial_energy_share"] = row.axial_energy_share;
+    json["modes"].push_back(std::move(mode));
   }
-  json.end_array();
-  json.end_object();
-  return json.str();
+  return json_text(json);
 }
 
-std::string spin_modes_csv(const SpinModesResult& r) {
+std::string spin_modes_csv(const study::SpinModesResult& r) {
   std::string out =
       "mode,kind,order,unstiffened_rad_per_s,unstiffened_growth_per_s,stiffened_rad_per_s,stiffened_growth_per_s,"
       "series_rad_per_s,series_growth_per_s,relative_error\n";
   for (std::size_t j = 0; j < r.rows.size(); ++j) {
-    const SpinModeRow& row = r.rows[j];
+    const study::SpinModeRow& row = r.rows[j];
     const auto error = relative_error(row.stiffened_omega2, row.reference_omega2);
     out += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", j + 1, fem::to_string(row.kind), row.order,
                        csv_rate(row.plain_omega2), csv_growth(row.plain_omega2), csv_rate(row.stiffened_omega2),
@@ -148,7 +149,7 @@ std::string spin_modes_csv(const SpinModesResult& r) {
   return out;
 }
 
-std::string campbell_table(const CampbellResult& r, const ModesContext& context) {
+std::string campbell_table(const study::CampbellResult& r, const ModesContext& context) {
   std::string out = beam_lines(r.mesh, r.boundary, r.dof, context);
   const double first = r.points.empty() ? 0.0 : r.points.front().spin_rate;
   const double last = r.points.empty() ? 0.0 : r.points.back().spin_rate;
@@ -166,7 +167,7 @@ std::string campbell_table(const CampbellResult& r, const ModesContext& context)
                        fmt::format("mode {} series", j));
   }
   out += '\n';
-  for (const CampbellPoint& p : r.points) {
+  for (const study::CampbellPoint& p : r.points) {
     out += fmt::format("{:>12.6g}", p.spin_rate);
     for (std::size_t j = 0; j < static_cast<std::size_t>(r.bending_count); ++j) {
       out += fmt::format("  {:>19}  {:>19}  {:>19}", short_cell(p.stiffened_omega2[j]), short_cell(p.plain_omega2[j]),
@@ -177,32 +178,32 @@ std::string campbell_table(const CampbellResult& r, const ModesContext& context)
   return out;
 }
 
-std::string campbell_json(const CampbellResult& r, const ModesContext& context) {
-  JsonWriter json;
-  json.begin_object();
-  json.field("scene", context.scene_file).field("scene_name", context.scene_name);
-  json.field("elements", r.mesh.element_count).field("boundary", fem::to_string(r.boundary));
-  json.field("solver", modal::to_string(r.solver)).field("hub_radius_m", r.hub_radius);
-  json.field("axial_force_N", r.axial_force).field("bending_modes", r.bending_count).field("solve_s", r.solve_seconds);
-  json.key("campbell").begin_array();
-  for (const CampbellPoint& p : r.points) {
-    json.begin_object().field("spin_rad_per_s", p.spin_rate);
-    json.key("modes").begin_array();
+std::string campbell_json(const study::CampbellResult& r, const ModesContext& context) {
+  Json json{{"scene", context.scene_file},
+            {"scene_name", context.scene_name},
+            {"elements", r.mesh.element_count},
+            {"boundary", fem::to_string(r.boundary)},
+            {"solver", modal::to_string(r.solver)},
+            {"hub_radius_m", r.hub_radius},
+            {"axial_force_N", r.axial_force},
+            {"bending_modes", r.bending_count},
+            {"solve_s", r.solve_seconds}};
+  json["campbell"] = Json::array();
+  for (const study::CampbellPoint& p : r.points) {
+    Json point{{"spin_rad_per_s", p.spin_rate}, {"modes", Json::array()}};
     for (std::size_t j = 0; j < static_cast<std::size_t>(r.bending_count); ++j) {
-      json.begin_object().field("order", static_cast<int>(j + 1));
-      rate_json(json, "stiffened", p.stiffened_omega2[j]);
-      rate_json(json, "unstiffened", p.plain_omega2[j]);
-      rate_json(json, "series", p.reference_omega2[j]);
-      json.end_object();
+      Json mode{{"order", j + 1}};
+      rate_json(mode, "stiffened", p.stiffened_omega2[j]);
+      rate_json(mode, "unstiffened", p.plain_omega2[j]);
+      rate_json(mode, "series", p.reference_omega2[j]);
+      point["modes"].push_back(std::move(mode));
     }
-    json.end_array().end_object();
+    json["campbell"].push_back(std::move(point));
   }
-  json.end_array();
-  json.end_object();
-  return json.str();
+  return json_text(json);
 }
 
-std::string campbell_csv(const CampbellResult& r) {
+std::string campbell_csv(const study::CampbellResult& r) {
   std::string out = "spin_rad_per_s";
   for (int j = 1; j <= r.bending_count; ++j) {
     for (const char* variant : {"stiffened", "unstiffened", "series"}) {
@@ -210,7 +211,7 @@ std::string campbell_csv(const CampbellResult& r) {
     }
   }
   out += '\n';
-  for (const CampbellPoint& p : r.points) {
+  for (const study::CampbellPoint& p : r.points) {
     out += fmt::format("{:.12g}", p.spin_rate);
     for (std::size_t j = 0; j < static_cast<std::size_t>(r.bending_count); ++j) {
       for (const std::optional<double>& omega2 :
@@ -223,7 +224,7 @@ std::string campbell_csv(const CampbellResult& r) {
   return out;
 }
 
-std::string campbell_script(const CampbellResult& r, const std::string& terminal) {
+std::string campbell_script(const study::CampbellResult& r, const std::string& terminal) {
   std::string script = fmt::format(
       "# Drawn by `ffrf modes --spin-range --out`; restyle and rerun with `gnuplot campbell.gp` in this directory.\n"
       "set terminal {} size 1000,650 font ',11'\n"
@@ -254,4 +255,4 @@ std::string campbell_script(const CampbellResult& r, const std::string& terminal
   return script + plot + "\n";
 }
 
-}  // namespace ffrf::app
+}  // namespace ffrf::report

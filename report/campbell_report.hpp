@@ -8,20 +8,20 @@
 
 #include <string>
 
-#include "app/campbell_analysis.hpp"
-#include "app/modes_report.hpp"
+#include "study/campbell.hpp"
+#include "report/modes_report.hpp"
 
-namespace ffrf::app {
+namespace ffrf::report {
 
-std::string spin_modes_table(const SpinModesResult& result, const ModesContext& context);
-std::string spin_modes_json(const SpinModesResult& result, const ModesContext& context);
-std::string spin_modes_csv(const SpinModesResult& result);
+std::string spin_modes_table(const study::SpinModesResult& result, const ModesContext& context);
+std::string spin_modes_json(const study::SpinModesResult& result, const ModesContext& context);
+std::string spin_modes_csv(const study::SpinModesResult& result);
 
-std::string campbell_table(const CampbellResult& result, const ModesContext& context);
-std::string campbell_json(const CampbellResult& result, const ModesContext& context);
+std::string campbell_table(const study::CampbellResult& result, const ModesContext& context);
+std::string campbell_json(const study::CampbellResult& result, const ModesContext& context);
 // spin_rad_per_s, then per bending mode j: modeJ_{stiffened,unstiffened,series}_rad_per_s (empty when
 // unstable or missing) and modeJ_{stiffened,unstiffened,series}_growth_per_s (0 when stable).
-std::string campbell_csv(const CampbellResult& result);
-std::string campbell_script(const CampbellResult& result, const std::string& terminal);
+std::string campbell_csv(const study::CampbellResult& result);
+std::string campbell_script(const study::CampbellResult& result, const std::string& terminal);
 
-}  // namespace ffrf::app
+}  // namespace ffrf::report

@@ -1,18 +1,21 @@
-// The model list of `ffrf compare` and its reports (see compare_report.hpp).
-#include "app/compare_report.hpp"
+// The reports of `ffrf compare` (see compare_report.hpp).
+#include "report/compare_report.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <numbers>
 #include <stdexcept>
 
-#include "app/crane_charts.hpp"
-#include "app/json_writer.hpp"
+#include "report/crane_charts.hpp"
+#include "report/reference_report.hpp"
 
-namespace ffrf::app {
+namespace ffrf::report {
 namespace {
 
 using coupling::all_channels;
+using study::Comparison;
+using study::ModelRun;
 using coupling::channel_name;
 using coupling::channel_unit;
 
@@ -36,19 +39,18 @@ std::string settings_text(const RunContext& c) {
 std::vector<std::pair<const ModelRun*, std::string>> all_runs(const Comparison& c) {
   std::vector<std::pair<const ModelRun*, std::string>> rows;
   for (const ModelRun& run : c.runs) rows.emplace_back(&run, run.choice.label());
-  rows.emplace_back(&c.reference_run, reference_label(c.reference));
+  rows.emplace_back(&c.reference.run, reference_label(c.reference));
   return rows;
 }
 
-std::string static_table(const Comparison& c) {
+std::string static_table(const scene::Scene& scene, const Comparison& c) {
   std::string t =
       "| model | elastic DOFs | draft at mid-length [m] | trim [deg] | tip transverse [m] | tip axial [m] | wire stretch [m] | "
       "wire tension [N] | joint moment at B [N m] |\n|---|--:|--:|--:|--:|--:|--:|--:|--:|\n";
-  const cases::Scene& scene = *c.context.scene;
   for (const auto& [run, label] : all_runs(c)) {
     const coupling::CraneOutputs& o = run->static_outputs();
     t += fmt::format("| {} | {} | {:.4f} | {:+.4f} | {:+.5f} | {:+.5f} | {:.5f} | {} | {} |\n", label, run->elastic_dof,
-                     draft_at_mid_length(scene, o), o.hull.z() * degrees, o.tip_deflection.y(), o.tip_deflection.x(),
+                     study::draft_at_mid_length(scene, o), o.hull.z() * degrees, o.tip_deflection.y(), o.tip_deflection.x(),
                      scene.wire ? o.wire_length - scene.wire->unstretched_length : 0.0, md(o.wire_tension), md(o.joint_reaction.z()));
   }
   return t;
@@ -68,7 +70,7 @@ std::string error_table(const Comparison& c, bool normalized) {
       const coupling::ChannelError& e = c.errors[m][channel];
       t += fmt::format(" {} |", sci(normalized ? e.normalized_rms : e.max_abs));
     }
-    if (normalized) t += fmt::format(" {} | {} |", sci(c.errors[m].daf_error), sci(c.errors[m].worst_normalized_rms()));
+    if (normalized) t += fmt::format(" {} | {} |", sci(c.errors[m].daf_error), sci(c.worst[m].error));
     t += "\n";
   }
   return t;
@@ -99,36 +101,33 @@ std::string cost_table(const Comparison& c) {
 
 }  // namespace
 
-std::vector<ComparedModel> compared_models() {
-  using cases::BoomKind;
-  std::vector<ComparedModel> models{
-      {{BoomKind::rigid, 1}, true},
-      {{BoomKind::nodal, 1}, true},  // the paper's one-element boom
-      {{BoomKind::nodal, 16}, false},
-  };
-  for (const bool static_modes : {false, true}) {
-    for (const int k : {1, 2, 4}) {
-      models.push_back({{BoomKind::modal, 16, k, static_modes}, k == 2});
-    }
-  }
-  return models;
-}
-
-Comparison make_comparison(RunContext context, cases::ConvergedReference reference, std::vector<ModelRun> runs,
-                           std::vector<bool> plotted) {
-  const double window = error_window(*context.scene, context.settings.duration);
-  ModelRun reference_run = reference_model_run(*context.scene, reference);
-  Comparison c{std::move(context), std::move(reference), std::move(reference_run), window, std::move(runs),
-               std::move(plotted), {}};
-  for (const ModelRun& run : c.runs) c.errors.push_back(coupling::compare_runs(run.result, c.reference.run, window));
-  return c;
-}
-
 std::string timeseries_name(const ModelRun& run) { return "timeseries_" + slug(run.choice.label()) + ".csv"; }
 
-std::string compare_markdown(const Comparison& c) {
-  const RunContext& ctx = c.context;
-  const cases::Scene& scene = *ctx.scene;
+namespace {
+
+// What the boom models (all of them, the reference included) say about geometric stiffening.
+std::string stiffening_sentence(const scene::Scene& scene) {
+  switch (scene.boom.stiffening) {
+    case scene::Stiffening::none:
+      return "The boom is linear-elastic in every model: geometric stiffening from its axial compression is not modelled "
+             "(--stiffening static models it).";
+    case scene::Stiffening::static_load:
+      return "Every model, the reference included, models the static (prestress) geometric stiffening of the boom under its "
+             "own weight and the hanging cargo.";
+    case scene::Stiffening::centrifugal:
+      return "Every model, the reference included, models the centrifugal geometric stiffening of the spinning boom; the "
+             "static prestress is not modelled.";
+    case scene::Stiffening::both:
+      return "Every model, the reference included, models both the static (prestress) and the centrifugal geometric "
+             "stiffening of the boom.";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string compare_markdown(const RunContext& ctx, const Comparison& c) {
+  const scene::Scene& scene = *ctx.scene;
   std::string labels, plotted;
   for (std::size_t m = 0; m < c.runs.size(); ++m) {
     labels += (m == 0 ? "" : ", ") + c.runs[m].choice.label();
@@ -137,24 +136,27 @@ std::string compare_markdown(const Comparison& c) {
   std::string r = fmt::format("# Boom models compared: {}\n\n", scene.name.empty() ? ctx.scene_file : scene.name);
   r += fmt::format("- scene: `{}`{}\n", ctx.scene_file, scene.description.empty() ? "" : " — " + scene.description);
   r += fmt::format("- models: {}; modal bases on the N = 16 mesh\n", labels);
-  r += fmt::format("- settings: {}; each model starts from its own static equilibrium\n", settings_text(ctx));
+  r += fmt::format("- settings: {}; each model starts from the scene's initial state{}\n", settings_text(ctx),
+                   scene.simulation.cargo_lift > 0.0
+                       ? fmt::format(" (its static equilibrium, the cargo raised {:g} m)", scene.simulation.cargo_lift)
+                       : std::string(" (its own static equilibrium)"));
   r += fmt::format("- errors against: {}\n", reference_label(c.reference));
   r += fmt::format("- ffrf {}, {}\n\n", ffrf_version(), ctx.date);
-  r += "The boom is linear-elastic in every model: geometric stiffening from its axial compression is not modelled.\n\n";
+  r += stiffening_sentence(scene) + "\n\n";
   r += "## Converged reference\n\n";
   r += fmt::format("Nodal model refined level by level (elements doubled, CVODE tolerance tightened 10×) until the worst "
                    "normalized RMS change of the outputs between two levels, {}, falls below the bound. ",
                    window_text(c.window_start));
   r += reference_verdict(c.reference) + "\n\n" + reference_levels_markdown(c.reference) + "\n";
-  r += "## Static equilibrium\n\n" + static_table(c) + "\n";
+  r += "## Static equilibrium\n\n" + static_table(scene, c) + "\n";
   r += fmt::format("## Time histories\n\nDrawn: {}and the reference (every model is in the tables and has its CSV). Motions "
                    "are displacements from each model's static equilibrium.\n\n", plotted);
   for (const std::string& name : crane_chart_names()) r += fmt::format("![{0}]({0}.png)\n\n", name);
   r += fmt::format("## Errors against the reference\n\nPer output channel, {}: normalized RMS error = RMS(x − x_ref) / "
                    "RMS(x_ref − mean x_ref); DAF error = |DAF − DAF_ref| / DAF_ref of the wire tension's dynamic "
                    "amplification factor (max tension / static tension) in that window; worst = the largest normalized "
-                   "RMS error over the channels. Pitch channels in rad.\n\n",
-                   window_text(c.window_start));
+                   "RMS error over the judged outputs ({}: docs/validation.md says why). Pitch channels in rad.\n\n",
+                   window_text(c.window_start), study::output_list(c.judged));
   r += "### Normalized RMS error\n\n" + error_table(c, true) + "\n";
   r += "### Maximum absolute error\n\n" + error_table(c, false) + "\n";
   r += "## Wire rope\n\nDynamic amplification factor here: the maximum tension over the whole run divided by the static "
@@ -167,57 +169,55 @@ std::string compare_markdown(const Comparison& c) {
   return r;
 }
 
-std::string compare_json(const Comparison& c) {
-  JsonWriter json;
-  json.begin_object();
-  json.field("command", "compare");
-  json.key("provenance").begin_object();
-  write_settings_json(json, c.context);
-  json.end_object();
-  json.key("reference").begin_object();
-  write_reference_json(json, c.reference);
-  json.field("timeseries", reference_timeseries_name);
-  json.end_object();
-  json.field("error_window_start_s", c.window_start);
-  json.key("models").begin_array();
+std::string compare_json(const RunContext& ctx, const Comparison& c) {
+  Json json;
+  json["command"] = "compare";
+  json["provenance"] = settings_json(ctx);
+  json["geometric_stiffening"] = scene::to_string(ctx.scene->boom.stiffening);
+  json["reference"] = reference_json(c.reference);
+  json["reference"]["timeseries"] = reference_timeseries_name;
+  json["error_window_start_s"] = c.window_start;
+  json["judged_outputs"] = Json::array();
+  for (const auto channel : c.judged) json["judged_outputs"].push_back(channel_name(channel));
+  json["models"] = Json::array();
   for (std::size_t m = 0; m < c.runs.size(); ++m) {
-    json.begin_object();
-    write_model_json(json, *c.context.scene, c.runs[m]);
-    json.field("timeseries", timeseries_name(c.runs[m]));
-    json.key("errors_to_reference").begin_object();
+    Json model = model_json(*ctx.scene, c.runs[m]);
+    model["timeseries"] = timeseries_name(c.runs[m]);
+    Json errors = Json::object();
     for (const auto channel : all_channels) {
       const coupling::ChannelError& e = c.errors[m][channel];
-      json.key(channel_name(channel)).begin_object();
-      json.field("normalized_rms", e.normalized_rms).field("max_abs", e.max_abs).field("normalized_max", e.normalized_max);
-      json.end_object();
+      errors[std::string(channel_name(channel))] =
+          Json{{"normalized_rms", e.normalized_rms}, {"max_abs", e.max_abs}, {"normalized_max", e.normalized_max}};
     }
-    json.field("daf_error", c.errors[m].daf_error).field("worst_normalized_rms", c.errors[m].worst_normalized_rms());
-    json.end_object();
-    json.end_object();
+    errors["daf_error"] = c.errors[m].daf_error;
+    errors["worst_normalized_rms"] = c.worst[m].error;
+    errors["worst_output"] = channel_name(c.worst[m].channel);
+    model["errors_to_reference"] = std::move(errors);
+    json["models"].push_back(std::move(model));
   }
-  json.end_array();
-  json.end_object();
-  return json.str();
+  return json_text(json);
 }
 
-std::string compare_text(const Comparison& c) {
-  std::string t = fmt::format("scene       {}\nsettings    {}\nerrors      {} against {}\n\n", c.context.scene_file,
-                              settings_text(c.context), window_text(c.window_start), reference_label(c.reference));
+std::string compare_text(const RunContext& ctx, const Comparison& c) {
+  std::string t = fmt::format("scene       {}\nsettings    {}, stiffening {}\nerrors      {} against {}\n\n", ctx.scene_file,
+                              settings_text(ctx), scene::to_string(ctx.scene->boom.stiffening), window_text(c.window_start),
+                              reference_label(c.reference));
   t += "converged reference\n" + reference_levels_text(c.reference) + "\n";
   t += fmt::format("{:<24} {:>5} {:>11} {:>10} {:>10} {:>10} {:>10} {:>9} {:>11}\n", "model", "DOFs", "tip v [m]",
                    "cargo hv", "wire T", "DAF err", "worst", "wall [s]", "x real time");
-  auto row = [&](const std::string& label, const ModelRun& run, const coupling::RunErrors* e) {
+  auto row = [&](const std::string& label, const ModelRun& run, const coupling::RunErrors* e, const study::WorstError* w) {
     t += fmt::format("{:<24} {:>5} {:>+11.5f} {:>10} {:>10} {:>10} {:>10} {:>9.3g} {:>11.4g}\n", label, run.elastic_dof,
                      run.static_outputs().tip_deflection.y(),
                      e ? sci((*e)[coupling::OutputChannel::cargo_heave].normalized_rms) : "-",
                      e ? sci((*e)[coupling::OutputChannel::wire_tension].normalized_rms) : "-",
-                     e ? sci(e->daf_error) : "-", e ? sci(e->worst_normalized_rms()) : "-", run.result.stats.wall_seconds,
+                     e ? sci(e->daf_error) : "-", w ? sci(w->error) : "-", run.result.stats.wall_seconds,
                      run.real_time_factor);
   };
-  for (std::size_t m = 0; m < c.runs.size(); ++m) row(c.runs[m].choice.label(), c.runs[m], &c.errors[m]);
-  row("(reference)", c.reference_run, nullptr);
-  t += "(cargo hv, wire T: normalized RMS error of cargo heave and wire tension; worst: over the seven channels)\n";
+  for (std::size_t m = 0; m < c.runs.size(); ++m) row(c.runs[m].choice.label(), c.runs[m], &c.errors[m], &c.worst[m]);
+  row("(reference)", c.reference.run, nullptr, nullptr);
+  t += fmt::format("(cargo hv, wire T: normalized RMS error of cargo heave and wire tension; worst: over {})\n",
+                   study::output_list(c.judged));
   return t;
 }
 
-}  // namespace ffrf::app
+}  // namespace ffrf::report

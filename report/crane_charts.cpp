@@ -1,5 +1,5 @@
 // gnuplot scripts of the crane time-history charts (see crane_charts.hpp).
-#include "app/crane_charts.hpp"
+#include "report/crane_charts.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -7,10 +7,10 @@
 #include <array>
 #include <stdexcept>
 
-#include "app/crane_series.hpp"
-#include "app/gnuplot.hpp"
+#include "study/output_series.hpp"
+#include "report/gnuplot.hpp"
 
-namespace ffrf::app {
+namespace ffrf::report {
 namespace {
 
 struct Curve {
@@ -44,23 +44,6 @@ const Chart& chart(const std::string& name) {
   throw std::out_of_range("no chart " + name);
 }
 
-// gnuplot single-quoted string: a quote is doubled.
-std::string quoted(const std::string& text) {
-  std::string q = "'";
-  for (char c : text) q += c == '\'' ? std::string("''") : std::string(1, c);
-  return q + "'";
-}
-
-// gnuplot double-quoted string (where \n is a line break) of lines.
-std::string lines(const std::string& first, const std::string& second) {
-  std::string q = "\"";
-  for (char c : first + (second.empty() ? "" : "\n" + second)) {
-    if (c == '"' || c == '\\') q += '\\';
-    q += c == '\n' ? std::string("\\n") : std::string(1, c);
-  }
-  return q + "\"";
-}
-
 }  // namespace
 
 std::vector<std::string> crane_chart_names() {
@@ -82,19 +65,19 @@ std::string crane_chart_script(const std::string& name, const std::vector<ChartS
       "set title {3} noenhanced\n"
       "set xlabel 'time [s]'\n"
       "set ylabel {4} noenhanced\n",
-      command, c.name, terminal, lines(c.title, subtitle), quoted(c.ylabel));
+      command, c.name, terminal, gnuplot_lines(c.title, subtitle), gnuplot_quoted(c.ylabel));
   std::vector<std::string> plots;
   for (std::size_t m = 0; m < sources.size(); ++m) {
     for (std::size_t k = 0; k < c.curves.size(); ++k) {
       const Curve& curve = c.curves[k];
       if (curve.column == nullptr) continue;
-      const std::size_t column = series_index(curve.column) + 2;  // time_s is column 1
+      const std::size_t column = study::series_index(curve.column) + 2;  // time_s is column 1
       const std::string using_ = curve.scale == 1.0 ? fmt::format("1:{}", column)
                                                     : fmt::format("1:(${} * {})", column, curve.scale);
       // Colour and dash pattern by model (overlapping curves stay visible), width by curve.
       plots.push_back(fmt::format("{} skip 1 using {} with lines lw {} lc {} dt {} title {} noenhanced",
-                                  quoted(sources[m].csv), using_, k == 0 ? 2 : 1, m + 1, m + 1,
-                                  quoted(sources[m].label + curve.suffix)));
+                                  gnuplot_quoted(sources[m].csv), using_, k == 0 ? 2 : 1, m + 1, m + 1,
+                                  gnuplot_quoted(sources[m].label + curve.suffix)));
     }
   }
   script += "plot " + fmt::format("{}", fmt::join(plots, ", \\\n     ")) + "\n";
@@ -110,4 +93,4 @@ void draw_crane_charts(const StagedDirectory& out, const std::vector<ChartSource
   }
 }
 
-}  // namespace ffrf::app
+}  // namespace ffrf::report

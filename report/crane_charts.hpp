@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "app/output_directory.hpp"
+#include "report/output_directory.hpp"
 
-namespace ffrf::app {
+namespace ffrf::report {
 
 struct ChartSource {
   std::string csv;    // file name in the output directory
@@ -27,4 +27,4 @@ std::string crane_chart_script(const std::string& name, const std::vector<ChartS
 void draw_crane_charts(const StagedDirectory& out, const std::vector<ChartSource>& sources, const std::string& subtitle,
                        const std::string& command);
 
-}  // namespace ffrf::app
+}  // namespace ffrf::report

@@ -1,5 +1,5 @@
 // Staged output directory (see output_directory.hpp).
-#include "app/output_directory.hpp"
+#include "report/output_directory.hpp"
 
 #include <fmt/format.h>
 #include <fstream>
@@ -8,7 +8,7 @@
 #include <unistd.h>
 #include <vector>
 
-namespace ffrf::app {
+namespace ffrf::report {
 
 namespace fs = std::filesystem;
 
@@ -60,4 +60,4 @@ void StagedDirectory::commit() {
   committed_ = true;
 }
 
-}  // namespace ffrf::app
+}  // namespace ffrf::report

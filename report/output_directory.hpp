@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace ffrf::app {
+namespace ffrf::report {
 
 class StagedDirectory {
  public:
@@ -32,4 +32,4 @@ class StagedDirectory {
   bool committed_ = false;
 };
 
-}  // namespace ffrf::app
+}  // namespace ffrf::report

@@ -1,15 +1,22 @@
 // Text, Markdown and JSON reports of `ffrf recommend` (see recommend_report.hpp).
-#include "app/recommend_report.hpp"
+#include "report/recommend_report.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 
-#include "app/crane_reference.hpp"
-#include "app/json_writer.hpp"
+#include "report/json.hpp"
+#include "report/reference_report.hpp"
+#include "study/error_measure.hpp"
 
-namespace ffrf::app {
+namespace ffrf::report {
 namespace {
+
+using study::Candidate;
+using study::CandidateStatus;
+using study::Recommendation;
+using study::output_list;
 
 std::string number(double value, const char* format = "{:.3g}") {
   return std::isfinite(value) ? fmt::format(fmt::runtime(format), value) : std::string("-");
@@ -18,12 +25,12 @@ std::string number(double value, const char* format = "{:.3g}") {
 std::string decision_sentence(const RecommendContext& ctx, const Recommendation& rec) {
   if (!rec.chosen) {
     return fmt::format("No candidate kept its error on {} within τ = {:g}: model the scene with the reference ({}).",
-                       output_list(ctx.request.outputs), ctx.request.tolerance, rec.reference.choice.label());
+                       output_list(rec.outputs), ctx.tolerance, rec.reference.choice.label());
   }
   const Candidate& c = rec.candidates[*rec.chosen];
   std::string s = fmt::format("Recommended: {} at rtol {:g}: error {:.3g} (worst: {}) ≤ τ = {:g} against {}; {:.3g}× less "
                               "solver work (steps × state size) and {:.3g}× less wall time than the reference.",
-                              c.label(), rec.reasoning.relative_tolerance, c.error, c.worst_output, ctx.request.tolerance,
+                              c.label(), rec.reasoning.relative_tolerance, c.error, c.worst_output, ctx.tolerance,
                               reference_label(rec.reference), rec.work_speedup(), rec.wall_speedup());
   if (rec.next_cheaper) {
     const Candidate& n = rec.candidates[*rec.next_cheaper];
@@ -37,7 +44,7 @@ std::string decision_sentence(const RecommendContext& ctx, const Recommendation&
 
 std::string run_line(const RecommendContext& ctx, const Recommendation& rec) {
   return rec.chosen ? run_command_line(ctx.scene_file, rec.candidates[*rec.chosen], rec.reasoning.relative_tolerance,
-                                       ctx.request.duration, rec.reference_scene)
+                                       rec.duration, rec.reference_scene)
                     : std::string();
 }
 
@@ -60,16 +67,10 @@ bool ran(const Candidate& c) {
 
 }  // namespace
 
-std::string output_list(const std::vector<coupling::OutputChannel>& outputs) {
-  std::string s;
-  for (const auto channel : outputs) s += (s.empty() ? "" : ",") + std::string(coupling::channel_name(channel));
-  return s;
-}
-
 std::string recommend_text(const RecommendContext& ctx, const Recommendation& rec) {
   std::string t = fmt::format("scene       {}\ntolerance   {:g} (worst normalized RMS error over {}, after t = {:g} s)\n"
                               "reference   {}\n\n",
-                              ctx.scene_file, ctx.request.tolerance, output_list(ctx.request.outputs),
+                              ctx.scene_file, ctx.tolerance, output_list(rec.outputs),
                               rec.reference.window_start, reference_label(rec.reference));
   t += "reasoning\n";
   for (const std::string& s : rec.reasoning.statements) t += "  - " + s + "\n";
@@ -82,9 +83,8 @@ std::string recommend_text(const RecommendContext& ctx, const Recommendation& re
                      r ? number(c.wall_seconds) : "-", outcome(c));
   }
   t += fmt::format("{:<50} {:>5} {:>9} {:>9} {:>7} {:>9} {:>8}  reference\n", reference_label(rec.reference),
-                   3 * rec.reference.choice.elements, "-", "-", rec.reference.run.stats.steps,
-                   number(static_cast<double>(rec.reference.run.stats.steps) * rec.reference_state_size),
-                   number(rec.reference.run.stats.wall_seconds));
+                   3 * rec.reference.choice.elements, "-", "-", rec.reference.run.result.stats.steps,
+                   number(rec.reference.run.work()), number(rec.reference.run.result.stats.wall_seconds));
   t += "\n" + decision_sentence(ctx, rec) + "\n";
   if (rec.chosen) t += "\nrun it with\n  " + run_line(ctx, rec) + "\n";
   return t;
@@ -94,8 +94,8 @@ std::string recommend_markdown(const RecommendContext& ctx, const Recommendation
   std::string m = fmt::format("# ffrf recommend: {}\n\nScene `{}`, tolerance τ = {:g} on the worst normalized RMS error of "
                               "{} after t = {:g} s, {:g} s simulated.\n\n## Decision\n\n{}\n\n",
                               ctx.scene->name.empty() ? ctx.scene_file : ctx.scene->name, ctx.scene_file,
-                              ctx.request.tolerance, output_list(ctx.request.outputs), rec.reference.window_start,
-                              ctx.request.duration, decision_sentence(ctx, rec));
+                              ctx.tolerance, output_list(rec.outputs), rec.reference.window_start,
+                              rec.duration, decision_sentence(ctx, rec));
   if (rec.chosen) m += "```\n" + run_line(ctx, rec) + "\n```\n\n";
   m += "## Reasoning\n\n";
   for (const std::string& s : rec.reasoning.statements) m += "* " + s + "\n";
@@ -114,67 +114,82 @@ std::string recommend_markdown(const RecommendContext& ctx, const Recommendation
 }
 
 std::string recommend_json(const RecommendContext& ctx, const Recommendation& rec) {
-  JsonWriter json;
-  json.begin_object();
-  json.field("scene", ctx.scene_file).field("tolerance", ctx.request.tolerance).field("duration_s", ctx.request.duration);
-  json.key("outputs").begin_array();
-  for (const auto channel : ctx.request.outputs) json.value(coupling::channel_name(channel));
-  json.end_array();
-  const RecommendReasoning& r = rec.reasoning;
-  json.key("reasoning").begin_object();
-  json.key("boom_angular_frequencies_rad_s").begin_array();
-  for (const BoomMode& mode : r.modes) json.value(mode.angular_frequency);
-  json.end_array();
-  json.field("wave_frequency_rad_s", r.wave_frequency).field("spin_rate_rad_s", r.spin_rate);
-  json.field("excitation_top_rad_s", r.excitation_top).field("dynamic_modes", r.dynamic_modes);
-  json.field("static_tip_deflection_m", r.static_tip_deflection).field("rigid_error_estimate", r.rigid_error);
-  json.field("axial_load_N", r.axial_load).field("euler_load_N", r.euler_load);
-  json.field("static_stiffening_effect", r.static_stiffening_effect).field("centrifugal_softening", r.centrifugal_softening);
-  json.field("required_stiffening", cases::to_string(r.required_stiffening));
-  json.field("relative_tolerance", r.relative_tolerance);
-  json.key("statements").begin_array();
-  for (const std::string& s : r.statements) json.value(s);
-  json.end_array();
-  json.end_object();
-  json.key("reference").begin_object();
-  write_reference_json(json, rec.reference);
-  json.field("stiffening", cases::to_string(rec.reference_scene.boom.stiffening));
-  json.field("steps", static_cast<double>(rec.reference.run.stats.steps)).field("state_size", rec.reference_state_size);
-  json.field("work", static_cast<double>(rec.reference.run.stats.steps) * rec.reference_state_size);
-  json.field("wall_s", rec.reference.run.stats.wall_seconds);
-  json.end_object();
-  json.key("candidates").begin_array();
+  Json json;
+  json["scene"] = ctx.scene_file;
+  json["tolerance"] = ctx.tolerance;
+  json["duration_s"] = rec.duration;
+  json["outputs"] = Json::array();
+  for (const auto channel : rec.outputs) json["outputs"].push_back(coupling::channel_name(channel));
+  const study::RecommendReasoning& r = rec.reasoning;
+  Json reasoning;
+  reasoning["boom_angular_frequencies_rad_s"] = Json::array();
+  for (const study::BoomMode& mode : r.modes) reasoning["boom_angular_frequencies_rad_s"].push_back(mode.angular_frequency);
+  reasoning["wave_frequency_rad_s"] = r.wave_frequency;
+  reasoning["spin_rate_rad_s"] = r.spin_rate;
+  reasoning["excitation_top_rad_s"] = r.excitation_top;
+  reasoning["dynamic_modes"] = r.dynamic_modes;
+  reasoning["static_tip_deflection_m"] = r.static_tip_deflection;
+  reasoning["rigid_error_estimate"] = r.rigid_error;
+  reasoning["axial_load_N"] = r.axial_load;
+  reasoning["euler_load_N"] = r.euler_load;
+  reasoning["static_stiffening_effect"] = r.static_stiffening_effect;
+  reasoning["centrifugal_softening"] = r.centrifugal_softening;
+  reasoning["required_stiffening"] = scene::to_string(r.required_stiffening);
+  reasoning["relative_tolerance"] = r.relative_tolerance;
+  reasoning["statements"] = r.statements;
+  json["reasoning"] = std::move(reasoning);
+  Json reference = reference_json(rec.reference);
+  reference["stiffening"] = scene::to_string(rec.reference_scene.boom.stiffening);
+  reference["steps"] = rec.reference.run.result.stats.steps;
+  reference["state_size"] = rec.reference.run.state_size;
+  reference["work"] = rec.reference.run.work();
+  reference["wall_s"] = rec.reference.run.result.stats.wall_seconds;
+  json["reference"] = std::move(reference);
+  json["candidates"] = Json::array();
   for (std::size_t i = 0; i < rec.candidates.size(); ++i) {
     const Candidate& c = rec.candidates[i];
-    json.begin_object();
-    json.field("index", static_cast<int>(i)).field("model", c.choice.label()).field("boom", cases::to_string(c.choice.kind));
-    json.field("elements", c.choice.elements).field("modes", c.choice.modes).field("static_modes", c.choice.static_modes);
-    json.field("stiffening", cases::to_string(c.choice.stiffening.value_or(rec.reference_scene.boom.stiffening)));
-    json.field("integrator", coupling::to_string(c.integrator)).field("elastic_dof", c.elastic_dof);
-    json.field("estimated_error", c.estimated_error).field("status", to_string(c.status));
-    json.field("reason", c.status == CandidateStatus::solver_failure ? c.failure : c.prune_reason);
-    json.field("minimality_check", c.minimality_check);
-    json.field("error", c.error).field("worst_output", c.worst_output);
-    json.field("steps", static_cast<double>(c.steps)).field("rhs_evaluations", static_cast<double>(c.rhs_evaluations));
-    json.field("state_size", c.state_size).field("work", c.work()).field("wall_s", c.wall_seconds);
-    json.end_object();
+    json["candidates"].push_back(
+        Json{{"index", i},
+             {"model", c.choice.label()},
+             {"boom", scene::to_string(c.choice.kind)},
+             {"elements", c.choice.elements},
+             {"modes", c.choice.modes},
+             {"static_modes", c.choice.static_modes},
+             {"stiffening", scene::to_string(c.choice.stiffening.value_or(rec.reference_scene.boom.stiffening))},
+             {"integrator", coupling::to_string(c.integrator)},
+             {"elastic_dof", c.elastic_dof},
+             {"estimated_error", c.estimated_error},
+             {"status", study::to_string(c.status)},
+             {"reason", c.status == CandidateStatus::solver_failure ? c.failure : c.prune_reason},
+             {"minimality_check", c.minimality_check},
+             {"error", c.error},
+             {"worst_output", c.worst_output},
+             {"steps", c.steps},
+             {"rhs_evaluations", c.rhs_evaluations},
+             {"state_size", c.state_size},
+             {"work", c.work()},
+             {"wall_s", c.wall_seconds}});
   }
-  json.end_array();
-  if (rec.chosen) {
-    json.field("chosen", static_cast<int>(*rec.chosen));
-  } else {
-    json.key("chosen").null();
-  }
-  if (rec.next_cheaper) {
-    json.field("next_cheaper", static_cast<int>(*rec.next_cheaper));
-  } else {
-    json.key("next_cheaper").null();
-  }
-  json.field("work_speedup", rec.work_speedup()).field("wall_speedup", rec.wall_speedup());
-  json.field("run_command", run_line(ctx, rec));
-  json.field("decision", decision_sentence(ctx, rec));
-  json.end_object();
-  return json.str();
+  json["chosen"] = rec.chosen ? Json(*rec.chosen) : Json(nullptr);
+  json["next_cheaper"] = rec.next_cheaper ? Json(*rec.next_cheaper) : Json(nullptr);
+  json["work_speedup"] = rec.work_speedup();
+  json["wall_speedup"] = rec.wall_speedup();
+  json["run_command"] = run_line(ctx, rec);
+  json["decision"] = decision_sentence(ctx, rec);
+  return json_text(json);
 }
 
-}  // namespace ffrf::app
+std::string run_command_line(const std::string& scene_file, const Candidate& c, double rtol, double duration,
+                             const scene::Scene& scene) {
+  std::string line = fmt::format("ffrf run {} --boom {}", scene_file, scene::to_string(c.choice.kind));
+  if (c.choice.kind != scene::BoomKind::rigid) line += fmt::format(" --elements {}", c.choice.elements);
+  if (c.choice.kind == scene::BoomKind::modal) {
+    line += fmt::format(" --modes {} {}", c.choice.modes, c.choice.static_modes ? "--static-modes" : "--no-static-modes");
+  }
+  const scene::Stiffening stiffening = c.choice.stiffening.value_or(scene.boom.stiffening);
+  if (c.choice.kind != scene::BoomKind::rigid) line += fmt::format(" --stiffening {}", scene::to_string(stiffening));
+  line += fmt::format(" --integrator {} --rtol {:g} --atol {:g}", coupling::to_string(c.integrator), rtol, rtol);
+  return line + fmt::format(" --duration {:g}", duration);
+}
+
+}  // namespace ffrf::report

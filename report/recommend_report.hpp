@@ -5,23 +5,23 @@
 #pragma once
 
 #include <string>
-#include <vector>
 
-#include "app/recommend_candidates.hpp"
+#include "study/recommend.hpp"
 
-namespace ffrf::app {
+namespace ffrf::report {
 
 struct RecommendContext {
   std::string scene_file;
-  const cases::Scene* scene = nullptr;
-  RecommendRequest request;
+  const scene::Scene* scene = nullptr;
+  double tolerance = 0.01;
 };
 
-std::string recommend_text(const RecommendContext& context, const Recommendation& rec);
-std::string recommend_markdown(const RecommendContext& context, const Recommendation& rec);
-std::string recommend_json(const RecommendContext& context, const Recommendation& rec);
+std::string recommend_text(const RecommendContext& context, const study::Recommendation& rec);
+std::string recommend_markdown(const RecommendContext& context, const study::Recommendation& rec);
+std::string recommend_json(const RecommendContext& context, const study::Recommendation& rec);
 
-// "cargo_heave,wire_tension"
-std::string output_list(const std::vector<coupling::OutputChannel>& outputs);
+// The exact `ffrf run` command line of a candidate (`scene`: the one the candidates were run on).
+std::string run_command_line(const std::string& scene_file, const study::Candidate& candidate, double rtol, double duration,
+                             const scene::Scene& scene);
 
-}  // namespace ffrf::app
+}  // namespace ffrf::report

@@ -1,13 +1,10 @@
 // Cells, sections and their formatting for `ffrf stability` (see stability_section.hpp).
-#include "app/stability_section.hpp"
+#include "report/stability_section.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
-#include <stdexcept>
-
-#include <cstdio>
-
-namespace ffrf::app {
+namespace ffrf::report {
 
 StabilityCell failure_cell(std::string row, std::string column, const coupling::Detection& detection, std::string unit) {
   StabilityCell cell;
@@ -52,51 +49,16 @@ std::string markdown_table(const std::vector<std::string>& header, const std::ve
   return table;
 }
 
-std::string gnuplot_quoted(const std::string& text) {
-  std::string q = "'";
-  for (char c : text) q += c == '\'' ? std::string("''") : std::string(1, c);
-  return q + "'";
-}
-
-void stability_progress(const StabilityOptions& options, const std::string& line) {
-  if (!options.progress) return;
-  fmt::print(stderr, "ffrf stability: {}\n", line);
-  std::fflush(stderr);
-}
-
-void write_section_json(JsonWriter& json, const StabilitySection& section) {
-  json.begin_object();
-  json.field("title", section.title);
-  json.key("charts").begin_array();
-  for (const std::string& chart : section.charts) json.value(chart);
-  json.end_array();
-  json.key("numbers").begin_object();
-  for (const auto& [name, value] : section.numbers) json.field(name, value);
-  json.end_object();
-  json.key("cells").begin_array();
+Json section_json(const StabilitySection& section) {
+  Json json{{"title", section.title}, {"charts", section.charts}, {"numbers", Json::object()}, {"cells", Json::array()}};
+  for (const auto& [name, value] : section.numbers) json["numbers"][name] = value;
   for (const StabilityCell& cell : section.cells) {
-    json.begin_object();
-    json.field("row", cell.row);
-    json.field("column", cell.column);
-    json.field("ok", cell.ok);
-    json.field("status", cell.status);
-    json.field("time_s", cell.time);
-    json.field("value", cell.value);
-    json.field("unit", cell.unit);
-    json.field("detail", cell.detail);
-    for (const auto& [name, value] : cell.extra) json.field(name, value);
-    json.end_object();
+    Json c{{"row", cell.row},       {"column", cell.column}, {"ok", cell.ok},     {"status", cell.status},
+           {"time_s", cell.time},   {"value", cell.value},   {"unit", cell.unit}, {"detail", cell.detail}};
+    for (const auto& [name, value] : cell.extra) c[name] = value;
+    json["cells"].push_back(std::move(c));
   }
-  json.end_array();
-  json.end_object();
+  return json;
 }
 
-coupling::IntegratorSettings experiment_settings(const DynamicsOptions& dynamics, const cases::Scene& scene) {
-  const SettingsOrError settings = integrator_settings(dynamics, scene);
-  if (!settings.settings) throw std::invalid_argument(settings.error);
-  coupling::IntegratorSettings quiet = *settings.settings;
-  quiet.progress = false;
-  return quiet;
-}
-
-}  // namespace ffrf::app
+}  // namespace ffrf::report

@@ -1,8 +1,7 @@
-// The building blocks of `ffrf stability` (the stability map report, issue 5 "where methods fail"):
-// one cell of a map (green: the method held, with the number that says how well; red: the failure
-// named by kind, with when and the number behind it), one section per experiment (what was run,
-// the table, the charts, the finding), and the formatting shared by the experiments
-// (app/stability_*.cpp) and the report writer (app/command_stability.cpp).
+// The report of `ffrf stability` (the stability map, issue 5 "where methods fail"): one cell of a
+// map (green: the method held, with the number that says how well; red: the failure named by kind,
+// with when and the number behind it), one section per experiment of study/stability.hpp (what was
+// run, the table, the charts, the finding), and the whole report (report.md, summary.json).
 #pragma once
 
 #include <cmath>
@@ -10,14 +9,14 @@
 #include <utility>
 #include <vector>
 
-#include "app/crane_run.hpp"
-#include "app/json_writer.hpp"
-#include "app/output_directory.hpp"
-#include "cases/crane_builder.hpp"
-#include "cases/scene.hpp"
 #include "coupling/failure.hpp"
+#include "report/json.hpp"
+#include "report/gnuplot.hpp"
+#include "report/output_directory.hpp"
+#include "scene/scene.hpp"
+#include "study/stability.hpp"
 
-namespace ffrf::app {
+namespace ffrf::report {
 
 struct StabilityCell {
   std::string row;     // the method or model ("nodal N=10, no stiffening")
@@ -47,40 +46,29 @@ struct StabilitySection {
   std::vector<std::pair<std::string, double>> numbers;  // the section's key results (summary.json)
 };
 
-struct StabilityOptions {
-  bool quick = false;     // fewer models, shorter horizons (< 20 s in all)
-  bool progress = false;  // one line per run on stderr (terminals only)
-};
-
 // A Markdown table: header row, then rows of already formatted cells.
 std::string markdown_table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows);
-// gnuplot single-quoted string (a quote doubled).
-std::string gnuplot_quoted(const std::string& text);
-// A progress line on stderr when options.progress.
-void stability_progress(const StabilityOptions& options, const std::string& line);
-
-// The integrator settings of one experiment's run: `ffrf run`'s for these options and scene, without
-// the progress line (the command prints its own); throws std::invalid_argument for bad options.
-coupling::IntegratorSettings experiment_settings(const DynamicsOptions& dynamics, const cases::Scene& scene);
 // Engineering numbers for the report ("-" when not finite).
 std::string shown(double value, int digits = 4);
 
 // summary.json: one object per section with its cells and numbers.
-void write_section_json(JsonWriter& json, const StabilitySection& section);
+Json section_json(const StabilitySection& section);
 
-// The experiments (app/stability_*.cpp). Each runs its models, writes its CSVs, gnuplot scripts and
-// PNG charts into `out`, and returns the section; solver failures inside are red cells.
-StabilitySection explicit_step_section(const cases::Scene& scene, const StabilityOptions& options,
-                                       const StagedDirectory& out);                   // stability_explicit.cpp
-StabilitySection constraint_drift_section(const cases::Scene& scene, const StabilityOptions& options,
-                                          const StagedDirectory& out);                // stability_drift.cpp
-StabilitySection spin_section(const cases::Scene& scene, const StabilityOptions& options,
-                              const StagedDirectory& out);                            // stability_spin.cpp
-StabilitySection wire_section(const cases::Scene& scene, const StabilityOptions& options,
-                              const StagedDirectory& out);                            // stability_wire.cpp
-StabilitySection bdf_order_section(const cases::Scene& scene, const StabilityOptions& options,
-                                   const StagedDirectory& out);                       // stability_bdf_order.cpp
-StabilitySection buckling_section(const cases::Scene& scene, const StabilityOptions& options,
-                                  const StagedDirectory& out);                        // stability_buckling.cpp
+// The sections (report/stability_*.cpp). Each writes its CSVs, gnuplot scripts and PNG charts into `out`.
+StabilitySection explicit_step_section(const study::ExplicitStepStudy& study, const StagedDirectory& out);
+StabilitySection constraint_drift_section(const scene::Scene& scene, const study::DriftStudy& study,
+                                          const StagedDirectory& out);
+StabilitySection spin_section(const scene::Scene& scene, const study::SpinStudy& study, const StagedDirectory& out);
+StabilitySection wire_section(const scene::Scene& scene, const study::WireStudy& study, const StagedDirectory& out);
+StabilitySection bdf_order_section(const scene::Scene& scene, const study::BdfOrderStudy& study);
+StabilitySection buckling_section(const scene::Scene& scene, const study::BucklingStudy& study);
 
-}  // namespace ffrf::app
+// The whole report: every section of the map (charts written into `out`), report.md and summary.json.
+struct StabilityReport {
+  std::string markdown;
+  std::string json;
+};
+StabilityReport stability_report(const scene::Scene& scene, const std::string& scene_file, bool quick,
+                                 const study::StabilityMap& map, const StagedDirectory& out);
+
+}  // namespace ffrf::report

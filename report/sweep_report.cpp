@@ -1,5 +1,5 @@
 // The sweep's CSV read back, Pareto front, charts and report (see sweep_report.hpp).
-#include "app/sweep_report.hpp"
+#include "report/sweep_report.hpp"
 
 #include <fmt/format.h>
 
@@ -8,16 +8,12 @@
 #include <map>
 #include <stdexcept>
 
-#include "app/gnuplot.hpp"
-#include "app/sweep_run.hpp"
+#include "report/gnuplot.hpp"
+#include "report/reference_report.hpp"
+#include "report/sweep_csv.hpp"
 
-namespace ffrf::app {
+namespace ffrf::report {
 namespace {
-
-std::optional<double> optional_number(const std::string& field) {
-  if (field.empty()) return std::nullopt;
-  return std::stod(field);
-}
 
 std::string sci(const std::optional<double>& v) { return v ? fmt::format("{:.2e}", *v) : "-"; }
 
@@ -45,95 +41,6 @@ std::string script_header(const std::string& name, const std::string& terminal, 
 }
 
 }  // namespace
-
-std::string SweepRow::settings() const {
-  if (integrator == "arkode" && step && !rtol) return fmt::format("arkode h {:.3g} s", *step);
-  if (step) return fmt::format("{} h {:g} s", integrator, *step);
-  return fmt::format("{} rtol {:g}", integrator, rtol.value_or(0.0));
-}
-
-std::vector<std::string> split_csv_line(const std::string& line) {
-  std::vector<std::string> fields(1);
-  bool in_quotes = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (in_quotes) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        fields.back() += '"';
-        ++i;
-      } else if (c == '"') {
-        in_quotes = false;
-      } else {
-        fields.back() += c;
-      }
-    } else if (c == '"') {
-      in_quotes = true;
-    } else if (c == ',') {
-      fields.emplace_back();
-    } else {
-      fields.back() += c;
-    }
-  }
-  return fields;
-}
-
-std::vector<SweepRow> read_sweep_csv(const std::string& text, const std::string& name) {
-  const std::string header = sweep_csv_header();
-  if (text.compare(0, header.size(), header) != 0) {
-    throw std::runtime_error(name + ": not a sweep CSV of this ffrf version (its header differs)");
-  }
-  const std::vector<std::string> columns = split_csv_line(header.substr(0, header.size() - 1));
-  auto column = [&](std::string_view column_name) {
-    return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), column_name) - columns.begin());
-  };
-  std::vector<SweepRow> rows;
-  std::size_t start = header.size();
-  for (int line_number = 2; start < text.size(); ++line_number) {
-    const std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) throw std::runtime_error(fmt::format("{}:{}: unterminated last line", name, line_number));
-    SweepRow row;
-    row.line = text.substr(start, end - start + 1);
-    start = end + 1;
-    const std::vector<std::string> f = split_csv_line(row.line.substr(0, row.line.size() - 1));
-    if (f.size() != columns.size()) {
-      throw std::runtime_error(fmt::format("{}:{}: {} fields, expected {}", name, line_number, f.size(), columns.size()));
-    }
-    try {
-      row.id = std::stoi(f[column("id")]);
-      row.model = f[column("model")];
-      row.family = f[column("family")];
-      row.elements = f[column("elements")].empty() ? 0 : std::stoi(f[column("elements")]);
-      row.modes = f[column("modes")].empty() ? 0 : std::stoi(f[column("modes")]);
-      row.static_modes = f[column("static_modes")] == "1";
-      row.integrator = f[column("integrator")];
-      row.rtol = optional_number(f[column("rtol")]);
-      row.step = optional_number(f[column("step")]);
-      row.cargo_heave = optional_number(f[column("cargo_heave_nrms")]);
-      row.daf_error = optional_number(f[column("daf_error")]);
-      row.worst = optional_number(f[column("worst_nrms")]);
-      row.steps = f[column("steps")].empty() ? 0 : std::stol(f[column("steps")]);
-      row.status = f[column("status")];
-      row.reason = f[column("reason")];
-      row.wall = optional_number(f[column("wall_s")]);
-    } catch (const std::logic_error&) {
-      throw std::runtime_error(fmt::format("{}:{}: a malformed number", name, line_number));
-    }
-    rows.push_back(std::move(row));
-  }
-  return rows;
-}
-
-std::string sweep_csv(std::vector<SweepRow>& rows) {
-  std::sort(rows.begin(), rows.end(), [](const SweepRow& a, const SweepRow& b) { return a.id < b.id; });
-  std::string csv = sweep_csv_header();
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (i > 0 && rows[i].id == rows[i - 1].id) {
-      throw std::runtime_error(fmt::format("configuration {} appears twice (overlapping shards?)", rows[i].id));
-    }
-    csv += rows[i].line;
-  }
-  return csv;
-}
 
 std::vector<std::size_t> pareto_front(const std::vector<SweepRow>& rows) {
   std::vector<std::size_t> order;
@@ -252,4 +159,39 @@ std::string sweep_markdown(const std::vector<SweepRow>& rows, const std::string&
   return r;
 }
 
-}  // namespace ffrf::app
+std::string sweep_context(const std::string& scene_file, const scene::Scene& scene, study::SweepGrid grid, double duration,
+                          const study::SweepStudy& study) {
+  return fmt::format(
+      "<!-- duration_s: {} -->\n# Accuracy–speed sweep: {}\n\n- scene: `{}`, {:g} s simulated, output every {:g} s\n- {}\n"
+      "- errors against {}, {}\n\n## Converged reference\n\n{}\n\n{}",
+      duration, scene.name.empty() ? scene_file : scene.name, scene_file, duration, scene.simulation.output_interval,
+      study::grid_description(grid), reference_label(study.reference),
+      study.window_start > 0.0 ? fmt::format("for t ≥ {:g} s (after the wave ramp)", study.window_start)
+                               : std::string("over the whole run"),
+      reference_verdict(study.reference), reference_levels_markdown(study.reference));
+}
+
+double context_duration(const std::string& context) {
+  const std::string tag = "<!-- duration_s: ";
+  return context.rfind(tag, 0) == 0 ? std::stod(context.substr(tag.size())) : 0.0;
+}
+
+std::string pareto_text(const std::vector<SweepRow>& rows) {
+  std::string t = fmt::format("{:>4}  {:<26} {:<28} {:>11} {:>10}\n", "id", "model", "integrator", "worst error", "wall [s]");
+  for (std::size_t i : pareto_front(rows)) {
+    t += fmt::format("{:>4}  {:<26} {:<28} {:>11.3e} {:>10.3g}\n", rows[i].id, rows[i].model, rows[i].settings(),
+                     *rows[i].worst, *rows[i].wall);
+  }
+  return t;
+}
+
+void write_sweep_outputs(const std::string& dir, std::vector<SweepRow>& rows, const std::string& context, double duration) {
+  StagedDirectory out(dir, "report.md");
+  out.write("sweep.csv", sweep_csv(rows));
+  out.write(sweep_context_file, context);
+  draw_sweep_charts(out, rows, fmt::format("{:g} s simulated", duration));
+  out.write("report.md", sweep_markdown(rows, context, duration));
+  out.commit();
+}
+
+}  // namespace ffrf::report

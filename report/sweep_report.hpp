@@ -1,39 +1,16 @@
-// The outputs of `ffrf sweep` from its CSV rows (so that a merge of shard CSVs and an unsharded
-// run produce the same files): reading sweep.csv back, the Pareto front of error vs wall time, the
-// accuracy–speed and mode-count charts (gnuplot data and scripts) and report.md.
+// The outputs of `ffrf sweep` from its CSV rows (report/sweep_csv.hpp; so that a merge of shard
+// CSVs and an unsharded run produce the same files): the Pareto front of error vs wall time, the
+// accuracy–speed and mode-count charts (gnuplot data and scripts), report.md and the text summary.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
-#include "app/output_directory.hpp"
+#include "report/output_directory.hpp"
+#include "report/sweep_csv.hpp"
+#include "study/sweep.hpp"
 
-namespace ffrf::app {
-
-// One CSV row, with what the charts and the report need parsed out of it.
-struct SweepRow {
-  int id = 0;
-  std::string model, family, integrator, status, reason;
-  int elements = 0, modes = 0;
-  bool static_modes = false;
-  std::optional<double> rtol, step;
-  std::optional<double> worst, cargo_heave, daf_error;  // normalized RMS errors (ok rows)
-  std::optional<double> wall;                         // integration wall time [s] (ok rows)
-  long steps = 0;
-  std::string line;                                   // the CSV line as written, with '\n'
-  bool ok() const { return status == "ok" && worst && wall; }
-  std::string settings() const;                       // "cvode rtol 1e-06", "generalized-alpha h 0.01 s"
-};
-
-// Splits one CSV line (no trailing newline) into fields; "..." quoting with "" for a quote.
-std::vector<std::string> split_csv_line(const std::string& line);
-
-// Parses a sweep CSV (the header must be sweep_csv_header()); throws std::runtime_error naming
-// the file and line on anything else.
-std::vector<SweepRow> read_sweep_csv(const std::string& text, const std::string& name);
-// Header and rows sorted by id; throws std::runtime_error on a duplicate id.
-std::string sweep_csv(std::vector<SweepRow>& rows);
+namespace ffrf::report {
 
 // Indices (into rows) of the Pareto-optimal ok rows: no other row is both faster and more
 // accurate (worst normalized RMS error); sorted by wall time.
@@ -46,4 +23,19 @@ void draw_sweep_charts(const StagedDirectory& out, const std::vector<SweepRow>& 
 // table, the charts, the per-model best errors and the failures.
 std::string sweep_markdown(const std::vector<SweepRow>& rows, const std::string& preamble, double duration);
 
-}  // namespace ffrf::app
+// The preamble of report.md (kept as sweep_context.md, reused by a merge); its first line records
+// the duration: "<!-- duration_s: 40 -->".
+std::string sweep_context(const std::string& scene_file, const scene::Scene& scene, study::SweepGrid grid, double duration,
+                          const study::SweepStudy& study);
+// The duration recorded in a context (0 when absent).
+double context_duration(const std::string& context);
+inline constexpr const char* sweep_context_file = "sweep_context.md";
+
+// The Pareto table as text (stdout).
+std::string pareto_text(const std::vector<SweepRow>& rows);
+
+// Writes sweep.csv, the charts, the context and report.md (the completeness marker) into `dir`,
+// completely or not at all; throws std::runtime_error (a duplicate id: overlapping shards).
+void write_sweep_outputs(const std::string& dir, std::vector<SweepRow>& rows, const std::string& context, double duration);
+
+}  // namespace ffrf::report

@@ -1,14 +1,14 @@
 // Scene → coupled crane (see header).
-#include "cases/crane_builder.hpp"
+#include "scene/crane_builder.hpp"
 
 #include <cmath>
 #include <numbers>
 
-#include "cases/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "fem/analytic_beam.hpp"
 #include "fem/axial_force.hpp"
 
-namespace ffrf::cases {
+namespace ffrf::scene {
 
 std::string_view to_string(BoomKind kind) {
   switch (kind) {
@@ -188,30 +188,27 @@ coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords
 template coupling::CraneModel<nodal::NodalCoordinates> build_crane_model(const Scene&, nodal::NodalCoordinates, Stiffening);
 template coupling::CraneModel<modal::ModalCoordinates> build_crane_model(const Scene&, modal::ModalCoordinates, Stiffening);
 
-modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, ModeCache* cache) {
+modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {
   auto beam = boom_beam(scene, choice.kind == BoomKind::rigid ? 1 : choice.elements);
-  modal::ModalBasis basis;
   if (choice.kind == BoomKind::rigid) {
+    modal::ModalBasis basis;
     basis.vectors = Eigen::MatrixXd(beam->dofs.free_count(), 0);
-  } else if (cache != nullptr) {
-    const modal::EigenPairs modes = choice.modes > 0 ? cache->lowest_modes(scene, choice.elements, choice.modes, choice.solver)
-                                                     : modal::EigenPairs{Eigen::VectorXd(0), Eigen::MatrixXd(beam->dofs.free_count(), 0), {}};
-    const std::vector<modal::UnitLoad> loads =
-        choice.static_modes ? modal::tip_and_body_unit_loads(beam->mesh) : std::vector<modal::UnitLoad>{};
-    basis = modal::append_static_modes(beam->mesh, beam->dofs, beam->stiffness, beam->mass, modes.eigenvectors,
-                                       modes.eigenvalues, loads);
-  } else {
-    modal::ModalBasisRequest request;
-    request.vibration_modes = choice.modes;
-    request.static_correction = choice.static_modes;
-    if (choice.static_modes) request.loads = modal::tip_and_body_unit_loads(beam->mesh);
-    request.solver = choice.solver;
-    basis = modal::make_modal_basis(beam->mesh, beam->dofs, beam->stiffness, beam->mass, request);
+    return modal::ModalCoordinates(beam, std::move(basis));
   }
+  // One way to the vibration modes, cached or not, so a basis never depends on who built it.
+  modal::ModeCache local;
+  modal::ModeCache& modes_of_mesh = cache != nullptr ? *cache : local;
+  const modal::EigenPairs modes =
+      choice.modes > 0 ? modes_of_mesh.lowest_modes(beam->mesh, fem::Boundary::clamped_free, choice.modes, choice.solver)
+                       : modal::EigenPairs{Eigen::VectorXd(0), Eigen::MatrixXd(beam->dofs.free_count(), 0), {}};
+  const std::vector<modal::UnitLoad> loads =
+      choice.static_modes ? modal::tip_and_body_unit_loads(beam->mesh) : std::vector<modal::UnitLoad>{};
+  modal::ModalBasis basis = modal::append_static_modes(beam->mesh, beam->dofs, beam->stiffness, beam->mass,
+                                                       modes.eigenvectors, modes.eigenvalues, loads);
   return modal::ModalCoordinates(beam, std::move(basis));
 }
 
-std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, ModeCache* cache) {
+std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {
   const Stiffening stiffening = choice.stiffening.value_or(scene.boom.stiffening);
   if (choice.kind == BoomKind::nodal) {
     return coupling::make_crane_equations(
@@ -220,4 +217,4 @@ std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const 
   return coupling::make_crane_equations(build_crane_model(scene, modal_coordinates(scene, choice, cache), stiffening));
 }
 
-}  // namespace ffrf::cases
+}  // namespace ffrf::scene

@@ -1,4 +1,4 @@
-// Turns a loaded crane scene (cases/scene.hpp) into the coupled system of coupling/: the boom's
+// Turns a loaded crane scene (scene/scene.hpp) into the coupled system of coupling/: the boom's
 // nodal-space beam model, its elastic coordinates (rigid, nodal or modal), the hull's box section
 // relative to G1, added mass and radiation damping from the scene's multiples and fractions of
 // critical, the wire's damping, the wave. Documented modelling choices: docs/theory.md §7.
@@ -9,8 +9,8 @@
 #include <string>
 #include <string_view>
 
-#include "cases/mode_cache.hpp"
-#include "cases/scene.hpp"
+#include "modal/mode_cache.hpp"
+#include "scene/scene.hpp"
 #include "coupling/crane_model.hpp"
 #include "coupling/crane_system.hpp"
 #include "fem/axial_force.hpp"
@@ -18,7 +18,7 @@
 #include "modal/modal_coordinates.hpp"
 #include "nodal/nodal_coordinates.hpp"
 
-namespace ffrf::cases {
+namespace ffrf::scene {
 
 enum class BoomKind { rigid, nodal, modal };
 std::string_view to_string(BoomKind kind);
@@ -59,11 +59,11 @@ template <fem::ElasticCoordinates Coords>
 coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords, Stiffening stiffening = Stiffening::none);
 
 // Elastic coordinates for a choice (the rigid boom is modal coordinates with an empty basis).
-// With a cache, the vibration modes come from it (computed once per mesh); without, they are
-// solved for here.
-modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, ModeCache* cache = nullptr);
+// The vibration modes come from the cache (computed once per mesh) or, without one, from a
+// cache of this call alone: the same solve either way (modal/mode_cache.hpp).
+modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache = nullptr);
 
 // The whole system for a choice, ready for static equilibrium and integration.
-std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, ModeCache* cache = nullptr);
+std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache = nullptr);
 
-}  // namespace ffrf::cases
+}  // namespace ffrf::scene

@@ -1,7 +1,7 @@
-// Names of the scene's enumerations (cases/scene.hpp).
-#include "cases/scene.hpp"
+// Names of the scene's enumerations (scene/scene.hpp).
+#include "scene/scene.hpp"
 
-namespace ffrf::cases {
+namespace ffrf::scene {
 
 std::string_view to_string(Stiffening stiffening) {
   switch (stiffening) {
@@ -20,4 +20,4 @@ std::optional<Stiffening> parse_stiffening(std::string_view text) {
   return std::nullopt;
 }
 
-}  // namespace ffrf::cases
+}  // namespace ffrf::scene

@@ -1,6 +1,6 @@
 // A loaded scene (DESIGN.md §3): pure data in SI units, planar, y up, angles counter-clockwise.
 // The boom is always present; a crane scene also has the hull, the cargo and the wire. Sections a
-// scene leaves out take the defaults of cases/scene_schema.cpp (environment, radiation, mooring,
+// scene leaves out take the defaults of scene/scene_schema.cpp (environment, radiation, mooring,
 // simulation) or stay empty (wave: calm water).
 #pragma once
 
@@ -12,7 +12,7 @@
 #include "fem/boundary.hpp"
 #include "fem/mesh.hpp"
 
-namespace ffrf::cases {
+namespace ffrf::scene {
 
 // Where and how the boom is clamped to the hull (crane scenes only).
 struct BoomMount {
@@ -140,4 +140,4 @@ struct Scene {
   bool has_cargo() const { return cargo.has_value(); }  // then wire too
 };
 
-}  // namespace ffrf::cases
+}  // namespace ffrf::scene

@@ -1,6 +1,6 @@
 // Scene loader: walks the TOML document against the schema table, collects every problem, and
 // builds the Scene value. Only this file knows toml++.
-#include "cases/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,9 +11,9 @@
 #include <sstream>
 #include <toml++/toml.h>
 
-#include "cases/scene_schema.hpp"
+#include "scene/scene_schema.hpp"
 
-namespace ffrf::cases {
+namespace ffrf::scene {
 namespace {
 
 struct Resolved {
@@ -427,4 +427,4 @@ Scene load_scene(const std::string& path) {
   return load_scene_text(text.str(), path);
 }
 
-}  // namespace ffrf::cases
+}  // namespace ffrf::scene

@@ -9,9 +9,9 @@
 #include <string_view>
 #include <vector>
 
-#include "cases/scene.hpp"
+#include "scene/scene.hpp"
 
-namespace ffrf::cases {
+namespace ffrf::scene {
 
 struct SceneProblem {
   std::string file;
@@ -39,4 +39,4 @@ Scene load_scene(const std::string& path);
 // The same for TOML text; `file` names it in messages.
 Scene load_scene_text(std::string_view toml_text, const std::string& file);
 
-}  // namespace ffrf::cases
+}  // namespace ffrf::scene

@@ -1,7 +1,7 @@
 // The scene schema table (DESIGN.md §3 and §7): the one place where scene keys are declared.
 // Values of the reference scene live in cases/paper_floating_crane.toml, not here; defaults here
 // are the values a scene gets when it leaves a key out.
-#include "cases/scene_schema.hpp"
+#include "scene/scene_schema.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace ffrf::cases {
+namespace ffrf::scene {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -284,4 +284,4 @@ std::optional<std::string_view> suggest_section(std::string_view name) {
   return closest(name, kSections, [](const SectionSpec& section) { return section.name; });
 }
 
-}  // namespace ffrf::cases
+}  // namespace ffrf::scene

@@ -10,9 +10,9 @@
 #include <string>
 #include <string_view>
 
-#include "cases/units.hpp"
+#include "scene/units.hpp"
 
-namespace ffrf::cases {
+namespace ffrf::scene {
 
 // Whether a section must appear. A crane scene is one that has any crane section; it then needs
 // all of them. Optional sections may be left out as a whole (their keys take their defaults).
@@ -90,4 +90,4 @@ std::size_t edit_distance(std::string_view a, std::string_view b);
 // The Markdown scene reference (docs/scenes.md), generated from the table.
 std::string scene_reference_markdown();
 
-}  // namespace ffrf::cases
+}  // namespace ffrf::scene

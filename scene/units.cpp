@@ -1,5 +1,5 @@
 // Unit table and quantity parsing for scene values (see units.hpp).
-#include "cases/units.hpp"
+#include "scene/units.hpp"
 
 #include <array>
 #include <charconv>
@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 #include <stdexcept>
 
-namespace ffrf::cases {
+namespace ffrf::scene {
 namespace {
 
 struct Unit {
@@ -178,4 +178,4 @@ QuantityResult parse_quantity(std::string_view text, Dimension dimension, bool a
   return value * found->factor;
 }
 
-}  // namespace ffrf::cases
+}  // namespace ffrf::scene

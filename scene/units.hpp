@@ -8,7 +8,7 @@
 #include <string_view>
 #include <variant>
 
-namespace ffrf::cases {
+namespace ffrf::scene {
 
 enum class Dimension {
   ratio,            // dimensionless [-]
@@ -44,4 +44,4 @@ QuantityResult parse_quantity(std::string_view text, Dimension dimension, bool a
 // A plain number (already SI): rejects NaN and, unless allowed, infinity.
 QuantityResult check_number(double value, bool allow_infinity);
 
-}  // namespace ffrf::cases
+}  // namespace ffrf::scene

@@ -1,9 +1,8 @@
 // Spinning / prestressed modes and the Campbell diagram for `ffrf modes` (see header).
-#include "app/campbell_analysis.hpp"
+#include "study/campbell.hpp"
 
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <fmt/format.h>
 #include <numbers>
 #include <stdexcept>
@@ -11,7 +10,7 @@
 #include "fem/analytic_rotating_beam.hpp"
 #include "modal/rotating_beam_modes.hpp"
 
-namespace ffrf::app {
+namespace ffrf::study {
 namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -52,43 +51,6 @@ std::vector<double> lowest_bending(const fem::BeamModel& model, const modal::Rot
 }
 
 }  // namespace
-
-double parse_finite(const std::string& name, const std::string& text, std::optional<double> minimum) {
-  const std::string range = minimum ? fmt::format("[{:g}, inf)", *minimum) : "(-inf, inf)";
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || (minimum && value < *minimum)) {
-    throw std::invalid_argument(fmt::format("{} {}: not a valid value (valid range {}, a finite number)", name, text, range));
-  }
-  return value;
-}
-
-SpinRange parse_spin_range(const std::string& text) {
-  const auto fail = [&](const std::string& why) {
-    throw std::invalid_argument(fmt::format("--spin-range {}: {} (expected a:b:n in rad/s with 0 <= a < b and an integer "
-                                            "count n in [2, 10000])", text, why));
-  };
-  const auto first_colon = text.find(':');
-  const auto second_colon = first_colon == std::string::npos ? std::string::npos : text.find(':', first_colon + 1);
-  if (second_colon == std::string::npos || text.find(':', second_colon + 1) != std::string::npos) {
-    fail("malformed, not three fields separated by ':'");
-  }
-  const auto number = [&](const std::string& field, const char* what) {
-    char* end = nullptr;
-    const double value = std::strtod(field.c_str(), &end);
-    if (field.empty() || end != field.c_str() + field.size() || !std::isfinite(value)) {
-      fail(fmt::format("{} '{}' is not a finite number", what, field));
-    }
-    return value;
-  };
-  const double a = number(text.substr(0, first_colon), "first spin a");
-  const double b = number(text.substr(first_colon + 1, second_colon - first_colon - 1), "last spin b");
-  const double n = number(text.substr(second_colon + 1), "count n");
-  if (a < 0.0) fail(fmt::format("first spin a = {:g} rad/s is negative", a));
-  if (!(b > a)) fail(fmt::format("last spin b = {:g} must exceed the first a = {:g}", b, a));
-  if (n != std::floor(n) || n < 2.0 || n > 10000.0) fail(fmt::format("count n = {:g} is not an integer in [2, 10000]", n));
-  return {a, b, static_cast<int>(n)};
-}
 
 SpinModesResult solve_spin_modes(const fem::BeamModel& model, double spin_rate, double hub_radius, double axial_force,
                                  int count, modal::EigenSolverKind solver) {
@@ -138,4 +100,4 @@ CampbellResult campbell_diagram(const fem::BeamModel& model, const SpinRange& ra
   return out;
 }
 
-}  // namespace ffrf::app
+}  // namespace ffrf::study

@@ -14,7 +14,7 @@
 #include "fem/beam_model.hpp"
 #include "modal/eigen_solver.hpp"
 
-namespace ffrf::app {
+namespace ffrf::study {
 
 // n spin rates evenly spaced in [first, last] (first ≥ 0, last > first, n ≥ 2).
 struct SpinRange {
@@ -23,11 +23,6 @@ struct SpinRange {
   int count;
   double at(int i) const { return first + (last - first) * i / (count - 1); }
 };
-
-// Parses "a:b:n"; throws std::invalid_argument naming --spin-range, the value and the valid range.
-SpinRange parse_spin_range(const std::string& text);
-// Parses a finite number for the option `name` within [minimum, inf); throws std::invalid_argument.
-double parse_finite(const std::string& name, const std::string& text, std::optional<double> minimum);
 
 
 // One mode at one spin: ω² [rad²/s²] (negative: divergence) without geometric stiffness (K − Ω²M:
@@ -85,4 +80,4 @@ CampbellResult campbell_diagram(const fem::BeamModel& model, const SpinRange& ra
                                 double axial_force, int bending_count, modal::EigenSolverKind solver,
                                 const std::function<void(int)>& progress);
 
-}  // namespace ffrf::app
+}  // namespace ffrf::study

@@ -2,25 +2,23 @@
 // largest fixed step of ARKODE's explicit Runge–Kutta measured by trial runs
 // (coupling::measure_stable_step) against the theory — the boom's own bound (β_I/ω_max undamped;
 // with its stiffness-proportional damping) and the linearized crane's Jacobian bound
-// (coupling::explicit_stable_step) — as a CSV table (units in the column names), a Markdown table
-// and two gnuplot charts: largest stable step vs ω_max (log–log, with β_I/ω) and the model × step
-// stability map (green stable, red unstable, the theoretical boundary drawn over it).
+// (coupling::explicit_stable_step). Its tables and charts: report/explicit_stability_report.hpp.
 // The scene is analysed in calm water: the limit belongs to the linearization about the static
 // equilibrium (the 10 s wave does not move it).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
-#include "app/output_directory.hpp"
-#include "cases/crane_builder.hpp"
-#include "cases/scene.hpp"
+#include "scene/crane_builder.hpp"
+#include "scene/scene.hpp"
 #include "coupling/explicit_stability.hpp"
 
-namespace ffrf::app {
+namespace ffrf::study {
 
 struct ExplicitStabilityRow {
-  cases::BoomChoice choice;
+  scene::BoomChoice choice;
   std::string label;
   int elastic_dof = 0;
   double highest_frequency = 0.0;        // ω_max of the boom's elastic coordinates [rad/s] (0: rigid)
@@ -45,18 +43,12 @@ struct ExplicitStabilityMap {
 };
 
 // Nodal N = 1, 2, 4, …, 64 and modal k = 1 … 12 with static modes on the N = 16 mesh.
-std::vector<cases::BoomChoice> default_stability_models();
+std::vector<scene::BoomChoice> default_stability_models();
 
-// Measures every model (progress: one line per model on stderr). A model whose static equilibrium
-// or measurement fails becomes a row with `failure` set; scene errors (cases::SceneError) propagate.
-ExplicitStabilityMap explicit_stability_map(const cases::Scene& scene, const std::vector<cases::BoomChoice>& models,
-                                            bool progress, const coupling::StableStepSearch& search = {});
+// Measures every model (`progress` sees each row as it is done). A model whose static equilibrium
+// or measurement fails becomes a row with `failure` set; scene errors (scene::SceneError) propagate.
+ExplicitStabilityMap explicit_stability_map(const scene::Scene& scene, const std::vector<scene::BoomChoice>& models,
+                                            const coupling::StableStepSearch& search = {},
+                                            const std::function<void(const ExplicitStabilityRow&)>& progress = {});
 
-std::string explicit_stability_csv(const ExplicitStabilityMap& map);
-std::string explicit_stability_markdown(const ExplicitStabilityMap& map);
-
-// Writes explicit_stability.csv, the chart data and scripts, and draws stable_step_vs_frequency.png
-// and stability_map.png; throws std::runtime_error when gnuplot is missing or fails.
-void write_explicit_stability_map(const StagedDirectory& out, const ExplicitStabilityMap& map);
-
-}  // namespace ffrf::app
+}  // namespace ffrf::study

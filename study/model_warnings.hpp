@@ -2,29 +2,40 @@
 // below the excitation band, no static correction modes under a tip load, a rigid boom whose
 // quasi-static deflection matters, geometric stiffening off near buckling or at high spin — and,
 // quietly, a model far above it. Judged by the same physics as `ffrf recommend`
-// (app/recommend_reasoning.hpp) at a 1 % tolerance on the default outputs.
+// (study/recommend_reasoning.hpp) at a 1 % tolerance on the judged outputs. Each warning names
+// its finding with its numbers and a remedy in model terms; the report words the remedy.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "app/json_writer.hpp"
-#include "cases/crane_builder.hpp"
-#include "cases/scene.hpp"
+#include "scene/crane_builder.hpp"
+#include "scene/scene.hpp"
 
-namespace ffrf::app {
+namespace ffrf::study {
+
+// What to change in the model.
+enum class Remedy {
+  modal_with_static_modes,  // replace the rigid boom by a modal one with static correction modes
+  keep_vibration_modes,     // keep at least `modes` vibration modes
+  add_static_modes,         // add the static correction modes
+  static_stiffening,        // model static (prestress) stiffening
+  centrifugal_stiffening,   // model centrifugal stiffening
+  cheaper_model,            // ask recommend for the cheapest adequate model
+};
+
+struct ModelWarning {
+  std::string finding;  // what is wrong, with its numbers
+  Remedy remedy;
+  int modes = 0;        // keep_vibration_modes: how many
+};
 
 struct ModelWarnings {
   double tolerance = 0.01;
-  std::vector<std::string> below;  // the model misses physics the scene excites (printed)
-  std::vector<std::string> above;  // the model resolves far more than the scene needs (quiet)
+  std::vector<ModelWarning> below;  // the model misses physics the scene excites
+  std::vector<ModelWarning> above;  // the model resolves far more than the scene needs
 };
 
-ModelWarnings model_warnings(const cases::Scene& scene, const cases::BoomChoice& choice, double tolerance = 0.01);
+ModelWarnings model_warnings(const scene::Scene& scene, const scene::BoomChoice& choice, double tolerance = 0.01);
 
-// "warning: ..." lines for stderr (below) and one "note: ..." line (above).
-std::string warnings_text(const ModelWarnings& warnings);
-// {"tolerance", "below": [...], "above": [...]} as the value of the current JSON key.
-void write_warnings_json(JsonWriter& json, const ModelWarnings& warnings);
-
-}  // namespace ffrf::app
+}  // namespace ffrf::study

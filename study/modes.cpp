@@ -1,7 +1,7 @@
 // Assembly, eigen solve, classification and the convergence study for `ffrf modes`.
-#include "app/modes_analysis.hpp"
+#include "study/modes.hpp"
 
-#include "cases/crane_builder.hpp"
+#include "scene/crane_builder.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -11,7 +11,7 @@
 #include "fem/analytic_beam.hpp"
 #include "fem/assembly.hpp"
 
-namespace ffrf::app {
+namespace ffrf::study {
 namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -26,7 +26,7 @@ double modes_shift(const fem::BeamMesh& mesh, fem::Boundary boundary) {
   return -s.bending_rigidity() / (s.mass_per_length * std::pow(mesh.length, 4));
 }
 
-double spin_hub_radius(const cases::Scene& scene) { return cases::centrifugal_hub_radius(scene); }
+double spin_hub_radius(const scene::Scene& scene) { return scene::centrifugal_hub_radius(scene); }
 
 int free_dof_count(const fem::BeamMesh& mesh, fem::Boundary boundary) {
   return fem::make_dof_map(mesh, boundary).free_count();
@@ -83,4 +83,4 @@ std::vector<ConvergencePoint> frequency_convergence(const fem::BeamMesh& mesh, f
   return points;
 }
 
-}  // namespace ffrf::app
+}  // namespace ffrf::study

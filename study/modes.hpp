@@ -9,13 +9,13 @@
 #include <string>
 #include <vector>
 
-#include "cases/scene.hpp"
+#include "scene/scene.hpp"
 #include "fem/boundary.hpp"
 #include "fem/mesh.hpp"
 #include "modal/eigen_solver.hpp"
 #include "modal/mode_kind.hpp"
 
-namespace ffrf::app {
+namespace ffrf::study {
 
 struct ModesResult {
   fem::BeamMesh mesh;
@@ -37,9 +37,9 @@ double modes_shift(const fem::BeamMesh& mesh, fem::Boundary boundary);
 
 // Distance r [m] from the spin axis to the boom root on the beam axis, for `--spin` and
 // `--spin-range` (the centrifugal force N(x)/Ω² = ρA [r (L − x) + (L² − x²)/2]): hub.radius of a hub
-// scene, the same r the time-domain model uses for a hull crane (cases::centrifugal_hub_radius), 0
+// scene, the same r the time-domain model uses for a hull crane (scene::centrifugal_hub_radius), 0
 // for a single beam. Everything downstream takes the hub radius as a parameter.
-double spin_hub_radius(const cases::Scene& scene);
+double spin_hub_radius(const scene::Scene& scene);
 
 // Free DOFs of the mesh under the boundary condition.
 int free_dof_count(const fem::BeamMesh& mesh, fem::Boundary boundary);
@@ -60,4 +60,4 @@ std::vector<ConvergencePoint> frequency_convergence(const fem::BeamMesh& mesh, f
                                                     modal::EigenSolverKind solver,
                                                     const std::function<void(int)>& progress);
 
-}  // namespace ffrf::app
+}  // namespace ffrf::study

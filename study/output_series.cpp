@@ -1,5 +1,5 @@
-// The crane run's output table and its statistics (see crane_series.hpp).
-#include "app/crane_series.hpp"
+// The crane run's output table and its statistics (see output_series.hpp).
+#include "study/output_series.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,7 +8,9 @@
 #include <stdexcept>
 #include <string>
 
-namespace ffrf::app {
+#include "study/error_measure.hpp"
+
+namespace ffrf::study {
 namespace {
 
 using coupling::CraneOutputs;
@@ -58,11 +60,10 @@ double series_reference(const SeriesSpec& spec, const CraneOutputs& statics) {
   return spec.about_static ? 0.0 : spec.value(statics);
 }
 
-StatsWindow stats_window(const cases::Scene& scene, const std::vector<double>& time) {
+StatsWindow stats_window(const scene::Scene& scene, const std::vector<double>& time) {
   StatsWindow window;
   if (!scene.wave || time.empty()) return window;
-  const double ramp_end = scene.wave->ramp_periods * scene.wave->period;
-  const auto first = std::upper_bound(time.begin(), time.end(), ramp_end);
+  const auto first = std::upper_bound(time.begin(), time.end(), ramp_end(scene));
   if (first == time.end()) return window;  // the run ends before the ramp does
   window.first = static_cast<std::size_t>(first - time.begin());
   window.start_s = *first;
@@ -92,24 +93,4 @@ std::vector<SeriesStats> series_stats(const std::vector<CraneOutputs>& samples, 
   return stats;
 }
 
-std::vector<SeriesDifference> series_differences(const std::vector<CraneOutputs>& a, const CraneOutputs& a_statics,
-                                                 const std::vector<CraneOutputs>& b, const CraneOutputs& b_statics,
-                                                 const StatsWindow& window) {
-  if (a.size() != b.size()) throw std::logic_error("series_differences: runs sampled at different times");
-  std::vector<SeriesDifference> differences;
-  for (const SeriesSpec& spec : series) {
-    SeriesDifference d;
-    double sum_squares = 0.0;
-    for (std::size_t i = window.first; i < a.size(); ++i) {
-      const double delta = series_value(spec, a[i], a_statics) - series_value(spec, b[i], b_statics);
-      d.max_abs = std::max(d.max_abs, std::abs(delta));
-      sum_squares += delta * delta;
-    }
-    const std::size_t count = a.size() - std::min(window.first, a.size());
-    d.rms = count > 0 ? std::sqrt(sum_squares / static_cast<double>(count)) : NAN;
-    differences.push_back(d);
-  }
-  return differences;
-}
-
-}  // namespace ffrf::app
+}  // namespace ffrf::study

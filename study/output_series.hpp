@@ -8,10 +8,10 @@
 #include <string_view>
 #include <vector>
 
-#include "cases/scene.hpp"
+#include "scene/scene.hpp"
 #include "coupling/crane_equations.hpp"
 
-namespace ffrf::app {
+namespace ffrf::study {
 
 struct SeriesSpec {
   std::string_view column;  // CSV column, unit in the name
@@ -38,7 +38,7 @@ struct StatsWindow {
   double start_s = 0.0;      // its time
   bool after_ramp = false;   // true when the window starts after a wave ramp
 };
-StatsWindow stats_window(const cases::Scene& scene, const std::vector<double>& time);
+StatsWindow stats_window(const scene::Scene& scene, const std::vector<double>& time);
 
 struct SeriesStats {
   double static_value = 0.0;  // the reference (0 for displacements from static)
@@ -49,14 +49,4 @@ struct SeriesStats {
 std::vector<SeriesStats> series_stats(const std::vector<coupling::CraneOutputs>& samples,
                                       const coupling::CraneOutputs& statics, const StatsWindow& window);
 
-// Difference of two runs sampled at the same times, over the window: max |a − b| and RMS of a − b.
-struct SeriesDifference {
-  double max_abs = 0.0;
-  double rms = 0.0;
-};
-std::vector<SeriesDifference> series_differences(const std::vector<coupling::CraneOutputs>& a,
-                                                 const coupling::CraneOutputs& a_statics,
-                                                 const std::vector<coupling::CraneOutputs>& b,
-                                                 const coupling::CraneOutputs& b_statics, const StatsWindow& window);
-
-}  // namespace ffrf::app
+}  // namespace ffrf::study

@@ -12,18 +12,17 @@
 #include <string>
 #include <vector>
 
-#include "app/crane_reference.hpp"
-#include "app/recommend_reasoning.hpp"
-#include "cases/reference_model.hpp"
 #include "coupling/simulation.hpp"
+#include "study/recommend_reasoning.hpp"
+#include "study/reference.hpp"
 
-namespace ffrf::app {
+namespace ffrf::study {
 
 enum class CandidateStatus { pruned, not_run, passed, failed, solver_failure };
 std::string_view to_string(CandidateStatus status);
 
 struct Candidate {
-  cases::BoomChoice choice;
+  scene::BoomChoice choice;
   coupling::Integrator integrator = coupling::Integrator::cvode;
   int elastic_dof = 0;                  // predicted size of the elastic coordinates (the ladder's order)
   double estimated_error = std::numeric_limits<double>::quiet_NaN();  // a priori (NaN: none)
@@ -42,20 +41,22 @@ struct Candidate {
 };
 
 // The ladder of candidates for a scene, in order of predicted cost, each kept or pruned with the reason.
-std::vector<Candidate> candidate_ladder(const cases::Scene& scene, const RecommendReasoning& reasoning);
+std::vector<Candidate> candidate_ladder(const scene::Scene& scene, const RecommendReasoning& reasoning,
+                                        modal::ModeCache* modes = nullptr);
 
 struct RecommendRequest {
-  double tolerance = 0.01;
-  std::vector<coupling::OutputChannel> outputs;
-  double duration = 0.0;
+  double tolerance = 0.01;                       // in (0, 1)
+  std::vector<coupling::OutputChannel> outputs;  // judged; empty: judged_outputs(scene)
+  double duration = 0.0;                         // of every run [s]; 0: simulation.duration of the scene
   ReferenceOptions reference;  // its first level's rtol is tightened to a tenth of the candidates'
 };
 
 struct Recommendation {
   RecommendReasoning reasoning;
-  cases::Scene reference_scene;  // the scene with the stiffening the reference needs
-  cases::ConvergedReference reference;
-  int reference_state_size = 0;
+  scene::Scene reference_scene;  // the scene with the stiffening the reference needs
+  std::vector<coupling::OutputChannel> outputs;  // the judged outputs
+  double duration = 0.0;                         // of every run [s]
+  ConvergedReference reference;
   std::vector<Candidate> candidates;
   std::optional<std::size_t> chosen;      // index into candidates
   std::optional<std::size_t> next_cheaper;  // the candidate just below the chosen one, run and failed
@@ -63,13 +64,9 @@ struct Recommendation {
   double wall_speedup() const;
 };
 
-// Throws cases::SceneError, coupling::SolverFailure (the reference), modal::EigenSolverError.
-// `progress` is told what is being run.
-Recommendation recommend(const cases::Scene& scene, const RecommendRequest& request,
-                         const std::function<void(const std::string&)>& progress = {});
+// Throws scene::SceneError, coupling::SolverFailure (the reference), modal::EigenSolverError,
+// SettingError (a tolerance or duration out of range). `progress` is told what is being run.
+Recommendation recommend(const scene::Scene& scene, const RecommendRequest& request,
+                         const std::function<void(const std::string&)>& progress = {}, modal::ModeCache* modes = nullptr);
 
-// The exact `ffrf run` command line of a candidate (`scene`: the one the candidates were run on).
-std::string run_command_line(const std::string& scene_file, const Candidate& candidate, double rtol, double duration,
-                             const cases::Scene& scene);
-
-}  // namespace ffrf::app
+}  // namespace ffrf::study

@@ -1,5 +1,5 @@
 // The physics that prunes `ffrf recommend`'s search (see recommend_reasoning.hpp).
-#include "app/recommend_reasoning.hpp"
+#include "study/recommend_reasoning.hpp"
 
 #include <fmt/format.h>
 
@@ -8,10 +8,10 @@
 #include <limits>
 #include <numbers>
 
-#include "app/modes_analysis.hpp"
+#include "study/modes.hpp"
 #include "fem/analytic_beam.hpp"
 
-namespace ffrf::app {
+namespace ffrf::study {
 namespace {
 
 constexpr int reasoning_modes = 6;  // as many as `ffrf modes` lists by default for a clamped boom
@@ -20,17 +20,17 @@ bool contains(const std::vector<coupling::OutputChannel>& outputs, coupling::Out
   return std::find(outputs.begin(), outputs.end(), channel) != outputs.end();
 }
 
-cases::Stiffening combine(cases::Stiffening a, cases::Stiffening b) {
-  const bool s = cases::has_static_stiffening(a) || cases::has_static_stiffening(b);
-  const bool c = cases::has_centrifugal_stiffening(a) || cases::has_centrifugal_stiffening(b);
-  if (s && c) return cases::Stiffening::both;
-  if (s) return cases::Stiffening::static_load;
-  return c ? cases::Stiffening::centrifugal : cases::Stiffening::none;
+scene::Stiffening combine(scene::Stiffening a, scene::Stiffening b) {
+  const bool s = scene::has_static_stiffening(a) || scene::has_static_stiffening(b);
+  const bool c = scene::has_centrifugal_stiffening(a) || scene::has_centrifugal_stiffening(b);
+  if (s && c) return scene::Stiffening::both;
+  if (s) return scene::Stiffening::static_load;
+  return c ? scene::Stiffening::centrifugal : scene::Stiffening::none;
 }
 
-void excitation(const cases::Scene& scene, RecommendReasoning& r) {
+void excitation(const scene::Scene& scene, RecommendReasoning& r) {
   if (scene.wave && scene.wave->height > 0.0) r.wave_frequency = 2.0 * std::numbers::pi / scene.wave->period;
-  if (scene.hub && scene.hub->motion != cases::HubMotion::fixed) r.spin_rate = std::abs(scene.hub->spin_rate);
+  if (scene.hub && scene.hub->motion != scene::HubMotion::fixed) r.spin_rate = std::abs(scene.hub->spin_rate);
   r.excitation_top = std::max(r.wave_frequency, r.spin_rate);
   std::string band;
   if (r.wave_frequency > 0.0) {
@@ -43,7 +43,7 @@ void excitation(const cases::Scene& scene, RecommendReasoning& r) {
                                       : "Excitation band: " + band + ".");
 }
 
-void frequencies(const cases::Scene& scene, RecommendReasoning& r) {
+void frequencies(const scene::Scene& scene, RecommendReasoning& r) {
   const fem::BeamMesh& mesh = scene.boom.mesh;
   const int dof = free_dof_count(mesh, fem::Boundary::clamped_free);
   const ModesResult modes =
@@ -74,10 +74,10 @@ void frequencies(const cases::Scene& scene, RecommendReasoning& r) {
   }
 }
 
-void loads(const cases::Scene& scene, const std::vector<coupling::OutputChannel>& outputs, RecommendReasoning& r) {
+void loads(const scene::Scene& scene, const std::vector<coupling::OutputChannel>& outputs, RecommendReasoning& r) {
   const fem::BeamMesh& mesh = scene.boom.mesh;
   const double L = mesh.length, EI = mesh.section.bending_rigidity(), rhoA = mesh.section.mass_per_length;
-  const double g = scene.environment.gravity, phi = cases::boom_angle_at_rest(scene);
+  const double g = scene.environment.gravity, phi = scene::boom_angle_at_rest(scene);
   const double cargo_weight = scene.cargo ? scene.cargo->mass * g : 0.0;
   r.static_tip_deflection = (cargo_weight * L * L * L / 3.0 + rhoA * g * std::pow(L, 4) / 8.0) * std::cos(phi) / EI;
   r.axial_load = (rhoA * g * L + cargo_weight) * std::sin(phi);
@@ -98,13 +98,13 @@ void loads(const cases::Scene& scene, const std::vector<coupling::OutputChannel>
     r.statements.push_back("Rigid boom: no wave to scale its error by; only its verification run can tell.");
   }
   // Geometric stiffening.
-  cases::Stiffening required = cases::Stiffening::none;
+  scene::Stiffening required = scene::Stiffening::none;
   if (r.axial_load > 0.0) {
     const double amplification = r.axial_load < r.euler_load ? r.axial_load / (r.euler_load - r.axial_load)
                                                              : std::numeric_limits<double>::infinity();
     r.static_stiffening_effect = (std::isfinite(r.rigid_error) ? std::min(r.rigid_error, 1.0e3) : 1.0) * amplification;
     const bool needed = r.static_stiffening_effect > r.tolerance;
-    if (needed) required = cases::Stiffening::static_load;
+    if (needed) required = scene::Stiffening::static_load;
     r.statements.push_back(fmt::format(
         "Buckling: the boom carries P = {:.3g} N in compression against its Euler load π²EI/(4L²) = {:.3g} N (P/P_E = {:.3g}); "
         "the prestress changes the deflection by P/(P_E − P) = {:.2g}, the outputs by about {:.2g}: static stiffening is {}.",
@@ -115,7 +115,7 @@ void loads(const cases::Scene& scene, const std::vector<coupling::OutputChannel>
     const double w1 = r.modes.front().angular_frequency;
     r.centrifugal_softening = r.spin_rate * r.spin_rate / (w1 * w1);
     const bool needed = r.centrifugal_softening > r.tolerance;
-    if (needed) required = combine(required, cases::Stiffening::centrifugal);
+    if (needed) required = combine(required, scene::Stiffening::centrifugal);
     r.statements.push_back(fmt::format(
         "Spin: without centrifugal stiffening the linear boom softens to ω1² − Ω², by Ω²/ω1² = {:.3g}{}: centrifugal "
         "stiffening is {}.",
@@ -134,7 +134,7 @@ double quasi_static_error(double excitation, double angular_frequency) {
   return r2 < 1.0 ? r2 / (1.0 - r2) : std::numeric_limits<double>::infinity();
 }
 
-double missing_flexibility(const cases::Scene& scene, const std::vector<BoomMode>& modes, int k) {
+double missing_flexibility(const scene::Scene& scene, const std::vector<BoomMode>& modes, int k) {
   const fem::BeamMesh& mesh = scene.boom.mesh;
   const double m = mesh.total_mass(), L = mesh.length, EI = mesh.section.bending_rigidity();
   double carried = 0.0;
@@ -146,7 +146,7 @@ double missing_flexibility(const cases::Scene& scene, const std::vector<BoomMode
   return std::max(0.0, 1.0 - carried);
 }
 
-RecommendReasoning reason_about(const cases::Scene& scene, double tolerance,
+RecommendReasoning reason_about(const scene::Scene& scene, double tolerance,
                                 const std::vector<coupling::OutputChannel>& outputs) {
   RecommendReasoning r;
   r.tolerance = tolerance;
@@ -161,11 +161,4 @@ RecommendReasoning reason_about(const cases::Scene& scene, double tolerance,
   return r;
 }
 
-std::vector<coupling::OutputChannel> default_recommend_outputs(const cases::Scene& scene) {
-  using coupling::OutputChannel;
-  if (!scene.is_crane()) return {OutputChannel::tip_deflection};
-  return {OutputChannel::cargo_heave, OutputChannel::cargo_pitch,  OutputChannel::crane_heave,
-          OutputChannel::crane_pitch, OutputChannel::wire_tension, OutputChannel::joint_moment};
-}
-
-}  // namespace ffrf::app
+}  // namespace ffrf::study

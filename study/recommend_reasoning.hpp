@@ -23,11 +23,11 @@
 #include <string>
 #include <vector>
 
-#include "cases/crane_builder.hpp"
-#include "cases/scene.hpp"
+#include "scene/crane_builder.hpp"
+#include "scene/scene.hpp"
 #include "coupling/error_metrics.hpp"
 
-namespace ffrf::app {
+namespace ffrf::study {
 
 struct BoomMode {
   double angular_frequency;  // [rad/s]
@@ -47,24 +47,21 @@ struct RecommendReasoning {
   double euler_load = 0.0;             // P_E [N]
   double static_stiffening_effect = 0.0;       // rigid_error · P/(P_E − P)
   double centrifugal_softening = 0.0;          // Ω²/ω1²
-  cases::Stiffening required_stiffening = cases::Stiffening::none;  // what the physics needs
-  cases::Stiffening reference_stiffening = cases::Stiffening::none; // required ∪ the scene's
+  scene::Stiffening required_stiffening = scene::Stiffening::none;  // what the physics needs
+  scene::Stiffening reference_stiffening = scene::Stiffening::none; // required ∪ the scene's
   double relative_tolerance = 1e-4;    // the integrators' rtol (τ/100)
   std::vector<std::string> statements; // the reasoning in plain words with its numbers
 };
 
-// The outputs judged by default: a crane's motions and loads; a hub scene's tip deflection.
-std::vector<coupling::OutputChannel> default_recommend_outputs(const cases::Scene& scene);
-
 // Throws modal::EigenSolverError when the boom's modes cannot be solved.
-RecommendReasoning reason_about(const cases::Scene& scene, double tolerance,
+RecommendReasoning reason_about(const scene::Scene& scene, double tolerance,
                                 const std::vector<coupling::OutputChannel>& outputs);
 
 // Fraction of the tip's static flexibility the first k modes of `modes` do not carry (bending modes
 // only, each 12 EI/(ω² m L³)); 1 for k = 0.
-double missing_flexibility(const cases::Scene& scene, const std::vector<BoomMode>& modes, int k);
+double missing_flexibility(const scene::Scene& scene, const std::vector<BoomMode>& modes, int k);
 
 // Quasi-static error r²/(1 − r²) of a mode at ω driven at ω_e (infinity at or above resonance).
 double quasi_static_error(double excitation, double angular_frequency);
 
-}  // namespace ffrf::app
+}  // namespace ffrf::study

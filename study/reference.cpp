@@ -1,46 +1,63 @@
-// Convergence-checked nodal reference (see header).
-#include "cases/reference_model.hpp"
+// Convergence-checked nodal reference (see reference.hpp).
+#include "study/reference.hpp"
+
+#include <fmt/format.h>
 
 #include <cmath>
 
 #include "coupling/error_metrics.hpp"
-#include "coupling/static_equilibrium.hpp"
+#include "study/error_measure.hpp"
 
-namespace ffrf::cases {
+namespace ffrf::study {
 
-double ramp_end(const Scene& scene) { return scene.wave ? scene.wave->ramp_periods * scene.wave->period : 0.0; }
+void validate(const ReferenceOptions& o) {
+  if (o.start_elements < 1) {
+    throw SettingError(Setting::reference_elements, fmt::format("{}", o.start_elements),
+                       "not a valid element count (valid range [1, inf))");
+  }
+  if (!(o.start_relative_tolerance > 0.0 && o.start_relative_tolerance < 1.0)) {
+    throw SettingError(Setting::reference_tolerance, fmt::format("{}", o.start_relative_tolerance),
+                       "not a valid tolerance (valid range (0, 1))");
+  }
+  if (!(o.bound > 0.0 && std::isfinite(o.bound))) {
+    throw SettingError(Setting::reference_bound, fmt::format("{}", o.bound), "not a valid bound (valid range (0, inf))");
+  }
+  if (o.max_levels < 1 || o.max_levels > 6) {
+    throw SettingError(Setting::reference_levels, fmt::format("{}", o.max_levels),
+                       "not a valid level count (valid range [1, 6])");
+  }
+}
 
-ConvergedReference converged_reference(const Scene& scene, const ReferenceRequest& request) {
+ConvergedReference converged_reference(const scene::Scene& scene, const ReferenceOptions& options, double duration,
+                                       modal::ModeCache* modes) {
+  validate(options);
   ConvergedReference reference;
-  reference.bound = request.bound;
-  reference.window_start = ramp_end(scene);
-  coupling::RunResult previous;
-  for (int level = 0; level < request.max_levels; ++level) {
-    BoomChoice choice;
-    choice.kind = BoomKind::nodal;
-    choice.elements = request.start_elements << level;
-    coupling::IntegratorSettings settings;
-    settings.kind = coupling::Integrator::cvode;
-    settings.relative_tolerance = request.start_relative_tolerance * std::pow(0.1, level);
-    settings.absolute_tolerance = settings.relative_tolerance;
-    settings.duration = request.duration > 0.0 ? request.duration : scene.simulation.duration;
-    settings.output_interval = scene.simulation.output_interval;
-    auto equations = build_crane(scene, choice);
-    const auto equilibrium = coupling::solve_static_equilibrium(*equations, equations->initial_guess());
-    coupling::RunResult run = coupling::integrate(*equations, equilibrium.z, settings);
-    ReferenceLevel record{choice.elements, settings.relative_tolerance, 0.0, run.stats};
-    if (level > 0) record.change = coupling::compare_runs(previous, run, reference.window_start).worst_normalized_rms();
+  reference.bound = options.bound;
+  reference.window_start = error_window(scene, duration);
+  const int levels = reference.window_start > 0.0 || ramp_end(scene) == 0.0 ? options.max_levels : 1;
+  for (int level = 0; level < levels; ++level) {
+    scene::BoomChoice choice;
+    choice.kind = scene::BoomKind::nodal;
+    choice.elements = options.start_elements << level;
+    DynamicsRequest request;
+    request.relative_tolerance = request.absolute_tolerance = options.start_relative_tolerance * std::pow(0.1, level);
+    request.duration = duration;
+    const coupling::IntegratorSettings settings = integrator_settings(scene, request);
+    ModelRun run = run_model(scene, choice, settings, modes);
+    ReferenceLevel record{choice.elements, settings.relative_tolerance, 0.0, run.result.stats};
+    if (level > 0) {
+      record.change = coupling::compare_runs(reference.run.result, run.result, reference.window_start).worst_normalized_rms();
+    }
     reference.levels.push_back(record);
     reference.choice = choice;
     reference.settings = settings;
-    previous = std::move(run);
-    if (level > 0 && record.change < request.bound) {
+    reference.run = std::move(run);
+    if (level > 0 && record.change < options.bound) {
       reference.converged = true;
       break;
     }
   }
-  reference.run = std::move(previous);
   return reference;
 }
 
-}  // namespace ffrf::cases
+}  // namespace ffrf::study

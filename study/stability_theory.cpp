@@ -1,5 +1,5 @@
 // Explicit step limits of the boom and the wire–cargo mode (see stability_theory.hpp).
-#include "cases/stability_theory.hpp"
+#include "study/stability_theory.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "coupling/explicit_stability.hpp"
 #include "coupling/simulation.hpp"
 
-namespace ffrf::cases {
+namespace ffrf::study {
 namespace {
 
 Eigen::VectorXd frequencies(const Eigen::MatrixXd& stiffness, const Eigen::MatrixXd& mass) {
@@ -24,17 +24,17 @@ Eigen::VectorXd frequencies(const Eigen::MatrixXd& stiffness, const Eigen::Matri
 
 }  // namespace
 
-Eigen::VectorXd boom_angular_frequencies(const Scene& scene, const BoomChoice& choice, ModeCache* cache) {
-  if (choice.kind == BoomKind::rigid) return Eigen::VectorXd(0);
-  if (choice.kind == BoomKind::nodal) {
-    const nodal::NodalCoordinates coords(boom_beam(scene, choice.elements));
+Eigen::VectorXd boom_angular_frequencies(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* cache) {
+  if (choice.kind == scene::BoomKind::rigid) return Eigen::VectorXd(0);
+  if (choice.kind == scene::BoomKind::nodal) {
+    const nodal::NodalCoordinates coords(scene::boom_beam(scene, choice.elements));
     return frequencies(Eigen::MatrixXd(coords.stiffness()), Eigen::MatrixXd(coords.mass_ff()));
   }
-  const modal::ModalCoordinates coords = modal_coordinates(scene, choice, cache);
+  const modal::ModalCoordinates coords = scene::modal_coordinates(scene, choice, cache);
   return frequencies(coords.stiffness(), coords.mass_ff());
 }
 
-double highest_boom_frequency(const Scene& scene, const BoomChoice& choice, ModeCache* cache) {
+double highest_boom_frequency(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* cache) {
   const Eigen::VectorXd omega = boom_angular_frequencies(scene, choice, cache);
   return omega.size() == 0 ? 0.0 : omega.maxCoeff();
 }
@@ -57,9 +57,9 @@ double damped_boom_step_limit(const Eigen::VectorXd& angular_frequencies, double
   return limit;
 }
 
-double wire_cargo_frequency(const Scene& scene) {
+double wire_cargo_frequency(const scene::Scene& scene) {
   if (!scene.wire || !scene.cargo) return 0.0;
   return std::sqrt(scene.wire->stiffness / scene.cargo->mass);
 }
 
-}  // namespace ffrf::cases
+}  // namespace ffrf::study

@@ -14,17 +14,17 @@
 
 #include <Eigen/Dense>
 
-#include "cases/crane_builder.hpp"
-#include "cases/mode_cache.hpp"
-#include "cases/scene.hpp"
+#include "scene/crane_builder.hpp"
+#include "modal/mode_cache.hpp"
+#include "scene/scene.hpp"
 
-namespace ffrf::cases {
+namespace ffrf::study {
 
 // All angular frequencies ω_i [rad/s] of the boom's elastic coordinates, ascending (empty: rigid).
-Eigen::VectorXd boom_angular_frequencies(const Scene& scene, const BoomChoice& choice, ModeCache* cache = nullptr);
+Eigen::VectorXd boom_angular_frequencies(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* cache = nullptr);
 
 // ω_max [rad/s] of the boom's elastic coordinates (0 for the rigid boom).
-double highest_boom_frequency(const Scene& scene, const BoomChoice& choice, ModeCache* cache = nullptr);
+double highest_boom_frequency(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* cache = nullptr);
 
 // β_I / ω_max: the undamped boom's ERK step limit [s] (infinity for the rigid boom).
 double undamped_boom_step_limit(double highest_frequency);
@@ -33,6 +33,6 @@ double undamped_boom_step_limit(double highest_frequency);
 double damped_boom_step_limit(const Eigen::VectorXd& angular_frequencies, double stiffness_damping);
 
 // √(k_wire / m_cargo) [rad/s]: the cargo bouncing on the wire rope with the boom tip held.
-double wire_cargo_frequency(const Scene& scene);
+double wire_cargo_frequency(const scene::Scene& scene);
 
-}  // namespace ffrf::cases
+}  // namespace ffrf::study

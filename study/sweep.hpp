@@ -1,17 +1,22 @@
-// Running the sweep's configurations (sweep_grid.hpp) against one reference, in parallel, and
-// their results as CSV rows. One row per configuration; a solver failure is a row with status
-// `failed` and the reason, never an exception. Timing columns are the ones named `*_s`.
+// The accuracy–speed sweep (`ffrf sweep`): the converged reference, then every configuration of a
+// grid (study/sweep_grid.hpp), or one shard of it, in parallel. Each configuration is one run of
+// the one pipeline (study/run_pipeline.hpp) measured against the reference over the error window;
+// a solver failure is a result with status `failed` and the reason, never an exception. The
+// workers share one mode cache (each mesh's eigenproblem is solved once) and ARPACK guards itself
+// (modal/), so nothing here is serialized but the cache's own look-ups.
 #pragma once
 
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "app/sweep_grid.hpp"
-#include "cases/scene.hpp"
 #include "coupling/error_metrics.hpp"
+#include "scene/scene.hpp"
+#include "study/error_measure.hpp"
+#include "study/reference.hpp"
+#include "study/sweep_grid.hpp"
 
-namespace ffrf::app {
+namespace ffrf::study {
 
 enum class RunStatus { ok, failed, skipped };
 std::string_view to_string(RunStatus status);
@@ -23,28 +28,46 @@ struct SweepResult {
   double step = 0.0;            // fixed step actually taken [s] (0: adaptive)
   double stable_step = 0.0;     // ARKODE rows: the explicit stability limit [s] (0: not computed)
   coupling::RunErrors errors;   // ok rows
+  WorstError worst;             // ok rows: over the judged outputs
   coupling::SolverStats stats;  // ok rows
 };
 
-struct SweepSetup {
-  const cases::Scene* scene = nullptr;
-  const coupling::RunResult* reference = nullptr;
-  double window_start = 0.0;
-  double duration = 0.0;
-  double output_interval = 0.05;
+struct SweepRequest {
+  SweepGrid grid = SweepGrid::quick;
+  Shard shard;
+  double duration = 0.0;                // simulated time of every run [s]
+  ReferenceOptions reference;
+  int jobs = 1;                         // worker threads
   long max_explicit_steps = 2'000'000;  // ARKODE runs needing more steps are skipped (with the reason)
 };
 
-// Runs one configuration (thread-safe; builds its own crane).
+struct SweepStudy {
+  ConvergedReference reference;
+  double window_start = 0.0;
+  std::vector<coupling::OutputChannel> judged;
+  std::vector<SweepResult> results;  // in grid order (the shard's configurations only)
+};
+
+// What a configuration runs against (shared, read-only, by the workers).
+struct SweepSetup {
+  const scene::Scene* scene = nullptr;
+  const ConvergedReference* reference = nullptr;
+  double window_start = 0.0;
+  std::vector<coupling::OutputChannel> judged;
+  double duration = 0.0;
+  long max_explicit_steps = 2'000'000;
+  modal::ModeCache* modes = nullptr;
+};
+
+// One configuration (thread-safe).
 SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config);
 
-// Runs the configurations over `jobs` threads; results in the order of `configs`. `progress` is
-// called (serialized) after each run with the number done.
-std::vector<SweepResult> run_sweep(const SweepSetup& setup, const std::vector<SweepConfig>& configs, int jobs,
-                                   const std::function<void(const SweepResult&, std::size_t done)>& progress);
+// The reference, then the shard's configurations over request.jobs threads. `on_reference` is
+// called once the reference is known; `progress` (serialized) after each configuration with the
+// number done and the total. Throws scene::SceneError, coupling::SolverFailure (the reference),
+// SettingError.
+SweepStudy sweep(const scene::Scene& scene, const SweepRequest& request,
+                 const std::function<void(const ConvergedReference&)>& on_reference = {},
+                 const std::function<void(const SweepResult&, std::size_t done, std::size_t total)>& progress = {});
 
-// The CSV header line (with '\n') and one result's line (with '\n').
-std::string sweep_csv_header();
-std::string sweep_csv_line(const SweepResult& result);
-
-}  // namespace ffrf::app
+}  // namespace ffrf::study

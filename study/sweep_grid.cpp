@@ -1,16 +1,15 @@
 // The sweep grid (see sweep_grid.hpp).
-#include "app/sweep_grid.hpp"
+#include "study/sweep_grid.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <charconv>
 
-namespace ffrf::app {
+namespace ffrf::study {
 namespace {
 
-using cases::BoomChoice;
-using cases::BoomKind;
+using scene::BoomChoice;
+using scene::BoomKind;
 using coupling::Integrator;
 
 struct GridSpec {
@@ -106,17 +105,4 @@ std::string integrator_label(const SweepConfig& c) {
   return fmt::format("{} rtol {:g}", name, c.rtol);
 }
 
-std::optional<Shard> parse_shard(const std::string& text) {
-  const auto slash = text.find('/');
-  if (slash == std::string::npos) return std::nullopt;
-  Shard shard;
-  const char* begin = text.data();
-  const char* end = text.data() + text.size();
-  const auto [p1, e1] = std::from_chars(begin, begin + slash, shard.index);
-  const auto [p2, e2] = std::from_chars(begin + slash + 1, end, shard.count);
-  if (e1 != std::errc() || e2 != std::errc() || p1 != begin + slash || p2 != end) return std::nullopt;
-  if (shard.count < 1 || shard.index < 0 || shard.index >= shard.count) return std::nullopt;
-  return shard;
-}
-
-}  // namespace ffrf::app
+}  // namespace ffrf::study

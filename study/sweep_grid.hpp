@@ -8,10 +8,10 @@
 #include <string_view>
 #include <vector>
 
-#include "cases/crane_builder.hpp"
+#include "scene/crane_builder.hpp"
 #include "coupling/simulation.hpp"
 
-namespace ffrf::app {
+namespace ffrf::study {
 
 enum class SweepGrid { quick, medium, full };
 std::string_view to_string(SweepGrid grid);
@@ -20,7 +20,7 @@ std::string grid_description(SweepGrid grid);
 
 struct SweepConfig {
   int id = 0;
-  cases::BoomChoice choice;
+  scene::BoomChoice choice;
   coupling::Integrator integrator = coupling::Integrator::cvode;
   double rtol = 0.0;               // 0: none (fixed-step explicit RK)
   double step = 0.0;               // fixed step [s] (generalized-α); 0: adaptive or by stability_factor
@@ -31,15 +31,15 @@ struct SweepConfig {
 std::vector<SweepConfig> sweep_grid(SweepGrid grid);
 
 // "rigid", "nodal", "modal", "modal+static": the marker style of the charts.
-std::string model_family(const cases::BoomChoice& choice);
+std::string model_family(const scene::BoomChoice& choice);
 // "cvode rtol 1e-06", "generalized-alpha h 0.01 s", "arkode h 2x limit": for tables.
 std::string integrator_label(const SweepConfig& config);
 
+// A deterministic slice of the grid: the configurations with id % count == index.
 struct Shard {
   int index = 0;
   int count = 1;
+  bool contains(const SweepConfig& config) const { return config.id % count == index; }
 };
-// "i/n" with 0 <= i < n; nothing when malformed.
-std::optional<Shard> parse_shard(const std::string& text);
 
-}  // namespace ffrf::app
+}  // namespace ffrf::study

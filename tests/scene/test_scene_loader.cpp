@@ -7,9 +7,9 @@
 #include <iterator>
 #include <numbers>
 
-#include "cases/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 
-namespace ffrf::cases {
+namespace ffrf::scene {
 namespace {
 
 constexpr const char* kBoom = R"([boom]
@@ -260,4 +260,4 @@ TEST(SceneLoader, MissingFileIsOneProblem) {
 }
 
 }  // namespace
-}  // namespace ffrf::cases
+}  // namespace ffrf::scene

@@ -6,10 +6,10 @@
 #include <set>
 #include <sstream>
 
-#include "cases/scene_schema.hpp"
+#include "scene/scene_schema.hpp"
 #include "fem/boundary.hpp"
 
-namespace ffrf::cases {
+namespace ffrf::scene {
 namespace {
 
 TEST(SceneSchema, EveryKeyIsDeclaredOnceInAKnownSection) {
@@ -64,4 +64,4 @@ TEST(SceneSchema, DocsAreGeneratedFromTheTable) {
 }
 
 }  // namespace
-}  // namespace ffrf::cases
+}  // namespace ffrf::scene

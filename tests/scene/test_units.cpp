@@ -4,9 +4,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "cases/units.hpp"
+#include "scene/units.hpp"
 
-namespace ffrf::cases {
+namespace ffrf::scene {
 namespace {
 
 double value_of(std::string_view text, Dimension dimension, bool allow_infinity = false) {
@@ -67,4 +67,4 @@ TEST(Units, UnitFactorThrowsForWrongDimension) {
 }
 
 }  // namespace
-}  // namespace ffrf::cases
+}  // namespace ffrf::scene
