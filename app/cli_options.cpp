@@ -46,8 +46,8 @@ void add_reference_options(CLI::App& sub, study::ReferenceOptions& options) {
 
 void add_stiffening_option(CLI::App& sub, std::string& stiffening) {
   sub.add_option("--stiffening", stiffening,
-                 "Geometric stiffening none|static|centrifugal|both of every model and the reference (default: "
-                 "boom.stiffening of the scene)");
+                 "Geometric stiffening none|static|centrifugal|both of every model and the reference (default: what "
+                 "the physics needs at 1 % with boom.stiffening of the scene, as recommend decides)");
 }
 
 std::string_view option_name(study::Setting setting) {
@@ -87,13 +87,13 @@ coupling::IntegratorSettings integrator_settings(const DynamicsOptions& options,
   }
 }
 
-void apply_stiffening(const std::string& stiffening, scene::Scene& scene) {
-  if (stiffening.empty()) return;
+std::optional<scene::Stiffening> stiffening_option(const std::string& stiffening) {
+  if (stiffening.empty()) return std::nullopt;
   const auto parsed = scene::parse_stiffening(stiffening);
   if (!parsed) {
     throw BadOption(fmt::format("--stiffening {}: unknown stiffening; choose one of none, static, centrifugal, both", stiffening));
   }
-  scene.boom.stiffening = *parsed;
+  return parsed;
 }
 
 std::optional<scene::Scene> load_scene(const std::string& path, const std::string& command, bool needs_base) {

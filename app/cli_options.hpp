@@ -27,7 +27,8 @@ struct DynamicsOptions {
 };
 void add_dynamics_options(CLI::App& sub, DynamicsOptions& options);
 void add_reference_options(CLI::App& sub, study::ReferenceOptions& options);
-// --stiffening none|static|centrifugal|both (empty: the scene's boom.stiffening).
+// --stiffening none|static|centrifugal|both (empty: what the physics needs with the scene's, as
+// recommend decides).
 void add_stiffening_option(CLI::App& sub, std::string& stiffening);
 
 // A command-line value that is not valid: the message names the option, the value and the range.
@@ -37,8 +38,8 @@ struct BadOption : std::runtime_error {
 
 // The integrator settings for a scene (progress on a terminal); throws BadOption.
 coupling::IntegratorSettings integrator_settings(const DynamicsOptions& options, const scene::Scene& scene);
-// Applies --stiffening to the scene; throws BadOption for an unknown name.
-void apply_stiffening(const std::string& stiffening, scene::Scene& scene);
+// --stiffening as given (empty: not given); throws BadOption for an unknown name.
+std::optional<scene::Stiffening> stiffening_option(const std::string& stiffening);
 // The option a study setting comes from ("--rtol").
 std::string_view option_name(study::Setting setting);
 // "--rtol 0: not a valid tolerance (valid range (0, 1))"

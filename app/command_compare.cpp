@@ -53,7 +53,7 @@ int run_compare(const CompareOptions& options) {
   if (!scene) return exit_bad_input;
   study::CompareRequest request;
   try {
-    apply_stiffening(options.stiffening, *scene);
+    request.stiffening = stiffening_option(options.stiffening);
     request.settings = integrator_settings(options.dynamics, *scene);
     request.reference = options.reference;
     study::validate(request.reference);
@@ -79,6 +79,7 @@ int run_compare(const CompareOptions& options) {
   } catch (const coupling::SolverFailure& failure) {
     return solver_failure("compare", running, failure, options.out);
   }
+  scene->boom.stiffening = comparison.stiffening;  // what every model ran with
   const report::RunContext context = report::make_context(options.scene, *scene, request.settings);
   if (out) write_outputs(*out, context, comparison);
   fmt::print("{}", options.json ? report::compare_json(context, comparison) : report::compare_text(context, comparison));

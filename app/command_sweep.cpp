@@ -108,7 +108,7 @@ int run_sweep(const SweepOptions& options) {
   std::optional<scene::Scene> scene = load_scene(options.scene, "sweep", true);
   if (!scene) return exit_bad_input;
   try {
-    apply_stiffening(options.stiffening, *scene);
+    request.stiffening = stiffening_option(options.stiffening);
     study::validate(request.reference);
     DynamicsOptions dynamics;  // checks the duration against the scene
     dynamics.duration = options.duration.value_or(request.grid == study::SweepGrid::quick ? quick_duration : scene->simulation.duration);

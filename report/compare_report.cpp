@@ -106,20 +106,22 @@ std::string timeseries_name(const ModelRun& run) { return "timeseries_" + slug(r
 namespace {
 
 // What the boom models (all of them, the reference included) say about geometric stiffening.
-std::string stiffening_sentence(const scene::Scene& scene) {
-  switch (scene.boom.stiffening) {
+std::string stiffening_sentence(const Comparison& c) {
+  const std::string why = c.stiffening_from_physics
+                              ? " — what the physics needs here (the same reference physics as `ffrf recommend`; "
+                                "--stiffening sets it)"
+                              : " (--stiffening)";
+  switch (c.stiffening) {
     case scene::Stiffening::none:
-      return "The boom is linear-elastic in every model: geometric stiffening from its axial compression is not modelled "
-             "(--stiffening static models it).";
+      return "The boom is linear-elastic in every model: geometric stiffening is not modelled" + why + ".";
     case scene::Stiffening::static_load:
       return "Every model, the reference included, models the static (prestress) geometric stiffening of the boom under its "
-             "own weight and the hanging cargo.";
+             "own weight and the hanging cargo" + why + ".";
     case scene::Stiffening::centrifugal:
-      return "Every model, the reference included, models the centrifugal geometric stiffening of the spinning boom; the "
-             "static prestress is not modelled.";
+      return "Every model, the reference included, models the centrifugal geometric stiffening of the spinning boom" + why + ".";
     case scene::Stiffening::both:
       return "Every model, the reference included, models both the static (prestress) and the centrifugal geometric "
-             "stiffening of the boom.";
+             "stiffening of the boom" + why + ".";
   }
   return "";
 }
@@ -142,7 +144,7 @@ std::string compare_markdown(const RunContext& ctx, const Comparison& c) {
                        : std::string(" (its own static equilibrium)"));
   r += fmt::format("- errors against: {}\n", reference_label(c.reference));
   r += fmt::format("- ffrf {}, {}\n\n", ffrf_version(), ctx.date);
-  r += stiffening_sentence(scene) + "\n\n";
+  r += stiffening_sentence(c) + "\n\n";
   r += "## Converged reference\n\n";
   r += fmt::format("Nodal model refined level by level (elements doubled, CVODE tolerance tightened 10×) until the worst "
                    "normalized RMS change of the outputs between two levels, {}, falls below the bound. ",
@@ -173,7 +175,8 @@ std::string compare_json(const RunContext& ctx, const Comparison& c) {
   Json json;
   json["command"] = "compare";
   json["provenance"] = settings_json(ctx);
-  json["geometric_stiffening"] = scene::to_string(ctx.scene->boom.stiffening);
+  json["geometric_stiffening"] = scene::to_string(c.stiffening);
+  json["stiffening_from_physics"] = c.stiffening_from_physics;
   json["reference"] = reference_json(c.reference);
   json["reference"]["timeseries"] = reference_timeseries_name;
   json["error_window_start_s"] = c.window_start;
@@ -200,7 +203,7 @@ std::string compare_json(const RunContext& ctx, const Comparison& c) {
 
 std::string compare_text(const RunContext& ctx, const Comparison& c) {
   std::string t = fmt::format("scene       {}\nsettings    {}, stiffening {}\nerrors      {} against {}\n\n", ctx.scene_file,
-                              settings_text(ctx), scene::to_string(ctx.scene->boom.stiffening), window_text(c.window_start),
+                              settings_text(ctx), scene::to_string(c.stiffening), window_text(c.window_start),
                               reference_label(c.reference));
   t += "converged reference\n" + reference_levels_text(c.reference) + "\n";
   t += fmt::format("{:<24} {:>5} {:>11} {:>10} {:>10} {:>10} {:>10} {:>9} {:>11}\n", "model", "DOFs", "tip v [m]",

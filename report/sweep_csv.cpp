@@ -54,7 +54,7 @@ std::string sweep_csv_line(const study::SweepResult& r) {
   for (const auto& e : r.errors.channels) line += "," + (ok ? number(e.normalized_rms) : std::string());
   for (const auto& e : r.errors.channels) line += "," + (ok ? number(e.max_abs) : std::string());
   line += "," + (ok ? number(r.errors.daf_error) : std::string());
-  line += "," + (ok ? number(r.errors.worst_normalized_rms()) : std::string());
+  line += "," + (ok ? number(r.worst.error) : std::string());
   if (ok) {
     line += fmt::format(",{},{},{},{}", r.stats.steps, r.stats.function_evaluations, r.stats.jacobian_evaluations,
                         r.stats.newton_iterations);

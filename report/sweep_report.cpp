@@ -10,6 +10,7 @@
 
 #include "report/gnuplot.hpp"
 #include "report/reference_report.hpp"
+#include "study/error_measure.hpp"
 #include "report/sweep_csv.hpp"
 
 namespace ffrf::report {
@@ -129,9 +130,9 @@ std::string sweep_markdown(const std::vector<SweepRow>& rows, const std::string&
   r += fmt::format("\n{} configurations: {} ok, {} failed, {} skipped. Every row is in `sweep.csv` (timing columns: "
                    "names ending in `_s`).\n\n",
                    rows.size(), ok, failed, skipped);
-  r += "Error measure: the **worst normalized RMS error over the seven output channels** (cargo heave and pitch, "
-       "crane heave and pitch, wire tension, tip deflection, joint moment) against the reference; cost: the wall time "
-       "of the integration (static equilibrium and mode shapes excluded).\n\n";
+  r += "Error measure: the **worst normalized RMS error over the judged outputs** named above (study/error_measure.hpp: "
+       "the same outputs, window and reference physics as compare and recommend) against the reference; cost: the wall "
+       "time of the integration (static equilibrium and mode shapes excluded).\n\n";
   r += "## Pareto-optimal configurations\n\nNo other run is both faster and more accurate.\n\n"
        "| id | model | integrator | worst error | cargo heave error | DAF error | wall time [s] | real-time factor | steps |\n"
        "|--:|---|---|--:|--:|--:|--:|--:|--:|\n";
@@ -163,12 +164,15 @@ std::string sweep_context(const std::string& scene_file, const scene::Scene& sce
                           const study::SweepStudy& study) {
   return fmt::format(
       "<!-- duration_s: {} -->\n# Accuracy–speed sweep: {}\n\n- scene: `{}`, {:g} s simulated, output every {:g} s\n- {}\n"
-      "- errors against {}, {}\n\n## Converged reference\n\n{}\n\n{}",
+      "- geometric stiffening of every run and the reference: {}{}\n- errors against {}, {}, worst over {}\n\n"
+      "## Converged reference\n\n{}\n\n{}",
       duration, scene.name.empty() ? scene_file : scene.name, scene_file, duration, scene.simulation.output_interval,
-      study::grid_description(grid), reference_label(study.reference),
+      study::grid_description(grid), scene::to_string(study.stiffening),
+      study.stiffening_from_physics ? " (what the physics needs, as recommend decides; --stiffening sets it)" : " (--stiffening)",
+      reference_label(study.reference),
       study.window_start > 0.0 ? fmt::format("for t ≥ {:g} s (after the wave ramp)", study.window_start)
                                : std::string("over the whole run"),
-      reference_verdict(study.reference), reference_levels_markdown(study.reference));
+      study::output_list(study.judged), reference_verdict(study.reference), reference_levels_markdown(study.reference));
 }
 
 double context_duration(const std::string& context) {

@@ -1,6 +1,8 @@
 // The comparison of boom models against the converged reference (see compare.hpp).
 #include "study/compare.hpp"
 
+#include "study/recommend_reasoning.hpp"
+
 namespace ffrf::study {
 
 std::vector<ComparedModel> compared_models() {
@@ -27,13 +29,17 @@ Comparison compare(const scene::Scene& scene, const CompareRequest& request,
   modal::ModeCache& cache = modes != nullptr ? *modes : own;
   Comparison c;
   c.settings = request.settings;
+  c.stiffening_from_physics = !request.stiffening;
+  c.stiffening = request.stiffening.value_or(physics_stiffening(scene, request.tolerance));
+  scene::Scene modelled = scene;
+  modelled.boom.stiffening = c.stiffening;
   tell("reference");
-  c.reference = converged_reference(scene, request.reference, request.settings.duration, &cache);
+  c.reference = converged_reference(modelled, request.reference, request.settings.duration, &cache);
   c.window_start = error_window(scene, request.settings.duration);
   c.judged = judged_outputs(scene);
   for (const ComparedModel& model : compared_models()) {
     tell(model.choice.label());
-    c.runs.push_back(run_model(scene, model.choice, request.settings, &cache));
+    c.runs.push_back(run_model(modelled, model.choice, request.settings, &cache));
     c.plotted.push_back(model.plotted);
     c.errors.push_back(coupling::compare_runs(c.runs.back().result, c.reference.run.result, c.window_start));
     c.worst.push_back(worst_error(c.errors.back(), c.judged));

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,10 +28,16 @@ std::vector<ComparedModel> compared_models();
 struct CompareRequest {
   coupling::IntegratorSettings settings;  // of every compared model (study::integrator_settings)
   ReferenceOptions reference;
+  // Geometric stiffening of every model and the reference; empty: what the physics needs at
+  // `tolerance` together with the scene's (physics_stiffening: the same as recommend's reference).
+  std::optional<scene::Stiffening> stiffening;
+  double tolerance = 0.01;
 };
 
 struct Comparison {
   coupling::IntegratorSettings settings;
+  scene::Stiffening stiffening = scene::Stiffening::none;  // of every model and the reference
+  bool stiffening_from_physics = false;                    // decided by physics_stiffening (not given)
   ConvergedReference reference;
   double window_start = 0.0;                    // errors are measured for t >= window_start
   std::vector<coupling::OutputChannel> judged;  // the outputs the worst error is taken over

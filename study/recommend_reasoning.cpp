@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 
+#include "study/error_measure.hpp"
 #include "study/modes.hpp"
 #include "fem/analytic_beam.hpp"
 
@@ -159,6 +160,10 @@ RecommendReasoning reason_about(const scene::Scene& scene, double tolerance,
       "model, not the integrator, decides each candidate's error.",
       r.relative_tolerance));
   return r;
+}
+
+scene::Stiffening physics_stiffening(const scene::Scene& scene, double tolerance) {
+  return reason_about(scene, tolerance, judged_outputs(scene)).reference_stiffening;
 }
 
 }  // namespace ffrf::study

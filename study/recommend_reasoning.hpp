@@ -53,6 +53,12 @@ struct RecommendReasoning {
   std::vector<std::string> statements; // the reasoning in plain words with its numbers
 };
 
+// The geometric stiffening a reference for this scene models (issue 11.5: one physics for compare,
+// sweep and recommend): what the physics needs at `tolerance` on the judged outputs (static
+// stiffening near buckling, centrifugal at high spin) together with what the scene asks for —
+// RecommendReasoning::reference_stiffening. Throws modal::EigenSolverError.
+scene::Stiffening physics_stiffening(const scene::Scene& scene, double tolerance);
+
 // Throws modal::EigenSolverError when the boom's modes cannot be solved.
 RecommendReasoning reason_about(const scene::Scene& scene, double tolerance,
                                 const std::vector<coupling::OutputChannel>& outputs);

@@ -1,6 +1,8 @@
 // Running the sweep's configurations against one reference, in parallel (see sweep.hpp).
 #include "study/sweep.hpp"
 
+#include "study/recommend_reasoning.hpp"
+
 #include <fmt/format.h>
 
 #include <atomic>
@@ -75,15 +77,19 @@ SweepStudy sweep(const scene::Scene& scene, const SweepRequest& request,
   }
   modal::ModeCache modes;
   SweepStudy study;
-  study.reference = converged_reference(scene, request.reference, request.duration, &modes);
+  study.stiffening_from_physics = !request.stiffening;
+  study.stiffening = request.stiffening.value_or(physics_stiffening(scene, request.tolerance));
+  scene::Scene modelled = scene;
+  modelled.boom.stiffening = study.stiffening;
+  study.reference = converged_reference(modelled, request.reference, request.duration, &modes);
   if (on_reference) on_reference(study.reference);
-  study.window_start = error_window(scene, request.duration);
-  study.judged = judged_outputs(scene);
+  study.window_start = error_window(modelled, request.duration);
+  study.judged = judged_outputs(modelled);
   std::vector<SweepConfig> configs;
   for (const SweepConfig& config : sweep_grid(request.grid)) {
     if (request.shard.contains(config)) configs.push_back(config);
   }
-  const SweepSetup setup{&scene, &study.reference, study.window_start, study.judged, request.duration,
+  const SweepSetup setup{&modelled, &study.reference, study.window_start, study.judged, request.duration,
                          request.max_explicit_steps, &modes};
   study.results.resize(configs.size());
   std::atomic<std::size_t> next{0};

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,10 +39,16 @@ struct SweepRequest {
   double duration = 0.0;                // simulated time of every run [s]
   ReferenceOptions reference;
   int jobs = 1;                         // worker threads
+  // Geometric stiffening of every run and the reference; empty: physics_stiffening at `tolerance`
+  // (as compare and recommend).
+  std::optional<scene::Stiffening> stiffening;
+  double tolerance = 0.01;
   long max_explicit_steps = 2'000'000;  // ARKODE runs needing more steps are skipped (with the reason)
 };
 
 struct SweepStudy {
+  scene::Stiffening stiffening = scene::Stiffening::none;
+  bool stiffening_from_physics = false;
   ConvergedReference reference;
   double window_start = 0.0;
   std::vector<coupling::OutputChannel> judged;
