@@ -81,7 +81,7 @@ void draw_sweep_charts(const StagedDirectory& out, const std::vector<SweepRow>& 
   script += fmt::format(
       "set title \"Accuracy vs speed: every successful sweep run\\n{}\" noenhanced\n"
       "set xlabel 'wall time of the integration [s]'\n"
-      "set ylabel 'worst normalized RMS error over the output channels'\n"
+      "set ylabel 'worst normalized RMS error over the judged outputs'\n"
       "set key outside right\n"
       "plot 'accuracy_speed.dat' index 0 using 1:2 with points pt 5 ps 1.4 lc rgb '#444444' title 'rigid', \\\n"
       "     '' index 1 using 1:2 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'nodal', \\\n"
