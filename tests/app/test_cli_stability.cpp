@@ -31,7 +31,9 @@ TEST(CliStability, DroppedLoadWritesTheReportAndEveryApplicableSection) {
     }
     for (const Json& cell : section["cells"].items) {
       EXPECT_FALSE(cell["status"].text.empty()) << key;
-      if (!cell["ok"].flag && cell["status"].text == "snap load") EXPECT_GE(cell["time_s"].number, 0.0);
+      if (!cell["ok"].flag && cell["status"].text == "snap load") {
+        EXPECT_GE(cell["time_s"].number, 0.0);
+      }
     }
   }
   const std::regex not_a_number("\\b(nan|inf)\\b", std::regex::icase);
