@@ -6,25 +6,25 @@
 #include <string>
 
 #include "app/commands.hpp"
-#include "cases/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 
 namespace ffrf::app {
 namespace {
 
-std::string summary(const cases::Scene& scene) {
+std::string summary(const scene::Scene& scene) {
   const fem::BeamMesh& mesh = scene.boom.mesh;
   std::string text = fmt::format("boom {:g} m, {:g} t, {} elements", mesh.length, mesh.total_mass() / 1e3,
                                  mesh.element_count);
   if (scene.hub) {
-    const cases::Hub& hub = *scene.hub;
-    const char* motion = hub.motion == cases::HubMotion::spin_up         ? "spin-up"
-                         : hub.motion == cases::HubMotion::constant_spin ? "constant spin"
+    const scene::Hub& hub = *scene.hub;
+    const char* motion = hub.motion == scene::HubMotion::spin_up         ? "spin-up"
+                         : hub.motion == scene::HubMotion::constant_spin ? "constant spin"
                                                                          : "fixed";
     text = fmt::format("hub: {}, radius {:g} m, {} to {:g} rad/s{}", text, hub.radius, motion, hub.spin_rate,
                        scene.cargo ? fmt::format(", cargo {:g} t on a {:g} m wire", scene.cargo->mass / 1e3,
                                                  scene.wire->unstretched_length)
                                    : std::string());
-    return text + fmt::format(", stiffening {}", cases::to_string(scene.boom.stiffening));
+    return text + fmt::format(", stiffening {}", scene::to_string(scene.boom.stiffening));
   }
   if (!scene.is_crane()) return fmt::format("single beam: {}, {}", text, fem::to_string(scene.boom.boundary));
   text = fmt::format("crane: hull {:g} t, {} at {:g} deg, cargo {:g} t, wire {:g} m", scene.hull->mass / 1e3, text,
@@ -32,7 +32,7 @@ std::string summary(const cases::Scene& scene) {
                      scene.wire->unstretched_length);
   if (scene.wave) {
     text += fmt::format(", wave {:g} m / {:g} s {}", scene.wave->height, scene.wave->period,
-                        scene.wave->direction == cases::WaveDirection::following ? "following" : "head");
+                        scene.wave->direction == scene::WaveDirection::following ? "following" : "head");
   } else {
     text += ", calm water";
   }
@@ -47,12 +47,12 @@ Command add_check_command(CLI::App& parent) {
   sub->add_option("scene", *scene_path, "Scene file (TOML)")->required();
   return {sub, [scene_path] {
             try {
-              const cases::Scene scene = cases::load_scene(*scene_path);
+              const scene::Scene scene = scene::load_scene(*scene_path);
               fmt::print("{}: OK ({}{})\n", *scene_path, scene.name.empty() ? "" : scene.name + ": ", summary(scene));
               return exit_ok;
-            } catch (const cases::SceneError& error) {
-              for (const cases::SceneProblem& problem : error.problems()) {
-                fmt::print(stderr, "{}\n", cases::format_problem(problem));
+            } catch (const scene::SceneError& error) {
+              for (const scene::SceneProblem& problem : error.problems()) {
+                fmt::print(stderr, "{}\n", scene::format_problem(problem));
               }
               fmt::print(stderr, "{}: {} problem{}\n", *scene_path, error.problems().size(),
                          error.problems().size() == 1 ? "" : "s");

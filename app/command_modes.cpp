@@ -2,27 +2,32 @@
 // analytic Euler–Bernoulli values. Text table, --json on stdout, --out DIR with CSV, JSON and
 // gnuplot charts (written completely or not at all). With --spin Ω and/or --axial-force P: the modes
 // of the spinning / prestressed beam next to the power series; with --spin-range a:b:n: the
-// Campbell diagram (app/campbell_analysis.hpp).
+// Campbell diagram (study/campbell.hpp).
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <memory>
+#include <cmath>
+#include <cstdlib>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
-#include "app/campbell_analysis.hpp"
-#include "app/campbell_report.hpp"
+#include "app/cli_options.hpp"
 #include "app/commands.hpp"
-#include "app/gnuplot.hpp"
-#include "app/modes_analysis.hpp"
-#include "app/modes_report.hpp"
-#include "app/output_directory.hpp"
-#include "cases/scene_loader.hpp"
 #include "fem/beam_model.hpp"
+#include "report/campbell_report.hpp"
+#include "report/gnuplot.hpp"
+#include "report/modes_report.hpp"
+#include "report/output_directory.hpp"
+#include "scene/scene_loader.hpp"
+#include "study/campbell.hpp"
+#include "study/modes.hpp"
 
 namespace ffrf::app {
 namespace {
+
+using namespace ffrf::report;
+using namespace ffrf::study;
 
 struct ModesOptions {
   std::string scene;
@@ -40,17 +45,47 @@ struct ModesOptions {
 constexpr int default_elastic_modes = 6;
 constexpr int default_campbell_modes = 3;  // bending modes tracked over the spin range
 
-void progress(const std::string& message) {
-  if (::isatty(STDERR_FILENO) != 0) fmt::print(stderr, "\r\033[K{}", message);
-}
-void progress_done() {
-  if (::isatty(STDERR_FILENO) != 0) fmt::print(stderr, "\r\033[K");
+void progress(const std::string& message) { app::progress("modes", message); }
+void progress_done() { app::progress("modes", ""); }
+int bad_input(const std::string& message) { return app::bad_input("modes", message); }
+
+double parse_finite(const std::string& name, const std::string& text, std::optional<double> minimum) {
+  const std::string range = minimum ? fmt::format("[{:g}, inf)", *minimum) : "(-inf, inf)";
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || (minimum && value < *minimum)) {
+    throw std::invalid_argument(fmt::format("{} {}: not a valid value (valid range {}, a finite number)", name, text, range));
+  }
+  return value;
 }
 
-int bad_input(const std::string& message) {
-  fmt::print(stderr, "ffrf modes: error: {}\n", message);
-  return exit_bad_input;
+study::SpinRange parse_spin_range(const std::string& text) {
+  const auto fail = [&](const std::string& why) {
+    throw std::invalid_argument(fmt::format("--spin-range {}: {} (expected a:b:n in rad/s with 0 <= a < b and an integer "
+                                            "count n in [2, 10000])", text, why));
+  };
+  const auto first_colon = text.find(':');
+  const auto second_colon = first_colon == std::string::npos ? std::string::npos : text.find(':', first_colon + 1);
+  if (second_colon == std::string::npos || text.find(':', second_colon + 1) != std::string::npos) {
+    fail("malformed, not three fields separated by ':'");
+  }
+  const auto number = [&](const std::string& field, const char* what) {
+    char* end = nullptr;
+    const double value = std::strtod(field.c_str(), &end);
+    if (field.empty() || end != field.c_str() + field.size() || !std::isfinite(value)) {
+      fail(fmt::format("{} '{}' is not a finite number", what, field));
+    }
+    return value;
+  };
+  const double a = number(text.substr(0, first_colon), "first spin a");
+  const double b = number(text.substr(first_colon + 1, second_colon - first_colon - 1), "last spin b");
+  const double n = number(text.substr(second_colon + 1), "count n");
+  if (a < 0.0) fail(fmt::format("first spin a = {:g} rad/s is negative", a));
+  if (!(b > a)) fail(fmt::format("last spin b = {:g} must exceed the first a = {:g}", b, a));
+  if (n != std::floor(n) || n < 2.0 || n > 10000.0) fail(fmt::format("count n = {:g} is not an integer in [2, 10000]", n));
+  return {a, b, static_cast<int>(n)};
 }
+
 
 void write_outputs(StagedDirectory& out, const ModesResult& result, const ModesContext& context) {
   const std::string terminal = png_terminal();
@@ -71,7 +106,7 @@ void write_outputs(StagedDirectory& out, const ModesResult& result, const ModesC
 }
 
 // --spin / --axial-force / --spin-range, after the common options were checked.
-int run_spinning(const ModesOptions& options, const cases::Scene& scene, const fem::BeamMesh& mesh,
+int run_spinning(const ModesOptions& options, const scene::Scene& scene, const fem::BeamMesh& mesh,
                  fem::Boundary boundary, modal::EigenSolverKind solver) {
   double spin = 0.0, axial_force = 0.0;
   std::optional<SpinRange> range;
@@ -131,13 +166,9 @@ int run_spinning(const ModesOptions& options, const cases::Scene& scene, const f
 }
 
 int run_modes(const ModesOptions& options) {
-  cases::Scene scene;
-  try {
-    scene = cases::load_scene(options.scene);
-  } catch (const cases::SceneError& error) {
-    for (const auto& problem : error.problems()) fmt::print(stderr, "{}\n", cases::format_problem(problem));
-    return exit_bad_input;
-  }
+  const std::optional<scene::Scene> loaded = load_scene(options.scene, "modes", false);
+  if (!loaded) return exit_bad_input;
+  const scene::Scene& scene = *loaded;
   fem::BeamMesh mesh = scene.boom.mesh;
   if (options.elements) {
     if (*options.elements < 1) {

@@ -1,24 +1,21 @@
 // `ffrf recommend SCENE --tolerance 1%`: the cheapest boom model and integrator whose error on the
-// chosen outputs stays within the tolerance, decided by physics first (recommend_reasoning.hpp) and
-// proved by verification runs against the converged reference (recommend_candidates.hpp). Prints
-// the decision (or --json); --out DIR gets recommendation.md and recommendation.json, written
-// completely or not at all. Exit 0 with a recommendation, 1 when no candidate meets the tolerance,
-// 2 for bad input, 3 when the reference's solver fails.
+// judged outputs stays within the tolerance, decided by physics first and proved by verification
+// runs against the converged reference (study::recommend). Prints the decision (or --json); --out
+// DIR gets recommendation.md and recommendation.json, written completely or not at all. Exit 0 with
+// a recommendation, 1 when no candidate meets the tolerance, 2 for bad input, 3 when the
+// reference's solver fails.
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <cmath>
-#include <cstdio>
 #include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
 
-#include "app/crane_commands.hpp"
-#include "app/crane_run.hpp"
-#include "app/output_directory.hpp"
-#include "app/recommend_report.hpp"
-#include "cases/scene_loader.hpp"
+#include "app/cli_options.hpp"
+#include "app/commands.hpp"
+#include "report/output_directory.hpp"
+#include "report/recommend_report.hpp"
 
 namespace ffrf::app {
 namespace {
@@ -26,20 +23,16 @@ namespace {
 struct RecommendOptions {
   std::string scene;
   std::string tolerance = "1%";
-  std::string outputs;  // empty: by scene kind
+  std::string outputs;  // empty: the judged outputs of the scene
   std::optional<double> duration;
-  ReferenceOptions reference;
+  study::ReferenceOptions reference;
   bool json = false;
   std::string out;
 };
 
-int bad_input(const std::string& message) {
-  fmt::print(stderr, "ffrf recommend: error: {}\n", message);
-  return exit_bad_input;
-}
-
-// "1%" → 0.01, "0.01" → 0.01; nothing when not a number in (0, 1).
-std::optional<double> parse_tolerance(std::string text) {
+// "1%" → 0.01, "0.01" → 0.01; throws BadOption when not a number in (0, 1).
+double parse_tolerance(std::string text) {
+  const std::string given = text;
   double scale = 1.0;
   if (!text.empty() && text.back() == '%') {
     text.pop_back();
@@ -50,89 +43,68 @@ std::optional<double> parse_tolerance(std::string text) {
   try {
     value = std::stod(text, &used);
   } catch (const std::exception&) {
-    return std::nullopt;
+    used = 0;
   }
-  if (used != text.size()) return std::nullopt;
   value *= scale;
-  if (!(value > 0.0 && value < 1.0)) return std::nullopt;
+  if (used == 0 || used != text.size() || !(value > 0.0 && value < 1.0)) {
+    throw BadOption(fmt::format("--tolerance {}: not a tolerance (valid range (0, 1), or a percentage like 1%)", given));
+  }
   return value;
 }
 
-std::optional<std::vector<coupling::OutputChannel>> parse_outputs(const std::string& text, std::string& error) {
-  std::vector<coupling::OutputChannel> outputs;
-  std::stringstream stream(text);
-  std::string item;
+// "cargo_heave,wire_tension" → the channels; throws BadOption naming an unknown one.
+std::vector<coupling::OutputChannel> parse_outputs(const std::string& text) {
   std::string names;
   for (const auto channel : coupling::all_channels) names += (names.empty() ? "" : ",") + std::string(coupling::channel_name(channel));
-  while (std::getline(stream, item, ',')) {
-    bool found = false;
-    for (const auto channel : coupling::all_channels) {
-      if (coupling::channel_name(channel) == item) {
-        outputs.push_back(channel);
-        found = true;
-      }
+  std::vector<coupling::OutputChannel> outputs;
+  std::stringstream stream(text);
+  for (std::string item; std::getline(stream, item, ',');) {
+    const auto found = std::find_if(coupling::all_channels.begin(), coupling::all_channels.end(),
+                                    [&](coupling::OutputChannel c) { return coupling::channel_name(c) == item; });
+    if (found == coupling::all_channels.end()) {
+      throw BadOption(fmt::format("--outputs {}: unknown output '{}'; choose from {}", text, item, names));
     }
-    if (!found) {
-      error = fmt::format("--outputs {}: unknown output '{}'; choose from {}", text, item, names);
-      return std::nullopt;
-    }
+    outputs.push_back(*found);
   }
-  if (outputs.empty()) {
-    error = fmt::format("--outputs {}: no output given; choose from {}", text, names);
-    return std::nullopt;
-  }
+  if (outputs.empty()) throw BadOption(fmt::format("--outputs {}: no output given; choose from {}", text, names));
   return outputs;
 }
 
-
 int run_recommend(const RecommendOptions& options) {
-  const std::optional<cases::Scene> scene = load_crane_scene(options.scene, "recommend");
+  const std::optional<scene::Scene> scene = load_scene(options.scene, "recommend", true);
   if (!scene) return exit_bad_input;
-  const std::optional<double> tolerance = parse_tolerance(options.tolerance);
-  if (!tolerance) {
-    return bad_input(fmt::format("--tolerance {}: not a tolerance (valid range (0, 1), or a percentage like 1%)", options.tolerance));
-  }
-  RecommendRequest request;
-  request.tolerance = *tolerance;
-  if (options.outputs.empty()) {
-    request.outputs = default_recommend_outputs(*scene);
-  } else {
-    std::string error;
-    const auto outputs = parse_outputs(options.outputs, error);
-    if (!outputs) return bad_input(error);
-    request.outputs = *outputs;
-  }
-  request.duration = options.duration.value_or(scene->simulation.duration);
-  if (!(request.duration >= scene->simulation.output_interval) || !std::isfinite(request.duration)) {
-    return bad_input(fmt::format("--duration {}: shorter than one output interval of the scene ({} s) (valid range [{}, inf) s)",
-                                 request.duration, scene->simulation.output_interval, scene->simulation.output_interval));
-  }
-  if (const auto error = reference_options_error(options.reference)) return bad_input(*error);
-  request.reference = options.reference;
-  std::optional<StagedDirectory> out;
-  if (!options.out.empty()) out.emplace(options.out, "recommendation.json");
-  const bool terminal = ::isatty(STDERR_FILENO) != 0;
-  Recommendation rec;
+  study::RecommendRequest request;
   try {
-    rec = recommend(*scene, request, [&](const std::string& what) {
-      if (terminal) fmt::print(stderr, "\r\033[Kffrf recommend: {}", what);
-    });
-    if (terminal) fmt::print(stderr, "\r\033[K");
-  } catch (const cases::SceneError& error) {
-    for (const auto& problem : error.problems()) fmt::print(stderr, "{}\n", cases::format_problem(problem));
-    return bad_input(fmt::format("{}: the scene cannot make the reference crane", options.scene));
-  } catch (const coupling::SolverFailure& failure) {
-    fmt::print(stderr, "ffrf recommend: solver failure (reference, {}): {}\n", coupling::to_string(failure.kind()), failure.what());
-    if (out) fmt::print(stderr, "ffrf recommend: nothing written to {}\n", options.out);
-    return exit_solver_failure;
+    request.tolerance = parse_tolerance(options.tolerance);
+    if (!options.outputs.empty()) request.outputs = parse_outputs(options.outputs);
+    DynamicsOptions dynamics;  // checks the duration against the scene
+    dynamics.duration = options.duration;
+    request.duration = integrator_settings(dynamics, *scene).duration;
+    request.reference = options.reference;
+    study::validate(request.reference);
+  } catch (const BadOption& error) {
+    return bad_input("recommend", error.what());
+  } catch (const study::SettingError& error) {
+    return bad_input("recommend", option_message(error));
   }
-  const RecommendContext context{options.scene, &*scene, request};
+  std::optional<report::StagedDirectory> out;
+  if (!options.out.empty()) out.emplace(options.out, "recommendation.json");
+  study::Recommendation rec;
+  try {
+    rec = study::recommend(*scene, request, [&](const std::string& what) { progress("recommend", what); });
+    progress("recommend", "");
+  } catch (const scene::SceneError& error) {
+    return scene_error("recommend", options.scene, error, "the reference crane");
+  } catch (const coupling::SolverFailure& failure) {
+    return solver_failure("recommend", "reference, " + std::string(coupling::to_string(failure.kind())), failure, options.out);
+  }
+  const report::RecommendContext context{options.scene, &*scene, request.tolerance};
   if (out) {
-    out->write("recommendation.md", recommend_markdown(context, rec));
-    out->write("recommendation.json", recommend_json(context, rec));
+    out->write("recommendation.md", report::recommend_markdown(context, rec));
+    out->write("recommendation.json", report::recommend_json(context, rec));
     out->commit();
   }
-  fmt::print("{}", options.json ? recommend_json(context, rec) : recommend_text(context, rec));
+  fmt::print("{}", options.json ? report::recommend_json(context, rec) : report::recommend_text(context, rec));
   if (!options.out.empty() && !options.json) fmt::print("\nwrote {}\n", options.out);
   return rec.chosen ? exit_ok : exit_failure;
 }

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
-#include "cases/scene_schema.hpp"
+#include "scene/scene_schema.hpp"
 
 namespace ffrf::app {
 
@@ -11,7 +11,7 @@ Command add_scene_reference_command(CLI::App& parent) {
   CLI::App* sub = parent.add_subcommand(
       "scene-reference", "Print the Markdown reference of all scene keys (the source of docs/scenes.md)");
   return {sub, [] {
-            fmt::print("{}", cases::scene_reference_markdown());
+            fmt::print("{}", scene::scene_reference_markdown());
             return exit_ok;
           }};
 }

@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "app/crane_commands.hpp"
 
 int main(int argc, char** argv) {
   using namespace ffrf::app;

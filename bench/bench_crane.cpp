@@ -27,15 +27,15 @@
 #include <unistd.h>
 #include <vector>
 
-#include "cases/crane_builder.hpp"
-#include "cases/scene_loader.hpp"
+#include "scene/crane_builder.hpp"
+#include "scene/scene_loader.hpp"
 #include "coupling/simulation.hpp"
 #include "coupling/static_equilibrium.hpp"
 
 namespace {
 
-using ffrf::cases::BoomChoice;
-using ffrf::cases::BoomKind;
+using ffrf::scene::BoomChoice;
+using ffrf::scene::BoomKind;
 using ffrf::coupling::Integrator;
 
 constexpr double kRelativeTolerance = 1e-6;
@@ -59,7 +59,7 @@ struct Row {
 };
 
 struct Context {
-  ffrf::cases::Scene scene;
+  ffrf::scene::Scene scene;
   double duration = kFullDuration;
   std::vector<std::string> order;  // table keys in registration order
   std::map<std::string, Row> rows;
@@ -104,7 +104,7 @@ void run_crane(benchmark::State& state, Context* context, Case c) {
   std::unique_ptr<ffrf::coupling::CraneEquations> equations;
   Eigen::VectorXd z0;
   try {
-    equations = ffrf::cases::build_crane(context->scene, c.choice);
+    equations = ffrf::scene::build_crane(context->scene, c.choice);
     z0 = ffrf::coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   } catch (const std::exception& error) {
     context->rows[key] = Row{c.choice.label(), c.integrator, {}, error.what()};
@@ -211,7 +211,7 @@ int main(int argc, char** argv) {
 
   Context context;
   try {
-    context.scene = ffrf::cases::load_scene(scene_path);
+    context.scene = ffrf::scene::load_scene(scene_path);
   } catch (const std::exception& error) {
     fmt::print(stderr, "bench_crane: {}\n", error.what());
     return 1;

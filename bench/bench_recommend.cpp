@@ -1,80 +1,69 @@
 // Benchmark of issue 6's claim: the wall time of the model `ffrf recommend` chooses on the reference
-// scene at 1 % (nodal N = 1 with static stiffening, CVODE rtol = atol = 1e-4; docs/recommend.md)
-// against its converged reference (nodal N = 16 with static stiffening, rtol = atol = 1e-7), both
-// 120 s simulated from static equilibrium (cases/paper_floating_crane.toml), measured side by side
-// in one run. Model construction and the KINSOL static equilibrium are outside the timed region.
-// After Google Benchmark's output it prints the ratio and the solver work (steps × state size).
-// Options (before Google Benchmark's own): --duration=SECONDS another simulated time.
+// scene at 1 % against its converged reference, measured side by side in one run. The choice is made
+// here by the real recommend study (study::recommend: reasoning, reference, verification runs) — no
+// model is hard-coded — and both runs go through the one pipeline (study/run_pipeline.hpp): model
+// construction, the KINSOL static equilibrium and the initial state outside the timed region, the
+// integration inside. After Google Benchmark's output it prints the ratio and the solver work
+// (steps × state size). Options (before Google Benchmark's own): --duration=SECONDS another
+// simulated time (default: the scene's 120 s), --tolerance=FRACTION another tolerance (default 0.01).
 #include <benchmark/benchmark.h>
 #include <fmt/core.h>
 
 #include <exception>
 #include <map>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <unistd.h>
 
-#include "cases/crane_builder.hpp"
-#include "cases/scene_loader.hpp"
-#include "coupling/simulation.hpp"
-#include "coupling/static_equilibrium.hpp"
+#include "scene/scene_loader.hpp"
+#include "study/recommend.hpp"
+#include "study/run_pipeline.hpp"
 
 namespace {
 
-using ffrf::cases::BoomChoice;
-using ffrf::cases::BoomKind;
-using ffrf::cases::Stiffening;
+using namespace ffrf;
 
 struct Model {
-  const char* name;
-  BoomChoice choice;
-  double tolerance;
+  std::string name;
+  scene::BoomChoice choice;
+  coupling::IntegratorSettings settings;
 };
 
 struct Measured {
   double milliseconds = 0.0;
-  double work = 0.0;  // steps × state size (2 × minimal coordinates)
+  double work = 0.0;  // steps × state size
   long steps = 0;
 };
 
 struct Comparison {
-  ffrf::cases::Scene scene;
-  double duration = 120.0;
+  scene::Scene scene;  // with the stiffening the reference needs (recommend's reference scene)
   std::map<std::string, Measured> measured;
 };
 
-const Model kReference{"reference", {BoomKind::nodal, 16, 0, false, ffrf::modal::EigenSolverKind::arpack, Stiffening::static_load}, 1e-7};
-const Model kRecommended{"recommended", {BoomKind::nodal, 1, 0, false, ffrf::modal::EigenSolverKind::arpack, Stiffening::static_load}, 1e-4};
-
-void run_model(benchmark::State& state, Comparison* context, Model model) {
+void integrate_model(benchmark::State& state, Comparison* context, const Model& model) {
   state.SetLabel(model.name);
-  const auto equations = ffrf::cases::build_crane(context->scene, model.choice);
-  const Eigen::VectorXd z0 = ffrf::coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
-  ffrf::coupling::IntegratorSettings settings;
-  settings.kind = ffrf::coupling::Integrator::cvode;
-  settings.relative_tolerance = model.tolerance;
-  settings.absolute_tolerance = model.tolerance;
-  settings.duration = context->duration;
-  settings.output_interval = context->scene.simulation.output_interval;
+  study::PreparedRun prepared = study::prepare_run(context->scene, model.choice);
   long steps = 0;
   for (auto _ : state) {
     try {
-      const auto result = ffrf::coupling::integrate(*equations, z0, settings);
-      benchmark::DoNotOptimize(result.samples.data());
-      steps = result.stats.steps;
+      const study::ModelRun run = study::integrate_run(context->scene, prepared, model.settings);
+      benchmark::DoNotOptimize(run.result.samples.data());
+      steps = run.result.stats.steps;
     } catch (const std::exception& error) {
       state.SkipWithError(error.what());
       return;
     }
   }
   context->measured[model.name].steps = steps;
-  context->measured[model.name].work = static_cast<double>(steps) * 2.0 * equations->minimal_size();
+  context->measured[model.name].work = static_cast<double>(steps) * prepared.state_size();
   state.counters["steps"] = static_cast<double>(steps);
 }
 
 class Collector : public benchmark::ConsoleReporter {
  public:
-  Collector(Comparison* context) : ConsoleReporter(isatty(STDOUT_FILENO) ? OO_ColorTabular : OO_Tabular), comparison_(context) {}
+  explicit Collector(Comparison* context)
+      : ConsoleReporter(isatty(STDOUT_FILENO) ? OO_ColorTabular : OO_Tabular), comparison_(context) {}
   void ReportRuns(const std::vector<Run>& runs) override {
     ConsoleReporter::ReportRuns(runs);
     for (const Run& run : runs) {
@@ -89,21 +78,37 @@ class Collector : public benchmark::ConsoleReporter {
 }  // namespace
 
 int main(int argc, char** argv) {
-  Comparison context;
+  study::RecommendRequest request;
   int kept = 1;
   for (int i = 1; i < argc; ++i) {
     const std::string_view argument(argv[i]);
     if (argument.starts_with("--duration=")) {
-      context.duration = std::stod(std::string(argument.substr(11)));
+      request.duration = std::stod(std::string(argument.substr(11)));
+    } else if (argument.starts_with("--tolerance=")) {
+      request.tolerance = std::stod(std::string(argument.substr(12)));
     } else {
       argv[kept++] = argv[i];
     }
   }
   argc = kept;
-  context.scene = ffrf::cases::load_scene(FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml");
-  for (const Model& model : {kReference, kRecommended}) {
-    benchmark::RegisterBenchmark(fmt::format("recommend/{}", model.name).c_str(), run_model, &context, model)
-        ->Iterations(model.tolerance < 1e-6 ? 2 : 10)
+  const scene::Scene scene = scene::load_scene(FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml");
+  fmt::print("recommend at {:g} on {} (the choice is made by study::recommend) ...\n", request.tolerance, scene.file);
+  const study::Recommendation rec = study::recommend(scene, request);
+  if (!rec.chosen) {
+    fmt::print("recommend found no model within {:g}: nothing to benchmark\n", request.tolerance);
+    return 1;
+  }
+  const study::Candidate& chosen = rec.candidates[*rec.chosen];
+  Comparison context{rec.reference_scene, {}};
+  study::DynamicsRequest dynamics;
+  dynamics.integrator = chosen.integrator;
+  dynamics.relative_tolerance = dynamics.absolute_tolerance = rec.reasoning.relative_tolerance;
+  dynamics.duration = rec.duration;
+  const std::vector<Model> models{{"reference", rec.reference.choice, rec.reference.settings},
+                                  {"recommended", chosen.choice, study::integrator_settings(rec.reference_scene, dynamics)}};
+  for (const Model& model : models) {
+    benchmark::RegisterBenchmark(fmt::format("recommend/{}", model.name).c_str(), integrate_model, &context, model)
+        ->Iterations(model.name == "reference" ? 2 : 10)
         ->Unit(benchmark::kMillisecond);
   }
   benchmark::Initialize(&argc, argv);
@@ -114,10 +119,12 @@ int main(int argc, char** argv) {
   const Measured& reference = context.measured["reference"];
   const Measured& recommended = context.measured["recommended"];
   if (reference.milliseconds > 0.0 && recommended.milliseconds > 0.0) {
-    fmt::print("\nreference scene, {} s simulated: reference {:.1f} ms ({} steps), recommended {:.1f} ms ({} steps)\n"
-               "wall-time ratio {:.1f}x, solver-work ratio {:.1f}x (steps x state size)\n",
-               context.duration, reference.milliseconds, reference.steps, recommended.milliseconds, recommended.steps,
-               reference.milliseconds / recommended.milliseconds, reference.work / recommended.work);
+    fmt::print("\nreference scene, {:g} s simulated: reference {} at rtol {:g}: {:.1f} ms ({} steps); recommended {}, {} at "
+               "rtol {:g}: {:.1f} ms ({} steps)\nwall-time ratio {:.1f}x, solver-work ratio {:.1f}x (steps x state size)\n",
+               rec.duration, rec.reference.choice.label(), rec.reference.settings.relative_tolerance, reference.milliseconds,
+               reference.steps, chosen.choice.label(), coupling::to_string(chosen.integrator), rec.reasoning.relative_tolerance,
+               recommended.milliseconds, recommended.steps, reference.milliseconds / recommended.milliseconds,
+               reference.work / recommended.work);
   }
   return 0;
 }

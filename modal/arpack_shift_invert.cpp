@@ -2,6 +2,10 @@
 // OP = (K − σM)⁻¹ M, whose largest-magnitude eigenvalues ν = 1/(λ − σ) are the λ nearest σ.
 // K − σM is factored once per compute() by a sparse LDLᵀ. The reverse-communication loop is in
 // run_lanczos(); the operator products it asks for are the small functions beside it.
+// ARPACK is not re-entrant: dsaupd/dseupd keep state between calls in Fortran SAVE variables (and
+// its timing and debug COMMON blocks), so two threads inside it at once corrupt each other. Every
+// call of compute() therefore runs its Lanczos loop and dseupd under one process-wide lock
+// (arpack_lock() below): callers — a parallel sweep's workers — need not know.
 #include "modal/arpack_shift_invert.hpp"
 
 #include <arpack/arpack.hpp>
@@ -10,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <mutex>
 #include <sstream>
 #include <vector>
 
@@ -155,6 +160,12 @@ ArpackInfo classify(int saupd_info) {
   return ArpackInfo::numerical_issue;
 }
 
+// The one lock around ARPACK's SAVE state (see the file comment).
+std::mutex& arpack_lock() {
+  static std::mutex lock;
+  return lock;
+}
+
 // The reverse-communication loop of dsaupd: answers every request with the operator products
 // above until ARPACK reports convergence (ido = 99). Returns dsaupd's info.
 int run_lanczos(LanczosWorkspace& work, ShiftInvertOperator& shift_invert, const SparseMatrix& mass,
@@ -215,6 +226,8 @@ int ArpackShiftInvert::compute(int nev, int ncv, double sigma, double tolerance,
   work.iparam[kBlockSize] = 1;
   work.iparam[kMode] = 3;
 
+  // From the first dsaupd call to dseupd, ARPACK's SAVE variables belong to this problem.
+  const std::lock_guard<std::mutex> arpack_state(arpack_lock());
   const int saupd_info = run_lanczos(work, shift_invert, mass_, tolerance);
   stats_.iterations = work.iparam[kMaxIterations];
   stats_.operator_applications = work.iparam[kOperatorProducts];

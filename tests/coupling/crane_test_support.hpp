@@ -9,25 +9,25 @@
 #include <string>
 #include <vector>
 
-#include "cases/crane_builder.hpp"
-#include "cases/scene_loader.hpp"
+#include "scene/crane_builder.hpp"
+#include "scene/scene_loader.hpp"
 #include "coupling/simulation.hpp"
 #include "coupling/static_equilibrium.hpp"
 
 namespace ffrf::test {
 
-inline cases::Scene reference_scene() { return cases::load_scene(FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml"); }
+inline scene::Scene reference_scene() { return scene::load_scene(FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml"); }
 
 // Builds a crane for `choice` with the model adjusted by `tweak` (hull supports, fixed hull, ...).
 inline std::unique_ptr<coupling::CraneEquations> build_with(
-    const cases::Scene& scene, const cases::BoomChoice& choice,
+    const scene::Scene& scene, const scene::BoomChoice& choice,
     const std::function<void(coupling::HullModel&, coupling::WireModel&)>& tweak) {
-  if (choice.kind == cases::BoomKind::nodal) {
-    auto model = cases::build_crane_model(scene, nodal::NodalCoordinates(cases::boom_beam(scene, choice.elements)));
+  if (choice.kind == scene::BoomKind::nodal) {
+    auto model = scene::build_crane_model(scene, nodal::NodalCoordinates(scene::boom_beam(scene, choice.elements)));
     tweak(model.hull, model.wire);
     return coupling::make_crane_equations(std::move(model));
   }
-  auto model = cases::build_crane_model(scene, cases::modal_coordinates(scene, choice));
+  auto model = scene::build_crane_model(scene, scene::modal_coordinates(scene, choice));
   tweak(model.hull, model.wire);
   return coupling::make_crane_equations(std::move(model));
 }
@@ -42,7 +42,7 @@ struct ConservativeCrane {
 };
 
 inline ConservativeCrane conservative_crane() {
-  cases::Scene scene = reference_scene();
+  scene::Scene scene = reference_scene();
   scene.wave.reset();
   scene.boom.damping_ratio = 0.0;
   scene.wire->damping_ratio = 0.0;
@@ -50,7 +50,7 @@ inline ConservativeCrane conservative_crane() {
   const double heave_stiffness = 3.6e7;
   const double weight = (scene.hull->mass + scene.boom.mesh.total_mass() + scene.cargo->mass) * scene.environment.gravity;
   ConservativeCrane crane;
-  crane.equations = build_with(scene, {cases::BoomKind::nodal, 1, 0, false}, [&](coupling::HullModel& hull, coupling::WireModel&) {
+  crane.equations = build_with(scene, {scene::BoomKind::nodal, 1, 0, false}, [&](coupling::HullModel& hull, coupling::WireModel&) {
     hull.hydrostatics = false;
     hull.mooring_stiffness = 0.0;
     hull.support_stiffness = Eigen::Vector3d(5.0e5, heave_stiffness, 5.0e10);
@@ -73,7 +73,7 @@ struct HubCrane {
   double cargo_mass, wire_stiffness;  // [kg, N/m]
   double duration = 1.0, output_interval = 0.01;  // [s]
 };
-inline cases::Scene hub_crane_scene(const HubCrane& c) {
+inline scene::Scene hub_crane_scene(const HubCrane& c) {
   const auto number = [](double value) {
     std::ostringstream text;
     text << std::setprecision(17) << value;
@@ -86,14 +86,14 @@ inline cases::Scene hub_crane_scene(const HubCrane& c) {
                            "\nlength = 2.0\nheight = 2.0\nhook_x = 0.0\nhook_y = 1.0\n[wire]\nunstretched_length = 5.0"
                            "\nstiffness = " + number(c.wire_stiffness) + "\n[simulation]\nduration = " + number(c.duration) +
                            "\noutput_interval = " + number(c.output_interval) + "\n";
-  return cases::load_scene_text(text, "hub_crane.toml");
+  return scene::load_scene_text(text, "hub_crane.toml");
 }
 
 // The spin-up benchmark's beam (cases/spin_up_beam.toml) on a hub spinning at a constant rate from
 // rest: N elements, the given stiffening, no gravity.
-inline cases::Scene constant_spin_beam(double spin_rate, cases::Stiffening stiffening, int elements) {
-  cases::Scene scene = cases::load_scene(FFRF_SOURCE_DIR "/cases/spin_up_beam.toml");
-  scene.hub->motion = cases::HubMotion::constant_spin;
+inline scene::Scene constant_spin_beam(double spin_rate, scene::Stiffening stiffening, int elements) {
+  scene::Scene scene = scene::load_scene(FFRF_SOURCE_DIR "/cases/spin_up_beam.toml");
+  scene.hub->motion = scene::HubMotion::constant_spin;
   scene.hub->spin_rate = spin_rate;
   scene.boom.mesh.element_count = elements;
   scene.boom.stiffening = stiffening;

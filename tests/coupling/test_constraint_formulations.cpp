@@ -38,13 +38,13 @@ coupling::IntegratorSettings drift_settings() {
 }
 
 struct ReferenceCrane {
-  cases::Scene scene = test::reference_scene();
-  cases::BoomChoice choice{cases::BoomKind::rigid, 1, 0, false};
+  scene::Scene scene = test::reference_scene();
+  scene::BoomChoice choice{scene::BoomKind::rigid, 1, 0, false};
   coupling::EquationsFactory factory() const {
-    return [this] { return cases::build_crane(scene, choice); };
+    return [this] { return scene::build_crane(scene, choice); };
   }
   Eigen::VectorXd equilibrium() const {
-    auto equations = cases::build_crane(scene, choice);
+    auto equations = scene::build_crane(scene, choice);
     return coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   }
 };

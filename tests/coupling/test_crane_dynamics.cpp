@@ -46,14 +46,14 @@ TEST(CraneDynamics, EnergyIsConservedWithoutWaterAndDamping) {
 }
 
 TEST(CraneDynamics, HeavePeriodOfTheHullAloneMatchesHydrostatics) {
-  cases::Scene scene = test::reference_scene();
+  scene::Scene scene = test::reference_scene();
   scene.wave.reset();
   scene.hull->g1_aft_of_mid_length = 0.0;        // G1 above the centre of flotation: heave uncoupled
   scene.boom.mesh.section.mass_per_length = 1.0;  // negligible boom and cargo: "the hull alone"
   scene.cargo->mass = 1.0;
   scene.wire->stiffness = 1.0e3;
   scene.radiation.surge_damping = scene.radiation.heave_damping = scene.radiation.pitch_damping = 0.0;
-  auto equations = cases::build_crane(scene, {cases::BoomKind::rigid, 1, 0, false});
+  auto equations = scene::build_crane(scene, {scene::BoomKind::rigid, 1, 0, false});
   Eigen::VectorXd z = coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   z(1) += 0.2;  // heave release: the hull, and the tiny cargo with it (the wire keeps its stretch)
   z(4) += 0.2;
@@ -72,10 +72,10 @@ TEST(CraneDynamics, HeavePeriodOfTheHullAloneMatchesHydrostatics) {
 }
 
 TEST(CraneDynamics, CargoOnRigidBoomSwingsAsARigidBodyOnAString) {
-  cases::Scene scene = test::reference_scene();
+  scene::Scene scene = test::reference_scene();
   scene.wave.reset();
   scene.wire->damping_ratio = 0.0;
-  auto equations = test::build_with(scene, {cases::BoomKind::rigid, 1, 0, false},
+  auto equations = test::build_with(scene, {scene::BoomKind::rigid, 1, 0, false},
                                     [](coupling::HullModel& hull, coupling::WireModel&) { hull.fixed = true; });
   const auto& cargo = *scene.cargo;
   const double g = scene.environment.gravity, m = cargo.mass, h = cargo.hook_y, inertia = cargo.pitch_inertia();
@@ -103,8 +103,8 @@ TEST(CraneDynamics, CargoOnRigidBoomSwingsAsARigidBodyOnAString) {
 }
 
 TEST(CraneDynamics, LagrangeMultipliersAndMinimalCoordinatesAgree) {
-  const cases::Scene scene = test::reference_scene();
-  auto equations = cases::build_crane(scene, {cases::BoomKind::nodal, 4, 0, false});
+  const scene::Scene scene = test::reference_scene();
+  auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, 4, 0, false});
   const Eigen::VectorXd z0 = coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   coupling::IntegratorSettings settings = tight(40.0);
   settings.output_interval = 0.05;
@@ -126,10 +126,10 @@ TEST(CraneDynamics, LagrangeMultipliersAndMinimalCoordinatesAgree) {
 }
 
 TEST(CraneDynamics, VeryStiffBoomReproducesTheRigidBoom) {
-  cases::Scene scene = test::reference_scene();
+  scene::Scene scene = test::reference_scene();
   scene.boom.mesh.section.youngs_modulus *= 1e6;
-  auto stiff = cases::build_crane(scene, {cases::BoomKind::nodal, 2, 0, false});
-  auto rigid = cases::build_crane(scene, {cases::BoomKind::rigid, 1, 0, false});
+  auto stiff = scene::build_crane(scene, {scene::BoomKind::nodal, 2, 0, false});
+  auto rigid = scene::build_crane(scene, {scene::BoomKind::rigid, 1, 0, false});
   coupling::IntegratorSettings settings = tight(30.0);  // ramp (20 s) plus one full wave period
   settings.relative_tolerance = settings.absolute_tolerance = 1e-8;
   const auto a = coupling::integrate(*stiff, coupling::solve_static_equilibrium(*stiff, stiff->initial_guess()).z, settings);

@@ -13,11 +13,11 @@ namespace {
 using namespace ffrf;
 
 TEST(CraneStatics, ReferenceSceneEquilibriumMatchesStatics) {
-  const cases::Scene scene = test::reference_scene();
-  cases::BoomChoice choice;
-  choice.kind = cases::BoomKind::nodal;
+  const scene::Scene scene = test::reference_scene();
+  scene::BoomChoice choice;
+  choice.kind = scene::BoomKind::nodal;
   choice.elements = 32;
-  auto equations = cases::build_crane(scene, choice);
+  auto equations = scene::build_crane(scene, choice);
   const coupling::StaticEquilibrium eq = coupling::solve_static_equilibrium(*equations, equations->initial_guess());
   const coupling::CraneOutputs& out = eq.outputs;
   const auto& hull = *scene.hull;
@@ -54,11 +54,11 @@ TEST(CraneStatics, ReferenceSceneEquilibriumMatchesStatics) {
 }
 
 TEST(CraneStatics, RigidAndModalBoomsReachTheSameFloatingPose) {
-  const cases::Scene scene = test::reference_scene();
-  cases::BoomChoice nodal{cases::BoomKind::nodal, 16, 0, false};
-  cases::BoomChoice modal{cases::BoomKind::modal, 16, 0, true};  // static modes only: exact static tip
-  auto nodal_eq = cases::build_crane(scene, nodal);
-  auto modal_eq = cases::build_crane(scene, modal);
+  const scene::Scene scene = test::reference_scene();
+  scene::BoomChoice nodal{scene::BoomKind::nodal, 16, 0, false};
+  scene::BoomChoice modal{scene::BoomKind::modal, 16, 0, true};  // static modes only: exact static tip
+  auto nodal_eq = scene::build_crane(scene, nodal);
+  auto modal_eq = scene::build_crane(scene, modal);
   const auto a = coupling::solve_static_equilibrium(*nodal_eq, nodal_eq->initial_guess());
   const auto b = coupling::solve_static_equilibrium(*modal_eq, modal_eq->initial_guess());
   EXPECT_NEAR(a.outputs.tip_deflection.y(), b.outputs.tip_deflection.y(), 1e-10 * std::abs(a.outputs.tip_deflection.y()));

@@ -10,17 +10,17 @@
 #include <cstdio>
 #include <numbers>
 
-#include "cases/stability_theory.hpp"
+#include "study/stability_theory.hpp"
 #include "coupling/explicit_stability.hpp"
 #include "crane_test_support.hpp"
 
 namespace ffrf {
 namespace {
 
-using cases::BoomKind;
+using scene::BoomKind;
 
-cases::Scene calm_reference_scene() {
-  cases::Scene scene = test::reference_scene();
+scene::Scene calm_reference_scene() {
+  scene::Scene scene = test::reference_scene();
   scene.wave.reset();  // the limit is a property of the linearization about the static equilibrium
   return scene;
 }
@@ -32,8 +32,8 @@ struct Measured {
   coupling::StableStepMeasurement measurement;
 };
 
-Measured measure(const cases::Scene& scene, const cases::BoomChoice& choice) {
-  Measured m{cases::build_crane(scene, choice), {}, 0.0, {}};
+Measured measure(const scene::Scene& scene, const scene::BoomChoice& choice) {
+  Measured m{scene::build_crane(scene, choice), {}, 0.0, {}};
   m.z0 = coupling::solve_static_equilibrium(*m.equations, m.equations->initial_guess()).z;
   m.jacobian_limit = coupling::explicit_stable_step(*m.equations, m.z0);
   // Start the bracket away from the theory so the search has to find the limit itself.
@@ -67,16 +67,16 @@ TEST(ExplicitStability, StabilityPolynomialIsTheFourthOrderTaylorSeriesOfExp) {
 }
 
 TEST(ExplicitStability, HighestFrequencyOfTheOneElementBoomIsTheAxialBar) {
-  const cases::Scene scene = calm_reference_scene();
+  const scene::Scene scene = calm_reference_scene();
   const fem::BeamMesh& mesh = scene.boom.mesh;
   // One clamped–free element: axial K = EA/L, consistent M = ρAL/3 → ω = √(3 EA / ρA) / L.
   const double axial = std::sqrt(3.0 * mesh.section.youngs_modulus * mesh.section.area / mesh.section.mass_per_length) / mesh.length;
-  EXPECT_NEAR(cases::highest_boom_frequency(scene, {BoomKind::nodal, 1, 0, false}), axial, 1e-9 * axial);
-  EXPECT_EQ(cases::highest_boom_frequency(scene, {BoomKind::rigid, 1, 0, false}), 0.0);
+  EXPECT_NEAR(study::highest_boom_frequency(scene, {BoomKind::nodal, 1, 0, false}), axial, 1e-9 * axial);
+  EXPECT_EQ(study::highest_boom_frequency(scene, {BoomKind::rigid, 1, 0, false}), 0.0);
   // Without damping the boom bound is β_I / ω_max, whatever the modes below it.
-  const Eigen::VectorXd omega = cases::boom_angular_frequencies(scene, {BoomKind::nodal, 4, 0, false});
-  EXPECT_NEAR(cases::damped_boom_step_limit(omega, 0.0), cases::undamped_boom_step_limit(omega.maxCoeff()),
-              1e-9 * cases::undamped_boom_step_limit(omega.maxCoeff()));
+  const Eigen::VectorXd omega = study::boom_angular_frequencies(scene, {BoomKind::nodal, 4, 0, false});
+  EXPECT_NEAR(study::damped_boom_step_limit(omega, 0.0), study::undamped_boom_step_limit(omega.maxCoeff()),
+              1e-9 * study::undamped_boom_step_limit(omega.maxCoeff()));
 }
 
 TEST(ExplicitStability, MeasuredLimitAgreesWithTheLinearizedCraneForCoarseMeshes) {
@@ -85,16 +85,16 @@ TEST(ExplicitStability, MeasuredLimitAgreesWithTheLinearizedCraneForCoarseMeshes
   // as well as for N = 2, 4 (the boom's overdamped top mode). Where the boom limits, its own damped
   // bound must agree too; the undamped β_I/ω_max is far off there (damping moves the top modes to
   // λ ≈ −βω² on the real axis).
-  const cases::Scene scene = calm_reference_scene();
+  const scene::Scene scene = calm_reference_scene();
   for (const int elements : {1, 2, 4}) {
-    const cases::BoomChoice choice{BoomKind::nodal, elements, 0, false};
+    const scene::BoomChoice choice{BoomKind::nodal, elements, 0, false};
     const Measured m = measure(scene, choice);
     ASSERT_TRUE(m.measurement.converged);
     EXPECT_LE(m.measurement.relative_width(), 0.02);
     EXPECT_NEAR(m.measurement.stable_step / m.jacobian_limit, 1.0, 0.2) << choice.label();
-    const Eigen::VectorXd omega = cases::boom_angular_frequencies(scene, choice);
-    const double boom = cases::damped_boom_step_limit(omega, cases::boom_stiffness_damping(scene));
-    const double undamped = cases::undamped_boom_step_limit(omega.maxCoeff());
+    const Eigen::VectorXd omega = study::boom_angular_frequencies(scene, choice);
+    const double boom = study::damped_boom_step_limit(omega, scene::boom_stiffness_damping(scene));
+    const double undamped = study::undamped_boom_step_limit(omega.maxCoeff());
     std::printf("   boom bounds: damped %.5g s, undamped β_I/ω_max %.5g s (ω_max %.5g rad/s)\n", boom, undamped, omega.maxCoeff());
     if (elements >= 2) {
       EXPECT_NEAR(m.measurement.stable_step / boom, 1.0, 0.2) << choice.label();
@@ -106,7 +106,7 @@ TEST(ExplicitStability, MeasuredLimitAgreesWithTheLinearizedCraneForCoarseMeshes
 }
 
 TEST(ExplicitStability, BeyondTheLimitIsReportedUnstableAndBelowItCompletes) {
-  const cases::Scene scene = calm_reference_scene();
+  const scene::Scene scene = calm_reference_scene();
   const Measured m = measure(scene, {BoomKind::nodal, 4, 0, false});
   ASSERT_TRUE(m.measurement.converged);
   const coupling::StableStepSearch search;
@@ -134,12 +134,12 @@ TEST(ExplicitStability, BeyondTheLimitIsReportedUnstableAndBelowItCompletes) {
 }
 
 TEST(ExplicitStability, ModalBoomTakesStepsLargerByTheSquaredFrequencyRatio) {
-  const cases::Scene scene = calm_reference_scene();
-  const cases::BoomChoice modal{BoomKind::modal, 16, 2, true}, nodal{BoomKind::nodal, 16, 0, false};
+  const scene::Scene scene = calm_reference_scene();
+  const scene::BoomChoice modal{BoomKind::modal, 16, 2, true}, nodal{BoomKind::nodal, 16, 0, false};
   const Measured m_modal = measure(scene, modal), m_nodal = measure(scene, nodal);
   ASSERT_TRUE(m_modal.measurement.converged && m_nodal.measurement.converged);
   const double step_ratio = m_modal.measurement.stable_step / m_nodal.measurement.stable_step;
-  const double frequency_ratio = cases::highest_boom_frequency(scene, nodal) / cases::highest_boom_frequency(scene, modal);
+  const double frequency_ratio = study::highest_boom_frequency(scene, nodal) / study::highest_boom_frequency(scene, modal);
   std::printf("h(modal k=2+static) / h(nodal N=16) = %.4g; ω_max ratio %.4g, squared %.4g\n", step_ratio,
               frequency_ratio, frequency_ratio * frequency_ratio);
   EXPECT_GE(step_ratio, 0.8 * frequency_ratio) << "at least the undamped ratio β_I/ω";
@@ -151,17 +151,17 @@ TEST(ExplicitStability, EveryModelOfTheDefaultListAgreesWithTheLinearizedCrane) 
   // Nodal N = 1 … 64 and modal k = 1 … 12 with static modes (≈ 2 s on one core): the coupled
   // bound holds to 10 % everywhere (rigid: +6 %, the wire–cargo bounce against the hull's pitch);
   // every elastic model is limited by the boom, whose damped bound also agrees to 10 %.
-  const cases::Scene scene = calm_reference_scene();
-  std::vector<cases::BoomChoice> models{{BoomKind::rigid, 1, 0, false}};
+  const scene::Scene scene = calm_reference_scene();
+  std::vector<scene::BoomChoice> models{{BoomKind::rigid, 1, 0, false}};
   for (int n = 1; n <= 64; n *= 2) models.push_back({BoomKind::nodal, n, 0, false});
   for (int k = 1; k <= 12; ++k) models.push_back({BoomKind::modal, 16, k, true});
-  for (const cases::BoomChoice& choice : models) {
+  for (const scene::BoomChoice& choice : models) {
     const Measured m = measure(scene, choice);
     ASSERT_TRUE(m.measurement.converged) << choice.label();
     EXPECT_NEAR(m.measurement.stable_step / m.jacobian_limit, 1.0, 0.1) << choice.label();
     if (choice.kind == BoomKind::rigid) continue;
     const double boom =
-        cases::damped_boom_step_limit(cases::boom_angular_frequencies(scene, choice), cases::boom_stiffness_damping(scene));
+        study::damped_boom_step_limit(study::boom_angular_frequencies(scene, choice), scene::boom_stiffness_damping(scene));
     EXPECT_NEAR(m.measurement.stable_step / boom, 1.0, 0.1) << choice.label();
   }
 }

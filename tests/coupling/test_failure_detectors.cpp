@@ -24,7 +24,7 @@ namespace {
 
 using namespace ffrf;
 
-coupling::MonitorLimits limits_of(const cases::Scene& scene) {
+coupling::MonitorLimits limits_of(const scene::Scene& scene) {
   coupling::MonitorLimits limits;
   const fem::BeamMesh& mesh = scene.boom.mesh;
   limits.boom_length = mesh.length;
@@ -42,13 +42,13 @@ const coupling::Detection* find(const std::vector<coupling::Detection>& detectio
 
 TEST(FailureDetectors, BucklingMarginFromBeamStatics) {
   for (const double cargo_mass : {5000.0, 2000.0}) {
-    const cases::Scene scene = test::hub_crane_scene({2.1e11, 1.0e-3, 1.0e-5, 10.0, 4, cargo_mass, 1.0e7});
+    const scene::Scene scene = test::hub_crane_scene({2.1e11, 1.0e-3, 1.0e-5, 10.0, 4, cargo_mass, 1.0e7});
     const double g = scene.environment.gravity, phi = std::numbers::pi / 4.0, L = scene.boom.mesh.length;
     const double compression = (scene.boom.mesh.section.mass_per_length * g * L + cargo_mass * g) * std::sin(phi);
     const coupling::MonitorLimits limits = limits_of(scene);
     const double ratio = compression / limits.buckling_load;
 
-    auto equations = cases::build_crane(scene, {cases::BoomKind::rigid, 1, 0, false});
+    auto equations = scene::build_crane(scene, {scene::BoomKind::rigid, 1, 0, false});
     const auto statics = coupling::solve_static_equilibrium(*equations, equations->initial_guess());
     EXPECT_NEAR(statics.outputs.root_axial_force / -compression, 1.0, 1e-6) << "cargo " << cargo_mass << " kg";
 
@@ -71,8 +71,8 @@ TEST(FailureDetectors, BucklingMarginFromBeamStatics) {
 }
 
 TEST(FailureDetectors, IndefiniteMassMatrixStopsTheRunAtTheStart) {
-  const cases::Scene scene = test::reference_scene();
-  auto model = cases::build_crane_model(scene, cases::modal_coordinates(scene, {cases::BoomKind::rigid, 1, 0, false}));
+  const scene::Scene scene = test::reference_scene();
+  auto model = scene::build_crane_model(scene, scene::modal_coordinates(scene, {scene::BoomKind::rigid, 1, 0, false}));
   // The crane's pitch inertia about G1 is at most the hull's plus the boom's and cargo's masses at
   // the boom tip's distance: a negative added inertia ten times that makes the hull–boom block indefinite.
   const double reach = scene.boom.mesh.length + std::hypot(scene.boom.mount->root_x, scene.boom.mount->root_y) + 50.0;
@@ -99,8 +99,8 @@ TEST(FailureDetectors, IndefiniteMassMatrixStopsTheRunAtTheStart) {
 }
 
 TEST(FailureDetectors, UnstabilizedIndexOneDriftsAndBaumgarteDoesNot) {
-  const cases::Scene scene = test::reference_scene();
-  auto equations = cases::build_crane(scene, {cases::BoomKind::nodal, 2, 0, false});
+  const scene::Scene scene = test::reference_scene();
+  auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, 2, 0, false});
   const auto statics = coupling::solve_static_equilibrium(*equations, equations->initial_guess());
   coupling::IntegratorSettings settings;
   settings.duration = 60.0;
@@ -136,8 +136,8 @@ TEST(FailureDetectors, UnstabilizedIndexOneDriftsAndBaumgarteDoesNot) {
 }
 
 // A 10 m Simo–Vu-Quoc beam spun at a constant Ωs = 6 rad/s, above ω1 = 3.80 rad/s, no stiffening.
-cases::Scene spinning_beam() {
-  cases::Scene scene = test::constant_spin_beam(6.0, cases::Stiffening::none, 10);
+scene::Scene spinning_beam() {
+  scene::Scene scene = test::constant_spin_beam(6.0, scene::Stiffening::none, 10);
   scene.simulation.duration = 10.0;
   scene.simulation.output_interval = 0.01;
   scene.simulation.deflection_limit = 0.2;
@@ -145,8 +145,8 @@ cases::Scene spinning_beam() {
 }
 
 TEST(FailureDetectors, DivergenceWatchStopsWithAFinitePartialResult) {
-  const cases::Scene scene = spinning_beam();
-  auto equations = cases::build_crane(scene, {cases::BoomKind::nodal, 10, 0, false});
+  const scene::Scene scene = spinning_beam();
+  auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, 10, 0, false});
   coupling::IntegratorSettings settings;
   settings.duration = 10.0;
   settings.output_interval = 0.01;

@@ -31,20 +31,20 @@ using namespace ffrf;
 constexpr double kLength = 10.0, kE = 2.1e11, kI = 1.0e-4, kRhoA = 1.0;
 
 // The Euler load π²EI/(4L²) times `fraction` carried as tip compression at 45°: W = fraction P_cr / sin φ.
-cases::Scene prestressed_boom(double fraction) {
+scene::Scene prestressed_boom(double fraction) {
   const double euler = std::numbers::pi * std::numbers::pi * kE * kI / (4.0 * kLength * kLength);
   const double weight = fraction * euler / std::sin(std::numbers::pi / 4.0);
   return test::hub_crane_scene({kE, 1.0e-2, kI, kRhoA, 32, weight / 9.81, 1.0e9});
 }
 
-double static_tip_deflection(const cases::Scene& scene, cases::BoomChoice choice) {
-  auto equations = cases::build_crane(scene, choice);
+double static_tip_deflection(const scene::Scene& scene, scene::BoomChoice choice) {
+  auto equations = scene::build_crane(scene, choice);
   return coupling::solve_static_equilibrium(*equations, equations->initial_guess()).outputs.tip_deflection.y();
 }
 
 TEST(GeometricStiffening, StaticPrestressGivesTheBeamColumnDeflection) {
   const double fraction = 0.5;
-  const cases::Scene scene = prestressed_boom(fraction);
+  const scene::Scene scene = prestressed_boom(fraction);
   const double g = scene.environment.gravity, phi = std::numbers::pi / 4.0, EI = kE * kI, L = kLength;
   const double W = scene.cargo->mass * g, P = W * std::sin(phi), Q = W * std::cos(phi);
   const double q = kRhoA * g * std::cos(phi);
@@ -52,8 +52,8 @@ TEST(GeometricStiffening, StaticPrestressGivesTheBeamColumnDeflection) {
   const double k = std::sqrt(P / EI);
   const double beam_column = Q / (P * k) * (std::tan(k * L) - k * L);
 
-  using cases::BoomKind;
-  using cases::Stiffening;
+  using scene::BoomKind;
+  using scene::Stiffening;
   const double nodal_none = -static_tip_deflection(scene, {BoomKind::nodal, 32, 0, false, modal::EigenSolverKind::arpack, Stiffening::none});
   const double nodal_static =
       -static_tip_deflection(scene, {BoomKind::nodal, 32, 0, false, modal::EigenSolverKind::arpack, Stiffening::static_load});
@@ -70,13 +70,13 @@ TEST(GeometricStiffening, StaticPrestressGivesTheBeamColumnDeflection) {
 }
 
 // The Simo–Vu-Quoc beam (cases/spin_up_beam.toml) at a constant spin Ωs, no gravity, N = 4.
-cases::Scene constant_spin(double spin_rate, cases::Stiffening stiffening) {
-  cases::Scene scene = test::constant_spin_beam(spin_rate, stiffening, 4);
+scene::Scene constant_spin(double spin_rate, scene::Stiffening stiffening) {
+  scene::Scene scene = test::constant_spin_beam(spin_rate, stiffening, 4);
   scene.simulation.deflection_limit = 0.2;
   return scene;
 }
 
-coupling::IntegratorSettings spin_settings(const cases::Scene& scene) {
+coupling::IntegratorSettings spin_settings(const scene::Scene& scene) {
   coupling::IntegratorSettings settings;
   settings.duration = 10.0;
   settings.output_interval = 0.02;
@@ -87,13 +87,13 @@ coupling::IntegratorSettings spin_settings(const cases::Scene& scene) {
 
 TEST(GeometricStiffening, CentrifugalStiffeningPreventsTheSpinDivergence) {
   const double spin = 6.0;
-  const cases::Scene soft = constant_spin(spin, cases::Stiffening::none);
+  const scene::Scene soft = constant_spin(spin, scene::Stiffening::none);
   const double omega1 = fem::analytic_bending_modes(soft.boom.mesh, fem::Boundary::clamped_free, 1).front().angular_frequency;
   ASSERT_GT(spin, omega1);
   const double sigma = std::sqrt(spin * spin - omega1 * omega1);
   double measured = 0.0;
   {
-    auto equations = cases::build_crane(soft, {cases::BoomKind::nodal, 4, 0, false});
+    auto equations = scene::build_crane(soft, {scene::BoomKind::nodal, 4, 0, false});
     // Seed the bending mode with a 1 µm transverse tip deflection (free DOFs (u, v, φ) per node: the
     // tip's v is the second last), so the divergence does not rest on round-off and Coriolis coupling.
     Eigen::VectorXd start = equations->initial_guess();
@@ -107,8 +107,8 @@ TEST(GeometricStiffening, CentrifugalStiffeningPreventsTheSpinDivergence) {
       EXPECT_NEAR(measured / sigma, 1.0, 0.1) << failure.what();
     }
   }
-  const cases::Scene stiff = constant_spin(spin, cases::Stiffening::centrifugal);
-  auto equations = cases::build_crane(stiff, {cases::BoomKind::nodal, 4, 0, false});
+  const scene::Scene stiff = constant_spin(spin, scene::Stiffening::centrifugal);
+  auto equations = scene::build_crane(stiff, {scene::BoomKind::nodal, 4, 0, false});
   const coupling::IntegratorSettings settings = spin_settings(stiff);
   const coupling::RunResult run = coupling::integrate(*equations, equations->initial_guess(), settings);
   ASSERT_NEAR(run.time.back(), settings.duration, 1e-9);

@@ -37,8 +37,8 @@ double max_difference(const coupling::RunResult& a, const coupling::RunResult& b
 
 // The reference scene, nodal N = 2, at static equilibrium.
 struct Reference {
-  cases::Scene scene = test::reference_scene();
-  std::unique_ptr<coupling::CraneEquations> equations = cases::build_crane(scene, {cases::BoomKind::nodal, 2, 0, false});
+  scene::Scene scene = test::reference_scene();
+  std::unique_ptr<coupling::CraneEquations> equations = scene::build_crane(scene, {scene::BoomKind::nodal, 2, 0, false});
   Eigen::VectorXd z0 = coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
 };
 
@@ -117,8 +117,8 @@ TEST(Integrators, GeneralizedAlphaWithoutDissipationKeepsTheEnergy) {
 }
 
 TEST(Integrators, ArkodeAdaptiveAgreesWithCvodeOnTheRigidBoom) {
-  const cases::Scene scene = test::reference_scene();
-  auto equations = cases::build_crane(scene, {cases::BoomKind::rigid, 1, 0, false});
+  const scene::Scene scene = test::reference_scene();
+  auto equations = scene::build_crane(scene, {scene::BoomKind::rigid, 1, 0, false});
   const Eigen::VectorXd z0 = coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   const auto cvode = coupling::integrate(*equations, z0, settings(coupling::Integrator::cvode, 30.0, 1e-10));
   const auto arkode = coupling::integrate(*equations, z0, settings(coupling::Integrator::arkode, 30.0, 1e-8));
@@ -132,16 +132,16 @@ TEST(Integrators, ArkodeAdaptiveAgreesWithCvodeOnTheRigidBoom) {
 }
 
 TEST(Integrators, ArkodeBeyondTheStabilityLimitIsReportedUnstable) {
-  const cases::Scene scene = test::reference_scene();
-  auto equations = cases::build_crane(scene, {cases::BoomKind::nodal, 8, 0, false});
+  const scene::Scene scene = test::reference_scene();
+  auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, 8, 0, false});
   const Eigen::VectorXd z0 = coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   const double limit = coupling::explicit_stable_step(*equations, z0);
   std::printf("nodal N = 8: linearized ERK stability limit %.4e s (imaginary-axis boundary %.4f)\n", limit,
               coupling::explicit_imaginary_axis_boundary());
   {  // the same boom without structural damping: only the imaginary-axis boundary matters
-    cases::Scene undamped_scene = scene;
+    scene::Scene undamped_scene = scene;
     undamped_scene.boom.damping_ratio = 0.0;
-    auto undamped = cases::build_crane(undamped_scene, {cases::BoomKind::nodal, 8, 0, false});
+    auto undamped = scene::build_crane(undamped_scene, {scene::BoomKind::nodal, 8, 0, false});
     const double undamped_limit =
         coupling::explicit_stable_step(*undamped, coupling::solve_static_equilibrium(*undamped, undamped->initial_guess()).z);
     std::printf("without structural damping: limit %.4e s (ω_max ≈ %.4g rad/s)\n", undamped_limit,

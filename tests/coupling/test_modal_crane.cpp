@@ -10,7 +10,7 @@
 #include <cstdio>
 
 #include "coupling/error_metrics.hpp"
-#include "cases/reference_model.hpp"
+#include "study/error_measure.hpp"
 #include "crane_test_support.hpp"
 
 namespace {
@@ -31,15 +31,15 @@ coupling::RunResult run_from_equilibrium(coupling::CraneEquations& equations, co
 }
 
 TEST(ModalCrane, FullModalBasisReproducesTheNodalTimeHistory) {
-  const cases::Scene scene = test::reference_scene();
+  const scene::Scene scene = test::reference_scene();
   const int elements = 3;
-  auto beam = cases::boom_beam(scene, elements);
+  auto beam = scene::boom_beam(scene, elements);
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense{Eigen::MatrixXd(beam->stiffness), Eigen::MatrixXd(beam->mass)};
   modal::ModalBasis basis;
   basis.vectors = dense.eigenvectors();  // all 9 M-orthonormal modes
   basis.vibration_count = static_cast<int>(basis.vectors.cols());
-  auto modal_equations = coupling::make_crane_equations(cases::build_crane_model(scene, modal::ModalCoordinates(beam, basis)));
-  auto nodal_equations = cases::build_crane(scene, {cases::BoomKind::nodal, elements, 0, false});
+  auto modal_equations = coupling::make_crane_equations(scene::build_crane_model(scene, modal::ModalCoordinates(beam, basis)));
+  auto nodal_equations = scene::build_crane(scene, {scene::BoomKind::nodal, elements, 0, false});
   const auto s = settings(30.0, 1e-11);
   const auto modal_run = run_from_equilibrium(*modal_equations, s);
   const auto nodal_run = run_from_equilibrium(*nodal_equations, s);
@@ -54,14 +54,14 @@ TEST(ModalCrane, FullModalBasisReproducesTheNodalTimeHistory) {
 }
 
 TEST(ModalCrane, ErrorFallsWithModeCountAndStaticModesCarryTheQuasiStaticLoad) {
-  const cases::Scene scene = test::reference_scene();
+  const scene::Scene scene = test::reference_scene();
   const double duration = 50.0;  // ramp (20 s) + three wave periods
-  const double window = cases::ramp_end(scene);
-  auto nodal_equations = cases::build_crane(scene, {cases::BoomKind::nodal, 16, 0, false});
+  const double window = study::ramp_end(scene);
+  auto nodal_equations = scene::build_crane(scene, {scene::BoomKind::nodal, 16, 0, false});
   const auto s = settings(duration, 1e-9);
   const auto reference = run_from_equilibrium(*nodal_equations, s);
   auto cargo_heave_error = [&](int k, bool with_static) {
-    auto equations = cases::build_crane(scene, {cases::BoomKind::modal, 16, k, with_static});
+    auto equations = scene::build_crane(scene, {scene::BoomKind::modal, 16, k, with_static});
     return coupling::compare_runs(run_from_equilibrium(*equations, s), reference, window)[OutputChannel::cargo_heave].normalized_rms;
   };
   const double e1 = cargo_heave_error(1, false), e2 = cargo_heave_error(2, false), e4 = cargo_heave_error(4, false);
@@ -80,13 +80,13 @@ namespace {
 
 TEST(ModalCrane, ModeCacheSolvesOncePerMeshAndGivesTheSameModel) {
   using namespace ffrf;
-  const cases::Scene scene = test::reference_scene();
-  cases::ModeCache cache;
+  const scene::Scene scene = test::reference_scene();
+  modal::ModeCache cache;
   for (int k : {1, 2, 4, 8, 12}) {
     for (bool with_static : {false, true}) {
-      const cases::BoomChoice choice{cases::BoomKind::modal, 16, k, with_static};
-      const modal::ModalCoordinates cached = cases::modal_coordinates(scene, choice, &cache);
-      const modal::ModalCoordinates direct = cases::modal_coordinates(scene, choice);
+      const scene::BoomChoice choice{scene::BoomKind::modal, 16, k, with_static};
+      const modal::ModalCoordinates cached = scene::modal_coordinates(scene, choice, &cache);
+      const modal::ModalCoordinates direct = scene::modal_coordinates(scene, choice);
       ASSERT_EQ(cached.size(), direct.size());
       // Same subspace and the same reduced physics: equal stiffness spectra and static tip response.
       Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> a(cached.stiffness()), b(direct.stiffness());

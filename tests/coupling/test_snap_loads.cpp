@@ -26,14 +26,14 @@ namespace {
 
 using namespace ffrf;
 
-cases::Scene dropped_load() { return cases::load_scene(FFRF_SOURCE_DIR "/cases/dropped_load.toml"); }
+scene::Scene dropped_load() { return scene::load_scene(FFRF_SOURCE_DIR "/cases/dropped_load.toml"); }
 
 struct HandSchedule {
   double s, t_free, omega, amplitude, t_taut, peak;
   std::vector<coupling::WireEvent> events;  // up to the duration
 };
 
-HandSchedule hand_schedule(const cases::Scene& scene, double duration) {
+HandSchedule hand_schedule(const scene::Scene& scene, double duration) {
   const double m = scene.cargo->mass, k = scene.wire->stiffness, g = scene.environment.gravity;
   const double d = scene.simulation.cargo_lift;
   HandSchedule h;
@@ -60,8 +60,8 @@ struct DropRun {
   coupling::MonitorLimits limits;
 };
 
-DropRun drop(const cases::Scene& scene, const cases::BoomChoice& choice) {
-  auto equations = cases::build_crane(scene, choice);
+DropRun drop(const scene::Scene& scene, const scene::BoomChoice& choice) {
+  auto equations = scene::build_crane(scene, choice);
   const coupling::StaticEquilibrium statics = coupling::solve_static_equilibrium(*equations, equations->initial_guess());
   Eigen::VectorXd z0 = statics.z;
   z0(equations->cargo_offset() + 1) += scene.simulation.cargo_lift;  // raised, released at rest
@@ -87,10 +87,10 @@ bool has_detection(const coupling::RunResult& result, coupling::FailureKind kind
 }
 
 TEST(SnapLoads, RigidBoomDroppedLoadFollowsTheHandSchedule) {
-  const cases::Scene scene = dropped_load();
+  const scene::Scene scene = dropped_load();
   const HandSchedule hand = hand_schedule(scene, scene.simulation.duration);
   ASSERT_GT(scene.simulation.cargo_lift, hand.s) << "the lift must slacken the wire";
-  const DropRun run = drop(scene, {cases::BoomKind::rigid, 1, 0, false});
+  const DropRun run = drop(scene, {scene::BoomKind::rigid, 1, 0, false});
 
   // Located events against the hand schedule (count and times).
   ASSERT_EQ(run.result.wire_events.size(), hand.events.size());
@@ -140,17 +140,17 @@ TEST(SnapLoads, RigidBoomDroppedLoadFollowsTheHandSchedule) {
 // loads the boom until the wire is taut, so the first taut time is the free fall t_f of the hand
 // schedule; after it the boom's compliance in series with the wire lowers the snap peak.
 TEST(SnapLoads, ElasticBoomFirstSnapAfterTheSameFreeFallButSofter) {
-  const cases::Scene scene = dropped_load();
+  const scene::Scene scene = dropped_load();
   const HandSchedule hand = hand_schedule(scene, scene.simulation.duration);
-  const cases::BoomChoice elastic{cases::BoomKind::nodal, 4, 0, false};
+  const scene::BoomChoice elastic{scene::BoomKind::nodal, 4, 0, false};
 
   // The boom under self-weight, the same scene without cargo: on a held hub the static residual is
   // affine in η (f − K η), so one linear solve with its exact (difference) Jacobian finds it.
   // (KINSOL from the zero guess stops at KIN_MXNEWT_5X_EXCEEDED on this scene: see the report.)
-  cases::Scene unloaded = scene;
+  scene::Scene unloaded = scene;
   unloaded.cargo.reset();
   unloaded.wire.reset();
-  auto boom_alone = cases::build_crane(unloaded, elastic);
+  auto boom_alone = scene::build_crane(unloaded, elastic);
   const int m = boom_alone->minimal_size();
   Eigen::VectorXd eta = Eigen::VectorXd::Zero(m), r0(m), r1(m);
   boom_alone->static_residual(eta, r0);
@@ -168,18 +168,18 @@ TEST(SnapLoads, ElasticBoomFirstSnapAfterTheSameFreeFallButSofter) {
   // Cantilever under its weight's transverse part q = ρA g cos φ: tip deflection −q L⁴/(8EI)
   // (cubic Hermite elements with consistent loads are nodally exact for a uniform load).
   const fem::BeamMesh& mesh = scene.boom.mesh;
-  const double q = mesh.section.mass_per_length * scene.environment.gravity * std::cos(cases::boom_angle_at_rest(scene));
+  const double q = mesh.section.mass_per_length * scene.environment.gravity * std::cos(scene::boom_angle_at_rest(scene));
   EXPECT_NEAR(self_weight.tip_deflection.y() / (-q * std::pow(mesh.length, 4) / (8.0 * mesh.section.bending_rigidity())), 1.0, 1e-6);
 
-  auto rigid = cases::build_crane(scene, {cases::BoomKind::rigid, 1, 0, false});
+  auto rigid = scene::build_crane(scene, {scene::BoomKind::rigid, 1, 0, false});
   const auto rigid_statics = coupling::solve_static_equilibrium(*rigid, rigid->initial_guess());
 
-  auto equations = cases::build_crane(scene, elastic);
+  auto equations = scene::build_crane(scene, elastic);
   const int n = equations->elastic_size(), c = equations->cargo_offset();
   ASSERT_EQ(n, boom_alone->elastic_size());
   Eigen::VectorXd z0 = equations->initial_guess();
   z0.tail(n) = eta;
-  const double phi = cases::boom_angle_at_rest(scene);
+  const double phi = scene::boom_angle_at_rest(scene);
   const Eigen::Vector2d tip_shift = Eigen::Rotation2Dd(phi) * self_weight.tip_deflection;
   z0.segment<3>(c) = rigid_statics.z.segment<3>(rigid->cargo_offset());
   z0.segment<2>(c) += tip_shift + Eigen::Vector2d(0.0, scene.simulation.cargo_lift);

@@ -18,8 +18,8 @@
 #include <numbers>
 #include <tuple>
 
-#include "cases/crane_builder.hpp"
-#include "cases/scene_loader.hpp"
+#include "scene/crane_builder.hpp"
+#include "scene/scene_loader.hpp"
 #include "coupling/simulation.hpp"
 #include "coupling/static_equilibrium.hpp"
 #include "fem/analytic_beam.hpp"
@@ -27,9 +27,9 @@
 namespace ffrf {
 namespace {
 
-cases::Scene spin_scene() { return cases::load_scene(FFRF_SOURCE_DIR "/cases/spin_up_beam.toml"); }
+scene::Scene spin_scene() { return scene::load_scene(FFRF_SOURCE_DIR "/cases/spin_up_beam.toml"); }
 
-coupling::IntegratorSettings spin_settings(const cases::Scene& scene, coupling::Integrator kind, double duration) {
+coupling::IntegratorSettings spin_settings(const scene::Scene& scene, coupling::Integrator kind, double duration) {
   coupling::IntegratorSettings settings;
   settings.kind = kind;
   settings.relative_tolerance = 1e-7;
@@ -42,14 +42,14 @@ coupling::IntegratorSettings spin_settings(const cases::Scene& scene, coupling::
   return settings;
 }
 
-coupling::RunResult run(const cases::Scene& scene, const cases::BoomChoice& choice, const coupling::IntegratorSettings& settings) {
-  auto equations = cases::build_crane(scene, choice);
+coupling::RunResult run(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::IntegratorSettings& settings) {
+  auto equations = scene::build_crane(scene, choice);
   const Eigen::VectorXd z0 = coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   return coupling::integrate(*equations, z0, settings);
 }
 
 // Ω(t) of the spin-up profile (the scene's Ts).
-double spin_rate(const cases::Scene& scene, double t) {
+double spin_rate(const scene::Scene& scene, double t) {
   const double ts = scene.hub->spin_up_time, omega = scene.hub->spin_rate;
   return t >= ts ? omega : omega / ts * (t - ts / (2.0 * std::numbers::pi) * std::sin(2.0 * std::numbers::pi * t / ts));
 }
@@ -79,7 +79,7 @@ TEST(DrivenHub, RigidBeamReactionIsRigidBodyDynamicsInMinimalAndFullCoordinates)
   // and the time-dependent clamp's C_t, C_tt carry the arm). Centroid c = (r + L/2) e_θ:
   // force m (θ̈ Ĩ c − θ̇² c); moment about the root B: J_B θ̈ + m r (L/2) θ̈ with J_B = m L²/3.
   for (const double arm : {0.0, 2.0}) {
-    cases::Scene scene = spin_scene();
+    scene::Scene scene = spin_scene();
     scene.hub->radius = arm;
     scene.boom.mount->root_x = arm;
     const double mass = scene.boom.mesh.total_mass(), length = scene.boom.mesh.length;
@@ -93,7 +93,7 @@ TEST(DrivenHub, RigidBeamReactionIsRigidBodyDynamicsInMinimalAndFullCoordinates)
     for (const auto& [kind, relative, drift] : {std::tuple{coupling::Integrator::cvode, 1e-10, 1e-12},
                                                 std::tuple{coupling::Integrator::ida, 1e-4, 1e-5},
                                                 std::tuple{coupling::Integrator::projection, 1e-4, 1e-8}}) {
-      const coupling::RunResult result = run(scene, {cases::BoomKind::rigid}, spin_settings(scene, kind, 20.0));
+      const coupling::RunResult result = run(scene, {scene::BoomKind::rigid}, spin_settings(scene, kind, 20.0));
       const double force_scale = mass * (arm + 0.5 * length) * 16.0;  // m |c| Ωs²
       const double moment_scale = (root_inertia + mass * arm * 0.5 * length) * 8.0 / 15.0;  // θ̈_max = 2Ωs/Ts
       for (std::size_t k = 0; k < result.time.size(); k += 37) {
@@ -114,11 +114,11 @@ TEST(DrivenHub, RigidBeamReactionIsRigidBodyDynamicsInMinimalAndFullCoordinates)
 }
 
 TEST(SpinUp, UnstiffenedLinearBeamDivergesOnceTheSpinPassesTheFirstBendingFrequency) {
-  cases::Scene scene = spin_scene();
+  scene::Scene scene = spin_scene();
   const double omega1 = fem::analytic_bending_modes(scene.boom.mesh, fem::Boundary::clamped_free, 1)[0].angular_frequency;
   EXPECT_NEAR(omega1, 3.80, 0.005);  // the "about 3.80 rad/s"
-  cases::BoomChoice choice{cases::BoomKind::nodal, 10};
-  choice.stiffening = cases::Stiffening::none;
+  scene::BoomChoice choice{scene::BoomKind::nodal, 10};
+  choice.stiffening = scene::Stiffening::none;
   const coupling::IntegratorSettings settings = spin_settings(scene, coupling::Integrator::cvode, 30.0);
   try {
     run(scene, choice, settings);
@@ -140,10 +140,10 @@ TEST(SpinUp, UnstiffenedLinearBeamDivergesOnceTheSpinPassesTheFirstBendingFreque
 }
 
 TEST(SpinUp, CentrifugalStiffeningKeepsTheTipBoundedAndNodalAgreesWithModal) {
-  const cases::Scene scene = spin_scene();  // boom.stiffening = centrifugal
+  const scene::Scene scene = spin_scene();  // boom.stiffening = centrifugal
   const coupling::IntegratorSettings settings = spin_settings(scene, coupling::Integrator::cvode, 30.0);
-  const coupling::RunResult nodal = run(scene, {cases::BoomKind::nodal, 10}, settings);
-  const coupling::RunResult modal = run(scene, {cases::BoomKind::modal, 10, 4, true}, settings);
+  const coupling::RunResult nodal = run(scene, {scene::BoomKind::nodal, 10}, settings);
+  const coupling::RunResult modal = run(scene, {scene::BoomKind::modal, 10, 4, true}, settings);
   ASSERT_EQ(nodal.time.size(), modal.time.size());
   double largest = 0.0, difference = 0.0;
   for (std::size_t k = 0; k < nodal.time.size(); ++k) {
@@ -169,10 +169,10 @@ TEST(SpinUp, CentrifugalStiffeningKeepsTheTipBoundedAndNodalAgreesWithModal) {
 TEST(SpinUp, FullCoordinateFormulationsReproduceTheMinimalRunOfTheDrivenBase) {
   for (const double arm : {0.0, 1.5}) {  // root on the axis, and on an arm (the clamp's C_t, C_tt carry it)
   SCOPED_TRACE("r = " + std::to_string(arm) + " m");
-  cases::Scene scene = spin_scene();
+  scene::Scene scene = spin_scene();
   scene.hub->radius = arm;
   scene.boom.mount->root_x = arm;
-  const cases::BoomChoice choice{cases::BoomKind::modal, 10, 4, true};
+  const scene::BoomChoice choice{scene::BoomKind::modal, 10, 4, true};
   const coupling::RunResult minimal = run(scene, choice, spin_settings(scene, coupling::Integrator::cvode, 20.0));
   double largest = 0.0;
   for (const auto& sample : minimal.samples) largest = std::max(largest, std::abs(sample.tip_deflection.y()));

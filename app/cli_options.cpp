@@ -1,0 +1,146 @@
+// The options the commands share and the lines they print on stderr (see cli_options.hpp).
+#include "app/cli_options.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+
+#include "app/commands.hpp"
+
+namespace ffrf::app {
+
+void add_dynamics_options(CLI::App& sub, DynamicsOptions& options) {
+  sub.add_option("--integrator", options.integrator,
+                 "Integrator " + coupling::integrator_choices() +
+                     ": cvode = minimal coordinates (BDF ODE), ida = Lagrange multipliers (stabilized index-2 DAE), "
+                     "arkode = minimal coordinates (explicit Runge-Kutta), generalized-alpha = index-3, fixed step (needs --step); "
+                     "index1, baumgarte, projection = full coordinates as an index-1 ODE (BDF): unstabilized (the constraint "
+                     "drifts), with Baumgarte feedback (omega_b = 10 rad/s), or projected onto the constraint after every step")
+      ->capture_default_str();
+  sub.add_option("--rtol", options.rtol, "Relative tolerance, in (0, 1)")->capture_default_str();
+  sub.add_option("--atol", options.atol, "Absolute tolerance (scaled by each coordinate's typical size), in (0, 1)")
+      ->capture_default_str();
+  sub.add_option("--duration", options.duration, "Simulated time [s] (default: simulation.duration of the scene)");
+  sub.add_option("--max-order", options.max_order,
+                 "Largest BDF order of cvode and ida, 1-5 (default: 2 for an undamped boom, where BDF 3-5 are not "
+                 "stable on its undamped stiff modes; 5 otherwise)");
+  sub.add_option("--step", options.step,
+                 "Fixed time step [s] of generalized-alpha (required) and arkode (0: adaptive), at most the output interval")
+      ->capture_default_str();
+}
+
+void add_reference_options(CLI::App& sub, study::ReferenceOptions& options) {
+  sub.add_option("--reference-elements", options.start_elements, "Reference: elements of the first level")
+      ->capture_default_str();
+  sub.add_option("--reference-rtol", options.start_relative_tolerance,
+                 "Reference: CVODE relative tolerance of the first level")
+      ->capture_default_str();
+  sub.add_option("--reference-bound", options.bound,
+                 "Reference: converged when the worst normalized RMS change between two levels is below this")
+      ->capture_default_str();
+  sub.add_option("--reference-levels", options.max_levels,
+                 "Reference: at most this many levels (each doubles the elements and tightens rtol 10x)")
+      ->capture_default_str();
+}
+
+void add_stiffening_option(CLI::App& sub, std::string& stiffening) {
+  sub.add_option("--stiffening", stiffening,
+                 "Geometric stiffening none|static|centrifugal|both of every model and the reference (default: what "
+                 "the physics needs at 1 % with boom.stiffening of the scene, as recommend decides)");
+}
+
+std::string_view option_name(study::Setting setting) {
+  switch (setting) {
+    case study::Setting::relative_tolerance: return "--rtol";
+    case study::Setting::absolute_tolerance: return "--atol";
+    case study::Setting::duration: return "--duration";
+    case study::Setting::fixed_step: return "--step";
+    case study::Setting::max_order: return "--max-order";
+    case study::Setting::reference_elements: return "--reference-elements";
+    case study::Setting::reference_tolerance: return "--reference-rtol";
+    case study::Setting::reference_bound: return "--reference-bound";
+    case study::Setting::reference_levels: return "--reference-levels";
+    case study::Setting::tolerance: return "--tolerance";
+    case study::Setting::jobs: return "--jobs";
+  }
+  return "?";
+}
+
+std::string option_message(const study::SettingError& error) {
+  return fmt::format("{} {}: {}", option_name(error.setting()), error.value(), error.problem());
+}
+
+coupling::IntegratorSettings integrator_settings(const DynamicsOptions& options, const scene::Scene& scene) {
+  const auto kind = coupling::parse_integrator(options.integrator);
+  if (!kind) {
+    throw BadOption(fmt::format("--integrator {}: unknown integrator; choose one of {}", options.integrator,
+                                coupling::integrator_choices()));
+  }
+  study::DynamicsRequest request{*kind, options.rtol, options.atol, options.duration, options.step, options.max_order};
+  try {
+    coupling::IntegratorSettings settings = study::integrator_settings(scene, request);
+    settings.progress = stderr_is_terminal();
+    return settings;
+  } catch (const study::SettingError& error) {
+    throw BadOption(option_message(error));
+  }
+}
+
+std::optional<scene::Stiffening> stiffening_option(const std::string& stiffening) {
+  if (stiffening.empty()) return std::nullopt;
+  const auto parsed = scene::parse_stiffening(stiffening);
+  if (!parsed) {
+    throw BadOption(fmt::format("--stiffening {}: unknown stiffening; choose one of none, static, centrifugal, both", stiffening));
+  }
+  return parsed;
+}
+
+std::optional<scene::Scene> load_scene(const std::string& path, const std::string& command, bool needs_base) {
+  try {
+    scene::Scene scene = scene::load_scene(path);
+    if (needs_base && !scene.has_base()) {
+      bad_input(command, fmt::format("{}: not a crane scene: it has neither a [hull] section (a crane needs [hull], [cargo], "
+                                     "[wire] and boom.angle/root_x/root_y) nor a [hub]; `ffrf modes` analyses a single beam",
+                                     path));
+      return std::nullopt;
+    }
+    return scene;
+  } catch (const scene::SceneError& error) {
+    for (const auto& problem : error.problems()) fmt::print(stderr, "{}\n", scene::format_problem(problem));
+    bad_input(command, fmt::format("{}: {} problem{} in the scene", path, error.problems().size(),
+                                   error.problems().size() == 1 ? "" : "s"));
+    return std::nullopt;
+  }
+}
+
+int bad_input(const std::string& command, const std::string& message) {
+  fmt::print(stderr, "ffrf {}: error: {}\n", command, message);
+  return exit_bad_input;
+}
+
+int scene_error(const std::string& command, const std::string& path, const scene::SceneError& error, const std::string& what) {
+  for (const auto& problem : error.problems()) fmt::print(stderr, "{}\n", scene::format_problem(problem));
+  return bad_input(command, fmt::format("{}: the scene cannot make {}", path, what));
+}
+
+int solver_failure(const std::string& command, const std::string& what, const coupling::SolverFailure& failure,
+                   const std::string& out) {
+  fmt::print(stderr, "ffrf {}: solver failure ({}): {}\n", command, what, failure.what());
+  if (!out.empty()) fmt::print(stderr, "ffrf {}: nothing written to {}\n", command, out);
+  return exit_solver_failure;
+}
+
+bool stderr_is_terminal() { return ::isatty(STDERR_FILENO) != 0; }
+
+void progress(const std::string& command, const std::string& what, bool newline) {
+  if (!stderr_is_terminal()) return;
+  if (what.empty()) {
+    fmt::print(stderr, "\r\033[K");  // clears the line
+  } else {
+    fmt::print(stderr, "\r\033[Kffrf {}: {}{}", command, what, newline ? "\n" : "");
+  }
+  std::fflush(stderr);
+}
+
+}  // namespace ffrf::app

@@ -1,0 +1,66 @@
+// What the commands share on the command line: the dynamics options (integrator, tolerances,
+// duration, step, BDF order) and the reference options, each mapped to the study's request; the
+// option name of each study setting (so the study's neutral messages name the flag); loading a
+// scene with every problem printed; and the error, failure and progress lines on stderr.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+#include "coupling/failure.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_loader.hpp"
+#include "study/reference.hpp"
+#include "study/run_pipeline.hpp"
+
+namespace ffrf::app {
+
+// Integrator options as typed on the command line.
+struct DynamicsOptions {
+  std::string integrator = "cvode";
+  double rtol = 1e-6;
+  double atol = 1e-6;
+  std::optional<double> duration;
+  double step = 0.0;  // fixed step [s] (generalized-alpha: required; arkode: 0 = adaptive)
+  int max_order = 0;  // largest BDF order of cvode/ida; 0 = from the physics
+};
+void add_dynamics_options(CLI::App& sub, DynamicsOptions& options);
+void add_reference_options(CLI::App& sub, study::ReferenceOptions& options);
+// --stiffening none|static|centrifugal|both (empty: what the physics needs with the scene's, as
+// recommend decides).
+void add_stiffening_option(CLI::App& sub, std::string& stiffening);
+
+// A command-line value that is not valid: the message names the option, the value and the range.
+struct BadOption : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The integrator settings for a scene (progress on a terminal); throws BadOption.
+coupling::IntegratorSettings integrator_settings(const DynamicsOptions& options, const scene::Scene& scene);
+// --stiffening as given (empty: not given); throws BadOption for an unknown name.
+std::optional<scene::Stiffening> stiffening_option(const std::string& stiffening);
+// The option a study setting comes from ("--rtol").
+std::string_view option_name(study::Setting setting);
+// "--rtol 0: not a valid tolerance (valid range (0, 1))"
+std::string option_message(const study::SettingError& error);
+
+// Loads the scene; prints every problem on stderr and returns nothing on failure (exit 2). With
+// `needs_base`, a scene without [hull] or [hub] is refused (the crane commands).
+std::optional<scene::Scene> load_scene(const std::string& path, const std::string& command, bool needs_base);
+
+// "ffrf CMD: error: MESSAGE" on stderr; returns exit_bad_input.
+int bad_input(const std::string& command, const std::string& message);
+// Every problem of a scene that cannot make the crane, then the error line; returns exit_bad_input.
+int scene_error(const std::string& command, const std::string& path, const scene::SceneError& error, const std::string& what);
+// "ffrf CMD: solver failure (WHAT): ..." (and "nothing written to OUT"); returns exit_solver_failure.
+int solver_failure(const std::string& command, const std::string& what, const coupling::SolverFailure& failure,
+                   const std::string& out);
+
+// True when stderr is a terminal (progress lines are printed there only).
+bool stderr_is_terminal();
+// A progress line for a terminal: "\r\033[Kffrf CMD: WHAT" (nothing when stderr is not a terminal;
+// an empty WHAT clears the line).
+void progress(const std::string& command, const std::string& what, bool newline = false);
+
+}  // namespace ffrf::app

@@ -1,0 +1,220 @@
+// Scene → coupled crane (see header).
+#include "scene/crane_builder.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "scene/scene_loader.hpp"
+#include "fem/analytic_beam.hpp"
+#include "fem/axial_force.hpp"
+
+namespace ffrf::scene {
+
+std::string_view to_string(BoomKind kind) {
+  switch (kind) {
+    case BoomKind::rigid: return "rigid";
+    case BoomKind::nodal: return "nodal";
+    case BoomKind::modal: return "modal";
+  }
+  return "?";
+}
+
+std::optional<BoomKind> parse_boom_kind(std::string_view text) {
+  for (BoomKind k : {BoomKind::rigid, BoomKind::nodal, BoomKind::modal}) {
+    if (text == to_string(k)) return k;
+  }
+  return std::nullopt;
+}
+
+std::string boom_kind_choices() { return "rigid|nodal|modal"; }
+
+std::string BoomChoice::label() const {
+  const std::string stiffened =
+      stiffening && *stiffening != Stiffening::none ? " " + std::string(to_string(*stiffening)) + "-stiffened" : "";
+  switch (kind) {
+    case BoomKind::rigid: return "rigid";
+    case BoomKind::nodal: return "nodal N=" + std::to_string(elements) + stiffened;
+    case BoomKind::modal:
+      return "modal k=" + std::to_string(modes) + (static_modes ? "+static" : "") + " (N=" + std::to_string(elements) + ")" +
+             stiffened;
+  }
+  return "?";
+}
+
+std::shared_ptr<const fem::BeamModel> boom_beam(const Scene& scene, int elements) {
+  fem::BeamMesh mesh = scene.boom.mesh;
+  mesh.element_count = elements;
+  return std::make_shared<const fem::BeamModel>(fem::make_beam_model(mesh, fem::Boundary::clamped_free));
+}
+
+double boom_stiffness_damping(const Scene& scene) {
+  const double omega1 = fem::analytic_bending_modes(scene.boom.mesh, fem::Boundary::clamped_free, 1)[0].angular_frequency;
+  return 2.0 * scene.boom.damping_ratio / omega1;
+}
+
+namespace {
+
+[[noreturn]] void scene_problem(const Scene& scene, const std::string& key, const std::string& value, const std::string& message) {
+  throw SceneError({SceneProblem{scene.file, 0, 0, key, value, message}});
+}
+
+double critical_damping(double mass, double stiffness) { return 2.0 * std::sqrt(mass * stiffness); }
+
+const fem::BeamModel& coords_beam(const nodal::NodalCoordinates& coords) { return coords.beam(); }
+const fem::BeamModel& coords_beam(const modal::ModalCoordinates& coords) { return coords.beam(); }
+
+// The floating hull of a crane scene: box section, hydrostatic stiffness for the radiation damping,
+// added mass, mooring, the even-keel pose at the mean draft.
+coupling::HullModel floating_hull(const Scene& scene) {
+  const Hull& hull = *scene.hull;
+  const Cargo& cargo = *scene.cargo;
+  const Wire& wire = *scene.wire;
+  const Environment& env = scene.environment;
+  const double g = env.gravity, rho = env.water_density;
+  const double boom_mass = scene.boom.mesh.total_mass();
+  const double displaced_mass = hull.mass + boom_mass + cargo.mass;
+  const double capacity = rho * hull.length * hull.width * hull.depth;
+  if (displaced_mass >= capacity) {
+    scene_problem(scene, "hull.mass", std::to_string(hull.mass),
+                  "the hull would sink: hull + boom + cargo = " + std::to_string(displaced_mass / 1e3) +
+                      " t exceeds the buoyancy of the whole box ρ·L·B·D = " + std::to_string(capacity / 1e3) +
+                      " t; reduce the masses or enlarge hull.length/width/depth");
+  }
+  coupling::HullModel h;
+  h.mass = hull.mass;
+  h.pitch_inertia = hull.pitch_inertia();
+  const double mid_x = hull.g1_aft_of_mid_length;  // mid-length lies forward of G1
+  h.section = {mid_x - 0.5 * hull.length, mid_x + 0.5 * hull.length, -hull.g1_above_keel,
+               hull.depth - hull.g1_above_keel, hull.width};
+  const Radiation& rad = scene.radiation;
+  h.added_mass = {rad.surge_added_mass * displaced_mass, rad.heave_added_mass * displaced_mass,
+                  rad.pitch_added_inertia * h.pitch_inertia};
+  const double draft = displaced_mass / (rho * hull.length * hull.width);
+  // Centre of gravity of hull + boom + hanging cargo above the keel (undeformed, even keel).
+  const BoomMount& mount = *scene.boom.mount;
+  const double boom_cg = mount.root_y + 0.5 * scene.boom.mesh.length * std::sin(mount.angle);
+  const double cargo_cg = mount.root_y + scene.boom.mesh.length * std::sin(mount.angle) - wire.unstretched_length - cargo.hook_y;
+  const double center_of_gravity_above_keel =
+      hull.g1_above_keel + (boom_mass * boom_cg + cargo.mass * cargo_cg) / displaced_mass;
+  const Eigen::Vector2d hydrostatic =
+      coupling::box_hydrostatic_stiffness(h.section, rho, g, displaced_mass / rho, center_of_gravity_above_keel);
+  h.mooring_stiffness = scene.mooring.surge_stiffness;
+  h.radiation_damping = {rad.surge_damping * critical_damping(displaced_mass + h.added_mass(0), h.mooring_stiffness),
+                         rad.heave_damping * critical_damping(displaced_mass + h.added_mass(1), hydrostatic(0)),
+                         rad.pitch_damping * critical_damping(h.pitch_inertia + h.added_mass(2), std::max(hydrostatic(1), 0.0))};
+  h.support_pose = Eigen::Vector3d(0.0, hull.g1_above_keel - draft, 0.0);  // even keel at the mean draft
+  return h;
+}
+
+// The hub of a hub scene: held, or turned by its prescribed rotation; no water.
+coupling::HullModel driven_hub(const Hub& hub) {
+  coupling::HullModel h;
+  h.hydrostatics = false;
+  h.fixed = true;
+  h.support_pose = Eigen::Vector3d(0.0, 0.0, hub.angle);
+  coupling::PrescribedMotion motion;
+  motion.pose0 = h.support_pose;
+  motion.profile = hub.motion == HubMotion::spin_up         ? coupling::RotationProfile::spin_up
+                   : hub.motion == HubMotion::constant_spin ? coupling::RotationProfile::constant_spin
+                                                            : coupling::RotationProfile::fixed;
+  motion.spin_rate = hub.spin_rate;
+  motion.spin_up_time = hub.spin_up_time;
+  h.prescribed = motion;
+  return h;
+}
+
+}  // namespace
+
+double boom_angle_at_rest(const Scene& scene) {
+  return scene.hub ? scene.hub->angle : (scene.boom.mount ? scene.boom.mount->angle : 0.0);
+}
+
+double centrifugal_hub_radius(const Scene& scene) {
+  if (scene.hub) return scene.hub->radius;
+  if (!scene.boom.mount) return 0.0;
+  const BoomMount& mount = *scene.boom.mount;
+  return mount.root_x * std::cos(mount.angle) + mount.root_y * std::sin(mount.angle);
+}
+
+fem::AxialForce static_reference_axial_force(const Scene& scene) {
+  const double g = scene.environment.gravity;
+  const double along_axis = -std::sin(boom_angle_at_rest(scene));  // component of "down" along the boom axis
+  const double cargo_weight = scene.cargo ? scene.cargo->mass * g : 0.0;
+  return fem::static_axial_force(scene.boom.mesh, scene.boom.mesh.section.mass_per_length * g * along_axis,
+                                 cargo_weight * along_axis);
+}
+
+template <fem::ElasticCoordinates Coords>
+coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords, Stiffening stiffening) {
+  if (!scene.has_base() || !scene.boom.mount || (scene.is_crane() && (!scene.cargo || !scene.wire))) {
+    scene_problem(scene, "hull", "", "a crane run needs [hull] (with [cargo], [wire] and boom.angle/root_x/root_y) or [hub]");
+  }
+  const Environment& env = scene.environment;
+  const double beta = boom_stiffness_damping(scene);
+  // Geometric stiffening, assembled in nodal space on the coordinates' own mesh and projected.
+  const fem::BeamModel& beam = coords_beam(coords);
+  typename Coords::Matrix prestress, centrifugal;
+  if (has_static_stiffening(stiffening)) {
+    prestress = coords.project(fem::assemble_geometric_stiffness(beam.mesh, beam.dofs, static_reference_axial_force(scene)));
+  }
+  if (has_centrifugal_stiffening(stiffening)) {
+    centrifugal = coords.project(fem::assemble_geometric_stiffness(
+        beam.mesh, beam.dofs, fem::centrifugal_axial_force(beam.mesh, centrifugal_hub_radius(scene))));
+  }
+  coupling::FloatingFrameBody<Coords> boom(std::move(coords), beta);
+  if (prestress.size() > 0) boom.set_prestress_stiffness(std::move(prestress));
+  if (centrifugal.size() > 0) boom.set_centrifugal_stiffness(std::move(centrifugal));
+  coupling::BodyPoint tip = boom.point(scene.boom.mesh.length);
+  const BoomMount& mount = *scene.boom.mount;
+  coupling::CraneModel<Coords> model{scene.hub ? driven_hub(*scene.hub) : floating_hull(scene),
+                                     {Eigen::Vector2d(mount.root_x, mount.root_y), mount.angle},
+                                     std::move(boom), std::move(tip), {}, {}, env.gravity, env.water_density, std::nullopt};
+  if (scene.cargo && scene.wire) {
+    const Cargo& cargo = *scene.cargo;
+    const Wire& wire = *scene.wire;
+    model.cargo = {true, cargo.mass, cargo.pitch_inertia(), Eigen::Vector2d(cargo.hook_x, cargo.hook_y)};
+    model.wire = {wire.unstretched_length, wire.stiffness, wire.damping_ratio * critical_damping(cargo.mass, wire.stiffness)};
+  } else {
+    model.cargo.present = false;
+  }
+  if (scene.wave && scene.is_crane()) {
+    const double direction = scene.wave->direction == WaveDirection::following ? 1.0 : -1.0;
+    model.wave = coupling::AiryWave::from_height_period(scene.wave->height, scene.wave->period, direction,
+                                                        scene.wave->ramp_periods, env.water_depth, env.gravity);
+  }
+  return model;
+}
+
+template coupling::CraneModel<nodal::NodalCoordinates> build_crane_model(const Scene&, nodal::NodalCoordinates, Stiffening);
+template coupling::CraneModel<modal::ModalCoordinates> build_crane_model(const Scene&, modal::ModalCoordinates, Stiffening);
+
+modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {
+  auto beam = boom_beam(scene, choice.kind == BoomKind::rigid ? 1 : choice.elements);
+  if (choice.kind == BoomKind::rigid) {
+    modal::ModalBasis basis;
+    basis.vectors = Eigen::MatrixXd(beam->dofs.free_count(), 0);
+    return modal::ModalCoordinates(beam, std::move(basis));
+  }
+  // One way to the vibration modes, cached or not, so a basis never depends on who built it.
+  modal::ModeCache local;
+  modal::ModeCache& modes_of_mesh = cache != nullptr ? *cache : local;
+  const modal::EigenPairs modes =
+      choice.modes > 0 ? modes_of_mesh.lowest_modes(beam->mesh, fem::Boundary::clamped_free, choice.modes, choice.solver)
+                       : modal::EigenPairs{Eigen::VectorXd(0), Eigen::MatrixXd(beam->dofs.free_count(), 0), {}};
+  const std::vector<modal::UnitLoad> loads =
+      choice.static_modes ? modal::tip_and_body_unit_loads(beam->mesh) : std::vector<modal::UnitLoad>{};
+  modal::ModalBasis basis = modal::append_static_modes(beam->mesh, beam->dofs, beam->stiffness, beam->mass,
+                                                       modes.eigenvectors, modes.eigenvalues, loads);
+  return modal::ModalCoordinates(beam, std::move(basis));
+}
+
+std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {
+  const Stiffening stiffening = choice.stiffening.value_or(scene.boom.stiffening);
+  if (choice.kind == BoomKind::nodal) {
+    return coupling::make_crane_equations(
+        build_crane_model(scene, nodal::NodalCoordinates(boom_beam(scene, choice.elements)), stiffening));
+  }
+  return coupling::make_crane_equations(build_crane_model(scene, modal_coordinates(scene, choice, cache), stiffening));
+}
+
+}  // namespace ffrf::scene

@@ -1,0 +1,69 @@
+// Turns a loaded crane scene (scene/scene.hpp) into the coupled system of coupling/: the boom's
+// nodal-space beam model, its elastic coordinates (rigid, nodal or modal), the hull's box section
+// relative to G1, added mass and radiation damping from the scene's multiples and fractions of
+// critical, the wire's damping, the wave. Documented modelling choices: docs/theory.md §7.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "modal/mode_cache.hpp"
+#include "scene/scene.hpp"
+#include "coupling/crane_model.hpp"
+#include "coupling/crane_system.hpp"
+#include "fem/axial_force.hpp"
+#include "modal/eigen_solver.hpp"
+#include "modal/modal_coordinates.hpp"
+#include "nodal/nodal_coordinates.hpp"
+
+namespace ffrf::scene {
+
+enum class BoomKind { rigid, nodal, modal };
+std::string_view to_string(BoomKind kind);
+std::optional<BoomKind> parse_boom_kind(std::string_view text);
+std::string boom_kind_choices();  // "rigid|nodal|modal"
+
+struct BoomChoice {
+  BoomKind kind = BoomKind::nodal;
+  int elements = 16;          // N (the mesh the modes are computed on, for modal)
+  int modes = 4;              // k vibration modes (modal)
+  bool static_modes = false;  // add static correction modes (modal): tip loads + uniform body loads
+  modal::EigenSolverKind solver = modal::EigenSolverKind::arpack;
+  std::optional<Stiffening> stiffening = std::nullopt;  // overrides the scene's boom.stiffening
+  std::string label() const;  // "rigid", "nodal N=16", "modal k=4+static (N=16)"
+};
+
+// The beam of the boom, clamped at its root (the floating-frame reference condition).
+std::shared_ptr<const fem::BeamModel> boom_beam(const Scene& scene, int elements);
+
+// Stiffness-proportional structural damping β = 2ζ/ω1 with ω1 the analytic first clamped–free
+// bending frequency: the same for every mesh and coordinate choice, so models compare on equal terms.
+double boom_stiffness_damping(const Scene& scene);
+
+// Boom angle above the horizontal in the as-built posture (hull crane: boom.angle; hub: hub.angle).
+double boom_angle_at_rest(const Scene& scene);
+// Signed distance along the boom axis from the axis the base turns about (hub axis, or G1 of a
+// hull) to the root B: the r of the centrifugal axial force (negative when the axis lies ahead).
+double centrifugal_hub_radius(const Scene& scene);
+// The reference axial force of static stiffening: beam statics of the undeformed boom in its
+// as-built posture under self-weight and the hanging cargo's weight at the tip (compression < 0):
+// N(x) = −(ρA g (L − x) + m_c g) sin φ.
+fem::AxialForce static_reference_axial_force(const Scene& scene);
+
+// Throws SceneError when the scene has no base (hull or hub) or the hull cannot float the load.
+// A hub scene becomes a held or driven base (coupling::PrescribedMotion) without water; a scene
+// without [cargo] has no cargo coordinates. `stiffening` adds the geometric stiffness matrices.
+template <fem::ElasticCoordinates Coords>
+coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords, Stiffening stiffening = Stiffening::none);
+
+// Elastic coordinates for a choice (the rigid boom is modal coordinates with an empty basis).
+// The vibration modes come from the cache (computed once per mesh) or, without one, from a
+// cache of this call alone: the same solve either way (modal/mode_cache.hpp).
+modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache = nullptr);
+
+// The whole system for a choice, ready for static equilibrium and integration.
+std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache = nullptr);
+
+}  // namespace ffrf::scene

@@ -1,0 +1,143 @@
+// A loaded scene (DESIGN.md §3): pure data in SI units, planar, y up, angles counter-clockwise.
+// The boom is always present; a crane scene also has the hull, the cargo and the wire. Sections a
+// scene leaves out take the defaults of scene/scene_schema.cpp (environment, radiation, mooring,
+// simulation) or stay empty (wave: calm water).
+#pragma once
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "fem/boundary.hpp"
+#include "fem/mesh.hpp"
+
+namespace ffrf::scene {
+
+// Where and how the boom is clamped to the hull (crane scenes only).
+struct BoomMount {
+  double angle;   // above the hull's x axis [rad], in (0, π/2)
+  double root_x;  // B relative to G1, hull frame [m]
+  double root_y;  // [m]
+};
+
+// Geometric (stress) stiffening of the boom (docs/theory.md, "Geometric stiffening").
+enum class Stiffening { none, static_load, centrifugal, both };
+std::string_view to_string(Stiffening stiffening);                  // "none", "static", "centrifugal", "both"
+std::optional<Stiffening> parse_stiffening(std::string_view text);  // nullopt when unknown
+inline bool has_static_stiffening(Stiffening s) { return s == Stiffening::static_load || s == Stiffening::both; }
+inline bool has_centrifugal_stiffening(Stiffening s) { return s == Stiffening::centrifugal || s == Stiffening::both; }
+
+struct Boom {
+  fem::BeamMesh mesh;                 // length, element count N and section (E, A, I, ρA)
+  fem::Boundary boundary;             // for `ffrf modes`; the crane clamps the root
+  double damping_ratio;               // structural, fraction of critical in the first mode [-]
+  std::optional<double> density;     // ρ [kg/m^3] when the scene gave it instead of ρA
+  std::optional<BoomMount> mount;     // hull cranes: as given; hub scenes: (0, hub.radius, 0)
+  Stiffening stiffening = Stiffening::none;
+};
+
+struct Hull {
+  double mass;                       // without the boom [kg]
+  double pitch_radius_of_gyration;   // about G1 [m]
+  double length;                     // box, x [m]
+  double width;                      // box, normal to the plane [m]
+  double depth;                      // box, keel to deck [m]
+  double g1_above_keel;              // [m]
+  double g1_aft_of_mid_length;       // [m], < 0: forward of mid-length
+
+  double pitch_inertia() const { return mass * pitch_radius_of_gyration * pitch_radius_of_gyration; }  // [kg m^2]
+};
+
+// A rigid hub on a fixed axis with a prescribed rotation (the base of a hub scene instead of a hull).
+enum class HubMotion { fixed, spin_up, constant_spin };
+
+struct Hub {
+  double radius;        // axis to boom root [m]
+  double angle;         // θ(0) [rad]
+  HubMotion motion;
+  double spin_rate;     // Ωs [rad/s]
+  double spin_up_time;  // Ts [s]
+};
+
+struct Cargo {
+  double mass;                      // [kg]
+  double length;                    // box, x [m]
+  double height;                    // box, y [m]
+  double hook_x;                    // C relative to G2, cargo frame [m]
+  double hook_y;                    // [m]
+  double pitch_radius_of_gyration;  // about G2 [m] (given, or the uniform box's)
+  bool radius_of_gyration_derived;  // true when computed from the box
+
+  double pitch_inertia() const { return mass * pitch_radius_of_gyration * pitch_radius_of_gyration; }  // [kg m^2]
+};
+
+struct Wire {
+  double unstretched_length;  // L0 [m]
+  double stiffness;           // EA/L0 [N/m]
+  double damping_ratio;       // fraction of critical [-]
+};
+
+struct Environment {
+  double water_density;  // ρ [kg/m^3]
+  double gravity;        // g [m/s^2]
+  double water_depth;    // [m], infinity = deep water
+
+  bool deep_water() const { return std::isinf(water_depth); }
+};
+
+enum class WaveDirection { following, head };  // following: travels +x
+
+struct Wave {
+  double height;        // H, trough to crest [m]
+  double period;        // T [s]
+  WaveDirection direction;
+  double ramp_periods;  // ramp-in length in periods [-]
+};
+
+// Constant radiation coefficients (hull frame at G1) as multiples / fractions of critical.
+struct Radiation {
+  double surge_added_mass;     // A11 / displaced mass [-]
+  double heave_added_mass;     // A33 / displaced mass [-]
+  double pitch_added_inertia;  // A55 / I55 [-]
+  double surge_damping;        // B11, fraction of critical [-]
+  double heave_damping;        // B33 [-]
+  double pitch_damping;        // B55 [-]
+};
+
+struct Mooring {
+  double surge_stiffness;  // [N/m]
+};
+
+enum class InitialState { static_equilibrium, as_built };
+
+struct Simulation {
+  double duration;         // [s]
+  double output_interval;  // [s]
+  InitialState initial_state;
+  double cargo_lift = 0.0;              // [m] raise the cargo and release it at rest
+  double deflection_limit = 0.2;        // divergence: tip deflection / boom length [-]
+  double constraint_drift_limit = 1e-3; // [m]
+};
+
+struct Scene {
+  std::string file;  // path the scene was loaded from (for messages)
+  std::string name;
+  std::string description;
+  Boom boom;
+  std::optional<Hull> hull;
+  std::optional<Hub> hub;    // excludes hull
+  std::optional<Cargo> cargo;
+  std::optional<Wire> wire;
+  Environment environment;
+  std::optional<Wave> wave;  // empty: calm water
+  Radiation radiation;
+  Mooring mooring;
+  Simulation simulation;
+
+  bool is_crane() const { return hull.has_value(); }  // then cargo, wire and boom.mount are present
+  bool has_base() const { return hull.has_value() || hub.has_value(); }  // a time-domain system: hull or hub
+  bool has_cargo() const { return cargo.has_value(); }  // then wire too
+};
+
+}  // namespace ffrf::scene

@@ -1,0 +1,42 @@
+// Reads a scene file (TOML, toml++) against the scene schema and builds a Scene. Every problem is
+// collected — malformed TOML (with line and column), unknown sections and keys (with a "did you
+// mean"), missing keys and sections, wrong units, NaN, values out of range, conflicting keys —
+// and thrown together as one SceneError, so that `ffrf check` can list them all at once.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace ffrf::scene {
+
+struct SceneProblem {
+  std::string file;
+  int line = 0;         // 1-based; 0 when unknown
+  int column = 0;       // 1-based; 0 when unknown
+  std::string key;      // dotted key or section name; empty for a malformed file
+  std::string value;    // the value as written (strings quoted); empty when absent
+  std::string message;  // what is wrong, with the valid range or choices
+};
+
+// "FILE:LINE: key = value: message" (parts that are empty are left out).
+std::string format_problem(const SceneProblem& problem);
+
+class SceneError : public std::runtime_error {
+ public:
+  explicit SceneError(std::vector<SceneProblem> problems);
+  const std::vector<SceneProblem>& problems() const { return problems_; }
+
+ private:
+  std::vector<SceneProblem> problems_;
+};
+
+// Throws SceneError listing every problem; a file that cannot be read is one problem.
+Scene load_scene(const std::string& path);
+// The same for TOML text; `file` names it in messages.
+Scene load_scene_text(std::string_view toml_text, const std::string& file);
+
+}  // namespace ffrf::scene

@@ -1,0 +1,287 @@
+// The scene schema table (DESIGN.md §3 and §7): the one place where scene keys are declared.
+// Values of the reference scene live in cases/paper_floating_crane.toml, not here; defaults here
+// are the values a scene gets when it leaves a key out.
+#include "scene/scene_schema.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fmt/format.h>
+#include <stdexcept>
+#include <vector>
+
+namespace ffrf::scene {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
+constexpr Range kPositive{{0.0, false}, {kInf, false}};
+constexpr Range kNonNegative{{0.0, true}, {kInf, false}};
+constexpr Range kAny{};
+constexpr Range kFraction{{0.0, true}, {1.0, false}};  // damping ratios below critical
+
+constexpr KeySpec required(std::string_view name, Dimension dimension, Range range, std::string_view help,
+                           std::string_view display_unit = {}) {
+  return {name, ValueKind::number, dimension, range, Presence::required, 0.0, {}, {}, help, display_unit};
+}
+constexpr KeySpec crane_required(std::string_view name, Dimension dimension, Range range, std::string_view help,
+                                 std::string_view display_unit = {}) {
+  return {name, ValueKind::number, dimension, range, Presence::crane_required, 0.0, {}, {}, help, display_unit};
+}
+constexpr KeySpec defaulted(std::string_view name, Dimension dimension, Range range, double value,
+                            std::string_view help, std::string_view display_unit = {}) {
+  return {name, ValueKind::number, dimension, range, Presence::defaulted, value, {}, {}, help, display_unit};
+}
+constexpr KeySpec optional(std::string_view name, Dimension dimension, Range range, std::string_view help) {
+  return {name, ValueKind::number, dimension, range, Presence::optional, 0.0, {}, {}, help};
+}
+constexpr KeySpec one_of(std::string_view group, std::string_view name, Dimension dimension, Range range,
+                         std::string_view help) {
+  return {name, ValueKind::number, dimension, range, Presence::one_of, 0.0, {}, {}, help, {}, false, group};
+}
+constexpr KeySpec choice(std::string_view name, std::string_view choices, std::string_view default_text,
+                         std::string_view help) {
+  return {name, ValueKind::choice, Dimension::ratio, kAny, Presence::defaulted, 0.0, default_text, choices, help};
+}
+constexpr KeySpec text(std::string_view name, std::string_view help) {
+  return {name, ValueKind::text, Dimension::ratio, kAny, Presence::optional, 0.0, {}, {}, help};
+}
+constexpr KeySpec integer(std::string_view name, Range range, double value, std::string_view help) {
+  return {name, ValueKind::integer, Dimension::ratio, range, Presence::defaulted, value, {}, {}, help};
+}
+constexpr KeySpec with_infinity(KeySpec key) {
+  key.allow_infinity = true;
+  return key;
+}
+
+using enum Dimension;
+
+constexpr std::array kSections{
+    SectionSpec{"scene", SectionRole::optional, "What the scene is: a name and a description for reports."},
+    SectionSpec{"boom", SectionRole::required,
+                "The elastic boom: an Euler–Bernoulli beam of uniform equivalent section, meshed with N frame "
+                "elements. The only section of a single-beam scene such as cases/cantilever.toml."},
+    SectionSpec{"hull", SectionRole::crane,
+                "Crane hull G1: a rigid box in surge, heave and pitch. Hull frame: x forward (toward the bow, "
+                "where the boom overhangs), y up, origin at G1."},
+    SectionSpec{"hub", SectionRole::optional,
+                "A rigid hub on a fixed axis normal to the plane, instead of a floating hull: the boom is clamped to "
+                "it at radius hub.radius, and the hub is held or turned by a prescribed rotation θ(t) (a driving "
+                "constraint). [cargo] and [wire] are optional with a hub (both or neither). Excludes [hull]."},
+    SectionSpec{"cargo", SectionRole::crane, "Cargo G2: a rigid box in surge, heave and pitch, hanging on the wire."},
+    SectionSpec{"wire", SectionRole::crane,
+                "Wire rope from the boom tip A′ to the hook C: axial spring–damper, tension only."},
+    SectionSpec{"environment", SectionRole::optional, "Sea water and gravity."},
+    SectionSpec{"wave", SectionRole::optional,
+                "Regular Airy wave, ramped in over the first periods. Leave the section out for calm water."},
+    SectionSpec{"radiation", SectionRole::optional,
+                "Linear radiation with constant coefficients in the hull frame at G1: added mass as multiples of "
+                "the displaced mass (surge, heave) or of the hull's pitch inertia I55, damping as fractions of "
+                "critical. Leave the section out for no radiation."},
+    SectionSpec{"mooring", SectionRole::optional, "Linear mooring springs on the hull."},
+    SectionSpec{"simulation", SectionRole::optional, "Time span and output of `ffrf run`."},
+};
+
+constexpr std::array kKeys{
+    // [scene]
+    text("scene.name", "Short name shown in reports."),
+    text("scene.description", "One-line description of the scene."),
+    // [boom]
+    required("boom.length", length, kPositive, "Boom length L from the root B to the tip A′."),
+    required("boom.youngs_modulus", pressure, kPositive, "Young's modulus E of the equivalent section."),
+    required("boom.area", area, kPositive, "Cross-section area A (axial rigidity EA)."),
+    required("boom.second_moment", second_moment, kPositive,
+             "Second moment of area I about the axis normal to the plane (bending rigidity EI)."),
+    one_of("boom mass", "boom.mass_per_length", mass_per_length, kPositive,
+           "Mass per unit length ρA. Give exactly one of boom.mass_per_length and boom.density."),
+    one_of("boom mass", "boom.density", density, kPositive,
+           "Material density ρ; the mass per length is ρ·A. Give exactly one of boom.mass_per_length and "
+           "boom.density."),
+    integer("boom.elements", Range{{1.0, true}, {kInf, false}}, 16.0,
+            "Number N of beam finite elements (`--elements` overrides it)."),
+    choice("boom.boundary", "clamped-free|free-free|pinned-pinned", "clamped-free",
+           "Boundary condition for `ffrf modes` (`--boundary` overrides it). The coupled crane always clamps "
+           "the root to the hull (the floating-frame reference condition)."),
+    crane_required("boom.angle", angle, Range{{0.0, false}, {kPi / 2.0, false}},
+                   "Boom angle above the hull's x axis (counter-clockwise).", "deg"),
+    crane_required("boom.root_x", length, kAny, "x of the boom root B relative to G1, hull frame."),
+    crane_required("boom.root_y", length, kAny, "y of the boom root B relative to G1, hull frame."),
+    defaulted("boom.damping_ratio", ratio, kFraction, 0.0,
+              "Structural damping of the boom: fraction of critical in its first mode."),
+    choice("boom.stiffening", "none|static|centrifugal|both", "none",
+           "Geometric (stress) stiffening of the boom: static = from the reference axial force of self-weight "
+           "and cargo (compression softens), centrifugal = from the frame's angular velocity, updated during the "
+           "run; both; none = the linear floating-frame model (`--stiffening` overrides it)."),
+    // [hull]
+    required("hull.mass", mass, kPositive, "Hull mass without the boom.", "t"),
+    required("hull.pitch_radius_of_gyration", length, kPositive, "Radius of gyration of the hull for pitch about G1."),
+    required("hull.length", length, kPositive, "Length of the box hull (x)."),
+    required("hull.width", length, kPositive, "Width (beam) of the box hull, normal to the plane."),
+    required("hull.depth", length, kPositive, "Depth of the box hull, keel to deck."),
+    required("hull.g1_above_keel", length, kNonNegative, "Height of G1 above the keel."),
+    required("hull.g1_aft_of_mid_length", length, kAny, "Distance of G1 aft of the hull's mid-length (< 0: forward)."),
+    // [hub]
+    defaulted("hub.radius", length, kNonNegative, 0.0,
+              "Distance from the hub's axis to the boom root B, along the boom axis."),
+    defaulted("hub.angle", angle, kAny, 0.0, "Angle of the hub and the boom above the x axis at t = 0.", "deg"),
+    choice("hub.motion", "fixed|spin-up|constant-spin", "fixed",
+           "Prescribed rotation: fixed = held at hub.angle; spin-up = θ(t) = (Ωs/Ts)[t²/2 + (Ts/2π)²(cos(2πt/Ts) − 1)] "
+           "for t < Ts, then Ωs (t − Ts/2) (Simo & Vu-Quoc 1986); constant-spin = Ωs t from rest."),
+    defaulted("hub.spin_rate", angular_velocity, kAny, 0.0, "Final spin rate Ωs of spin-up and constant-spin."),
+    defaulted("hub.spin_up_time", time, kPositive, 15.0, "Spin-up time Ts."),
+    // [cargo]
+    required("cargo.mass", mass, kPositive, "Cargo mass.", "t"),
+    required("cargo.length", length, kPositive, "Length of the cargo box (x)."),
+    required("cargo.height", length, kPositive, "Height of the cargo box (y)."),
+    required("cargo.hook_x", length, kAny, "x of the hook C relative to G2, cargo frame."),
+    required("cargo.hook_y", length, kAny, "y of the hook C relative to G2, cargo frame."),
+    optional("cargo.pitch_radius_of_gyration", length, kPositive,
+             "Radius of gyration for pitch about G2. Default: the uniform box's √((l² + h²)/12)."),
+    // [wire]
+    required("wire.unstretched_length", length, kPositive, "Unstretched length L0 of the wire rope."),
+    required("wire.stiffness", stiffness, kPositive, "Axial stiffness EA/L0 of the wire rope."),
+    defaulted("wire.damping_ratio", ratio, kFraction, 0.0,
+              "Axial damping as a fraction of critical for the cargo mass on the wire stiffness."),
+    // [environment]
+    defaulted("environment.water_density", density, kPositive, 1025.0, "Sea-water density ρ."),
+    defaulted("environment.gravity", acceleration, kNonNegative, 9.81, "Gravitational acceleration g (0: none)."),
+    with_infinity(defaulted("environment.water_depth", length, Range{{0.0, false}, {kInf, true}}, kInf,
+                            "Water depth; `inf` (or \"inf\") is deep water.")),
+    // [wave]
+    required("wave.height", length, kNonNegative, "Wave height H, trough to crest."),
+    required("wave.period", time, kPositive, "Wave period T."),
+    choice("wave.direction", "following|head", "following",
+           "following: the wave travels +x (the boom overhangs the bow at +x); head: it travels −x."),
+    defaulted("wave.ramp_periods", ratio, kNonNegative, 2.0, "The wave is ramped in over this many periods."),
+    // [radiation]
+    defaulted("radiation.surge_added_mass", ratio, kNonNegative, 0.0, "A11 as a multiple of the displaced mass."),
+    defaulted("radiation.heave_added_mass", ratio, kNonNegative, 0.0, "A33 as a multiple of the displaced mass."),
+    defaulted("radiation.pitch_added_inertia", ratio, kNonNegative, 0.0,
+              "A55 as a multiple of the hull's pitch inertia I55 about G1."),
+    defaulted("radiation.surge_damping", ratio, kNonNegative, 0.0, "B11 as a fraction of critical damping in surge."),
+    defaulted("radiation.heave_damping", ratio, kNonNegative, 0.0, "B33 as a fraction of critical damping in heave."),
+    defaulted("radiation.pitch_damping", ratio, kNonNegative, 0.0, "B55 as a fraction of critical damping in pitch."),
+    // [mooring]
+    defaulted("mooring.surge_stiffness", stiffness, kNonNegative, 0.0, "Surge spring on the hull at G1."),
+    // [simulation]
+    defaulted("simulation.duration", time, kPositive, 120.0, "Simulated time span."),
+    defaulted("simulation.output_interval", time, kPositive, 0.05, "Interval between output samples."),
+    choice("simulation.initial_state", "static-equilibrium|as-built", "static-equilibrium",
+           "static-equilibrium: start from the static equilibrium (KINSOL); as-built: start from the "
+           "undeformed posture as given."),
+    defaulted("simulation.cargo_lift", length, kNonNegative, 0.0,
+              "Raise the cargo this far above its starting posture and release it at rest: a dropped load whose "
+              "wire goes slack and snaps taut (0: no lift)."),
+    defaulted("simulation.deflection_limit", ratio, Range{{0.0, false}, {kInf, false}}, 0.2,
+              "Divergence detector: a run stops as diverged when the boom tip's elastic deflection exceeds this "
+              "fraction of the boom length (the linear floating-frame model is meaningless beyond it)."),
+    defaulted("simulation.constraint_drift_limit", length, kPositive, 1e-3,
+              "Constraint-drift detector: a full-coordinate run is flagged when the clamp residual |C| at B exceeds "
+              "this."),
+};
+
+double display_factor(const KeySpec& key) {
+  return key.display_unit.empty() ? 1.0 : unit_factor(key.display_unit, key.dimension);
+}
+
+std::string_view display_unit(const KeySpec& key) {
+  return key.display_unit.empty() ? si_unit(key.dimension) : key.display_unit;
+}
+
+std::string format_bound(double value, double factor) {
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  return fmt::format("{:.6g}", value / factor);
+}
+
+template <class Items, class Name>
+std::optional<std::string_view> closest(std::string_view wanted, const Items& items, Name name) {
+  std::optional<std::string_view> best;
+  std::size_t best_distance = std::max<std::size_t>(2, wanted.size() / 3) + 1;
+  for (const auto& item : items) {
+    const std::size_t distance = edit_distance(wanted, name(item));
+    if (distance < best_distance) {
+      best_distance = distance;
+      best = name(item);
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+bool Range::contains(double value) const {
+  const bool above = lower.closed ? value >= lower.value : value > lower.value;
+  const bool below = upper.closed ? value <= upper.value : value < upper.value;
+  return above && below;
+}
+
+std::span<const SectionSpec> scene_sections() { return kSections; }
+std::span<const KeySpec> scene_keys() { return kKeys; }
+
+const SectionSpec* find_section(std::string_view name) {
+  const auto it = std::find_if(kSections.begin(), kSections.end(), [&](const SectionSpec& s) { return s.name == name; });
+  return it == kSections.end() ? nullptr : &*it;
+}
+
+const KeySpec* find_key(std::string_view dotted_name) {
+  const auto it = std::find_if(kKeys.begin(), kKeys.end(), [&](const KeySpec& k) { return k.name == dotted_name; });
+  return it == kKeys.end() ? nullptr : &*it;
+}
+
+const KeySpec& key_spec(std::string_view dotted_name) {
+  const KeySpec* key = find_key(dotted_name);
+  if (key == nullptr) throw std::logic_error(fmt::format("scene key '{}' is not in the schema", dotted_name));
+  return *key;
+}
+
+std::string format_range(const KeySpec& key) {
+  if (key.kind == ValueKind::choice) return std::string(key.choices);
+  if (key.kind == ValueKind::text) return "any text";
+  const double factor = display_factor(key);
+  std::string range = fmt::format("{}{}, {}{}", key.range.lower.closed ? '[' : '(',
+                                  format_bound(key.range.lower.value, factor),
+                                  format_bound(key.range.upper.value, factor), key.range.upper.closed ? ']' : ')');
+  const std::string_view unit = key.kind == ValueKind::number ? display_unit(key) : std::string_view{};
+  return unit.empty() ? range : range + " " + std::string(unit);
+}
+
+std::string format_default(const KeySpec& key) {
+  if (key.presence != Presence::defaulted) return {};
+  if (key.kind == ValueKind::choice || key.kind == ValueKind::text) return std::string(key.default_text);
+  const std::string value = format_bound(key.default_value, display_factor(key));
+  const std::string_view unit = key.kind == ValueKind::number ? display_unit(key) : std::string_view{};
+  return unit.empty() ? value : value + " " + std::string(unit);
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  // Optimal string alignment: insertions, deletions, substitutions and adjacent transpositions.
+  const std::size_t columns = b.size() + 1;
+  std::vector<std::size_t> d((a.size() + 1) * columns);
+  const auto at = [&](std::size_t i, std::size_t j) -> std::size_t& { return d[i * columns + j]; };
+  for (std::size_t i = 0; i <= a.size(); ++i) at(i, 0) = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) at(0, j) = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      at(i, j) = std::min({at(i - 1, j) + 1, at(i, j - 1) + 1, at(i - 1, j - 1) + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) at(i, j) = std::min(at(i, j), at(i - 2, j - 2) + 1);
+    }
+  }
+  return at(a.size(), b.size());
+}
+
+std::optional<std::string_view> suggest_key(std::string_view dotted_name) {
+  // Same leaf in another section ("hull.youngs_modulus" -> "boom.youngs_modulus") first.
+  const std::string_view leaf = dotted_name.substr(dotted_name.find('.') + 1);
+  std::vector<std::string_view> same_leaf;
+  for (const KeySpec& key : kKeys) {
+    if (key.leaf() == leaf) same_leaf.push_back(key.name);
+  }
+  if (same_leaf.size() == 1) return same_leaf.front();
+  return closest(dotted_name, kKeys, [](const KeySpec& key) { return key.name; });
+}
+
+std::optional<std::string_view> suggest_section(std::string_view name) {
+  return closest(name, kSections, [](const SectionSpec& section) { return section.name; });
+}
+
+}  // namespace ffrf::scene

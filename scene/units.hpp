@@ -1,0 +1,47 @@
+// Physical dimensions and units of scene values. A scene number is in the SI unit of its key; a
+// string "value unit" ("120 m", "60 deg", "210 GPa", "2 %") is converted to SI. A unit of the
+// wrong dimension, NaN, and infinity (unless the key allows it) are errors with a message that
+// names the expected dimension and its units.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <variant>
+
+namespace ffrf::scene {
+
+enum class Dimension {
+  ratio,            // dimensionless [-]
+  length,           // m
+  area,             // m^2
+  second_moment,    // m^4 (second moment of area)
+  mass,             // kg
+  time,             // s
+  angle,            // rad
+  pressure,         // Pa (modulus, stress)
+  density,          // kg/m^3
+  mass_per_length,  // kg/m
+  acceleration,     // m/s^2
+  stiffness,        // N/m (translational spring)
+  angular_velocity, // rad/s
+};
+
+std::string_view si_unit(Dimension dimension);         // "m", "kg/m^3", "" for ratio
+std::string_view dimension_name(Dimension dimension);  // "a length", "a mass", ...
+std::string accepted_units(Dimension dimension);       // "m, mm, cm, km"
+
+// Factor that converts a value in `unit` into SI, when `unit` is a unit of `dimension`.
+double unit_factor(std::string_view unit, Dimension dimension);  // throws std::invalid_argument
+
+// Result of parsing one quantity: the SI value or the reason it was rejected.
+struct QuantityError {
+  std::string message;
+};
+using QuantityResult = std::variant<double, QuantityError>;
+
+// `text` is "value" or "value unit" (whitespace between them optional); an empty unit means SI.
+QuantityResult parse_quantity(std::string_view text, Dimension dimension, bool allow_infinity);
+// A plain number (already SI): rejects NaN and, unless allowed, infinity.
+QuantityResult check_number(double value, bool allow_infinity);
+
+}  // namespace ffrf::scene

@@ -1,0 +1,50 @@
+// The comparison of boom models against the converged reference (see compare.hpp).
+#include "study/compare.hpp"
+
+#include "study/recommend_reasoning.hpp"
+
+namespace ffrf::study {
+
+std::vector<ComparedModel> compared_models() {
+  using scene::BoomKind;
+  std::vector<ComparedModel> models{
+      {{BoomKind::rigid, 1}, true},
+      {{BoomKind::nodal, 1}, true},  // the paper's one-element boom
+      {{BoomKind::nodal, 16}, false},
+  };
+  for (const bool static_modes : {false, true}) {
+    for (const int k : {1, 2, 4}) {
+      models.push_back({{BoomKind::modal, 16, k, static_modes}, k == 2});
+    }
+  }
+  return models;
+}
+
+Comparison compare(const scene::Scene& scene, const CompareRequest& request,
+                   const std::function<void(const std::string&)>& progress, modal::ModeCache* modes) {
+  const auto tell = [&](const std::string& what) {
+    if (progress) progress(what);
+  };
+  modal::ModeCache own;
+  modal::ModeCache& cache = modes != nullptr ? *modes : own;
+  Comparison c;
+  c.settings = request.settings;
+  c.stiffening_from_physics = !request.stiffening;
+  c.stiffening = request.stiffening.value_or(physics_stiffening(scene, request.tolerance));
+  scene::Scene modelled = scene;
+  modelled.boom.stiffening = c.stiffening;
+  tell("reference");
+  c.reference = converged_reference(modelled, request.reference, request.settings.duration, &cache);
+  c.window_start = error_window(scene, request.settings.duration);
+  c.judged = judged_outputs(scene);
+  for (const ComparedModel& model : compared_models()) {
+    tell(model.choice.label());
+    c.runs.push_back(run_model(modelled, model.choice, request.settings, &cache));
+    c.plotted.push_back(model.plotted);
+    c.errors.push_back(coupling::compare_runs(c.runs.back().result, c.reference.run.result, c.window_start));
+    c.worst.push_back(worst_error(c.errors.back(), c.judged));
+  }
+  return c;
+}
+
+}  // namespace ffrf::study

@@ -1,0 +1,40 @@
+// The one error window, judged outputs and worst error of the studies (see error_measure.hpp).
+#include "study/error_measure.hpp"
+
+#include <cmath>
+
+namespace ffrf::study {
+
+double ramp_end(const scene::Scene& scene) { return scene.wave ? scene.wave->ramp_periods * scene.wave->period : 0.0; }
+
+double error_window(const scene::Scene& scene, double duration) {
+  const double ramp = ramp_end(scene);
+  return duration > ramp + 1e-9 ? ramp : 0.0;
+}
+
+std::vector<coupling::OutputChannel> judged_outputs(const scene::Scene& scene) {
+  using coupling::OutputChannel;
+  if (!scene.is_crane()) return {OutputChannel::tip_deflection};
+  return {OutputChannel::cargo_heave, OutputChannel::cargo_pitch,  OutputChannel::crane_heave,
+          OutputChannel::crane_pitch, OutputChannel::wire_tension, OutputChannel::joint_moment};
+}
+
+std::string output_list(const std::vector<coupling::OutputChannel>& outputs) {
+  std::string s;
+  for (const auto channel : outputs) s += (s.empty() ? "" : ",") + std::string(coupling::channel_name(channel));
+  return s;
+}
+
+WorstError worst_error(const coupling::RunErrors& errors, const std::vector<coupling::OutputChannel>& outputs) {
+  WorstError worst;
+  for (const coupling::OutputChannel channel : outputs) {
+    const double e = errors[channel].normalized_rms;
+    if (e >= worst.error || !std::isfinite(e)) {
+      worst = {e, channel};
+      if (!std::isfinite(e)) break;
+    }
+  }
+  return worst;
+}
+
+}  // namespace ffrf::study

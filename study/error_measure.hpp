@@ -1,0 +1,39 @@
+// How every study measures a model against its reference (issue 11.5: one physics across
+// commands): the same error window, the same judged outputs, the same "worst" error.
+//  * Window: after the wave ramp (ramp_periods × period), where the wave is fully in; a run that
+//    ends within the ramp, or a scene in calm water, is measured over its whole length.
+//  * Judged outputs: what an engineer designs the lift for — a crane's motions and loads (cargo
+//    heave and pitch, crane heave and pitch, wire tension, the bending moment at the boom root);
+//    a hub scene (no hull, so the hull channels are zero) its boom's tip deflection. The tip
+//    deflection of a crane is left out: it is the boom model's own coordinate (a rigid boom has
+//    none, so its error would be 100 % by construction), and what it does to the lift shows in
+//    the cargo motion, the wire tension and the root moment. Every channel's error is still reported.
+//  * Worst error: the largest normalized RMS error (coupling/error_metrics.hpp) over the judged outputs.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "coupling/error_metrics.hpp"
+#include "scene/scene.hpp"
+
+namespace ffrf::study {
+
+// End of the wave ramp [s] (0 in calm water).
+double ramp_end(const scene::Scene& scene);
+// Start of the error window for runs of `duration` seconds [s].
+double error_window(const scene::Scene& scene, double duration);
+
+// The judged outputs of a scene (see above), in report order.
+std::vector<coupling::OutputChannel> judged_outputs(const scene::Scene& scene);
+// "cargo_heave,wire_tension"
+std::string output_list(const std::vector<coupling::OutputChannel>& outputs);
+
+struct WorstError {
+  double error = 0.0;  // largest normalized RMS error; NaN or inf when a judged channel is
+  coupling::OutputChannel channel = coupling::OutputChannel::cargo_heave;
+};
+// The worst judged channel; a non-finite error wins (it is a failure, not a small number).
+WorstError worst_error(const coupling::RunErrors& errors, const std::vector<coupling::OutputChannel>& outputs);
+
+}  // namespace ffrf::study

@@ -1,0 +1,63 @@
+// The computation behind `ffrf modes`: assemble the beam on the free DOFs of a boundary
+// condition, solve K φ = ω² M φ for the lowest modes, classify them against the analytic
+// Euler–Bernoulli values, and the mesh-convergence study of the bending frequencies.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+#include "fem/boundary.hpp"
+#include "fem/mesh.hpp"
+#include "modal/eigen_solver.hpp"
+#include "modal/mode_kind.hpp"
+
+namespace ffrf::study {
+
+struct ModesResult {
+  fem::BeamMesh mesh;
+  fem::Boundary boundary;
+  modal::EigenSolverKind solver;
+  fem::DofMap dofs;
+  double shift;  // σ [rad²/s²]
+  modal::EigenPairs pairs;
+  std::vector<modal::ClassifiedMode> modes;
+  double assembly_seconds;
+  double solve_seconds;
+  std::vector<std::string> warnings;  // results to distrust, in words
+};
+
+// Shift for the shift-invert solvers: 0 when the boundary condition suppresses the rigid modes;
+// for free–free −EI/(ρA L⁴) (the ω² of "βL = 1"), which makes K − σM positive definite while the
+// rigid modes (ω² = 0) stay ~500 times nearer σ than the first elastic mode (βL = 4.73).
+double modes_shift(const fem::BeamMesh& mesh, fem::Boundary boundary);
+
+// Distance r [m] from the spin axis to the boom root on the beam axis, for `--spin` and
+// `--spin-range` (the centrifugal force N(x)/Ω² = ρA [r (L − x) + (L² − x²)/2]): hub.radius of a hub
+// scene, the same r the time-domain model uses for a hull crane (scene::centrifugal_hub_radius), 0
+// for a single beam. Everything downstream takes the hub radius as a parameter.
+double spin_hub_radius(const scene::Scene& scene);
+
+// Free DOFs of the mesh under the boundary condition.
+int free_dof_count(const fem::BeamMesh& mesh, fem::Boundary boundary);
+
+// The lowest `count` modes (1 <= count < free DOFs); throws modal::EigenSolverError on failure.
+ModesResult solve_modes(const fem::BeamMesh& mesh, fem::Boundary boundary, modal::EigenSolverKind solver, int count);
+
+// Relative error |f_FE − f_analytic| / f_analytic of the first four bending modes at one mesh.
+struct ConvergencePoint {
+  int elements;
+  int dof;
+  std::array<std::optional<double>, 4> bending_error;
+  double solve_seconds;
+};
+
+// N = 2, 4, ..., 128 with the given solver; `progress(N)` is called before each solve.
+std::vector<ConvergencePoint> frequency_convergence(const fem::BeamMesh& mesh, fem::Boundary boundary,
+                                                    modal::EigenSolverKind solver,
+                                                    const std::function<void(int)>& progress);
+
+}  // namespace ffrf::study

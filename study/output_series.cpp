@@ -1,0 +1,96 @@
+// The crane run's output table and its statistics (see output_series.hpp).
+#include "study/output_series.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "study/error_measure.hpp"
+
+namespace ffrf::study {
+namespace {
+
+using coupling::CraneOutputs;
+
+constexpr double degrees = 180.0 / std::numbers::pi;
+
+constexpr std::array series{
+    SeriesSpec{"crane_surge_m", "crane surge", "m", [](const CraneOutputs& o) { return o.hull.x(); }, true},
+    SeriesSpec{"crane_heave_m", "crane heave", "m", [](const CraneOutputs& o) { return o.hull.y(); }, true},
+    SeriesSpec{"crane_pitch_deg", "crane pitch", "deg", [](const CraneOutputs& o) { return o.hull.z() * degrees; }, true},
+    SeriesSpec{"cargo_surge_m", "cargo surge", "m", [](const CraneOutputs& o) { return o.cargo.x(); }, true},
+    SeriesSpec{"cargo_heave_m", "cargo heave", "m", [](const CraneOutputs& o) { return o.cargo.y(); }, true},
+    SeriesSpec{"cargo_pitch_deg", "cargo pitch", "deg", [](const CraneOutputs& o) { return o.cargo.z() * degrees; }, true},
+    SeriesSpec{"tip_axial_m", "boom tip axial deflection", "m", [](const CraneOutputs& o) { return o.tip_deflection.x(); }, false},
+    SeriesSpec{"tip_transverse_m", "boom tip transverse deflection", "m",
+               [](const CraneOutputs& o) { return o.tip_deflection.y(); }, false},
+    SeriesSpec{"wire_tension_N", "wire tension", "N", [](const CraneOutputs& o) { return o.wire_tension; }, false},
+    SeriesSpec{"joint_force_x_N", "joint force x at B", "N", [](const CraneOutputs& o) { return o.joint_reaction.x(); }, false},
+    SeriesSpec{"joint_force_y_N", "joint force y at B", "N", [](const CraneOutputs& o) { return o.joint_reaction.y(); }, false},
+    SeriesSpec{"joint_moment_Nm", "joint bending moment at B", "N m",
+               [](const CraneOutputs& o) { return o.joint_reaction.z(); }, false},
+    SeriesSpec{"constraint_residual_m", "constraint residual", "m",
+               [](const CraneOutputs& o) { return o.constraint_residual; }, false},
+    SeriesSpec{"kinetic_energy_J", "kinetic energy", "J", [](const CraneOutputs& o) { return o.kinetic_energy; }, false},
+    SeriesSpec{"gravity_energy_J", "gravity energy", "J", [](const CraneOutputs& o) { return o.gravity_energy; }, false},
+    SeriesSpec{"strain_energy_J", "strain energy", "J", [](const CraneOutputs& o) { return o.strain_energy; }, false},
+    SeriesSpec{"wire_energy_J", "wire energy", "J", [](const CraneOutputs& o) { return o.wire_energy; }, false},
+    SeriesSpec{"spring_energy_J", "spring energy", "J", [](const CraneOutputs& o) { return o.spring_energy; }, false},
+};
+
+}  // namespace
+
+std::span<const SeriesSpec> crane_series() { return series; }
+
+std::size_t series_index(std::string_view column) {
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    if (series[i].column == column) return i;
+  }
+  throw std::out_of_range("no output column " + std::string(column));
+}
+
+double series_value(const SeriesSpec& spec, const CraneOutputs& sample, const CraneOutputs& statics) {
+  return spec.about_static ? spec.value(sample) - spec.value(statics) : spec.value(sample);
+}
+
+double series_reference(const SeriesSpec& spec, const CraneOutputs& statics) {
+  return spec.about_static ? 0.0 : spec.value(statics);
+}
+
+StatsWindow stats_window(const scene::Scene& scene, const std::vector<double>& time) {
+  StatsWindow window;
+  if (!scene.wave || time.empty()) return window;
+  const auto first = std::upper_bound(time.begin(), time.end(), ramp_end(scene));
+  if (first == time.end()) return window;  // the run ends before the ramp does
+  window.first = static_cast<std::size_t>(first - time.begin());
+  window.start_s = *first;
+  window.after_ramp = true;
+  return window;
+}
+
+std::vector<SeriesStats> series_stats(const std::vector<CraneOutputs>& samples, const CraneOutputs& statics,
+                                      const StatsWindow& window) {
+  std::vector<SeriesStats> stats;
+  for (const SeriesSpec& spec : series) {
+    SeriesStats s;
+    s.static_value = series_reference(spec, statics);
+    s.min = INFINITY;
+    s.max = -INFINITY;
+    double sum_squares = 0.0;
+    for (std::size_t i = window.first; i < samples.size(); ++i) {
+      const double v = series_value(spec, samples[i], statics);
+      s.min = std::min(s.min, v);
+      s.max = std::max(s.max, v);
+      sum_squares += (v - s.static_value) * (v - s.static_value);
+    }
+    const std::size_t count = samples.size() - std::min(window.first, samples.size());
+    s.rms = count > 0 ? std::sqrt(sum_squares / static_cast<double>(count)) : NAN;
+    stats.push_back(s);
+  }
+  return stats;
+}
+
+}  // namespace ffrf::study

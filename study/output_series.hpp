@@ -1,0 +1,52 @@
+// The time-series outputs of a crane run, declared once: CSV column name (unit in the name),
+// chart title, how a value is taken from coupling::CraneOutputs and whether the column is the
+// displacement from static equilibrium. The CSV, the JSON statistics, the charts and the reports
+// all iterate this table, so an output added here appears everywhere.
+#pragma once
+
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "scene/scene.hpp"
+#include "coupling/crane_equations.hpp"
+
+namespace ffrf::study {
+
+struct SeriesSpec {
+  std::string_view column;  // CSV column, unit in the name
+  std::string_view title;   // human name
+  std::string_view unit;    // for tables and axis labels
+  double (*value)(const coupling::CraneOutputs&);
+  bool about_static;  // the CSV holds value − static value (body motions)
+};
+
+// Every column after time_s, in CSV order.
+std::span<const SeriesSpec> crane_series();
+// Index of a column in crane_series(); throws std::out_of_range for an unknown name.
+std::size_t series_index(std::string_view column);
+
+// The CSV value of one output at one sample.
+double series_value(const SeriesSpec& spec, const coupling::CraneOutputs& sample, const coupling::CraneOutputs& statics);
+// The value the statistics measure RMS about: 0 for displacements from static, else the static value.
+double series_reference(const SeriesSpec& spec, const coupling::CraneOutputs& statics);
+
+// The samples the statistics use: t > ramp end when the scene has a wave (all samples when the
+// run ends before the ramp does, or in calm water).
+struct StatsWindow {
+  std::size_t first = 0;     // first sample index in the window
+  double start_s = 0.0;      // its time
+  bool after_ramp = false;   // true when the window starts after a wave ramp
+};
+StatsWindow stats_window(const scene::Scene& scene, const std::vector<double>& time);
+
+struct SeriesStats {
+  double static_value = 0.0;  // the reference (0 for displacements from static)
+  double min = 0.0, max = 0.0;
+  double rms = 0.0;           // about static_value
+};
+// Statistics of every series over the window.
+std::vector<SeriesStats> series_stats(const std::vector<coupling::CraneOutputs>& samples,
+                                      const coupling::CraneOutputs& statics, const StatsWindow& window);
+
+}  // namespace ffrf::study

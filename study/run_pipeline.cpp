@@ -1,0 +1,160 @@
+// The one run pipeline and the integrator settings of a scene (see run_pipeline.hpp).
+#include "study/run_pipeline.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "coupling/planar.hpp"
+#include "fem/analytic_beam.hpp"
+
+namespace ffrf::study {
+
+std::string_view to_string(Setting setting) {
+  switch (setting) {
+    case Setting::relative_tolerance: return "relative tolerance";
+    case Setting::absolute_tolerance: return "absolute tolerance";
+    case Setting::duration: return "duration";
+    case Setting::fixed_step: return "fixed step";
+    case Setting::max_order: return "largest BDF order";
+    case Setting::reference_elements: return "reference elements";
+    case Setting::reference_tolerance: return "reference tolerance";
+    case Setting::reference_bound: return "reference convergence bound";
+    case Setting::reference_levels: return "reference levels";
+    case Setting::tolerance: return "error tolerance";
+    case Setting::jobs: return "worker threads";
+  }
+  return "?";
+}
+
+SettingError::SettingError(Setting setting, std::string value, std::string problem)
+    : std::invalid_argument(fmt::format("{} {}: {}", to_string(setting), value, problem)),
+      setting_(setting),
+      value_(std::move(value)),
+      problem_(std::move(problem)) {}
+
+coupling::MonitorLimits monitor_limits(const scene::Scene& scene) {
+  coupling::MonitorLimits limits;
+  const fem::BeamMesh& mesh = scene.boom.mesh;
+  limits.boom_length = mesh.length;
+  limits.deflection_limit = scene.simulation.deflection_limit;
+  limits.constraint_drift_limit = scene.simulation.constraint_drift_limit;
+  limits.buckling_load = *fem::euler_buckling_load(mesh, fem::Boundary::clamped_free);  // the root is clamped
+  limits.wire_unstretched_length = scene.wire ? scene.wire->unstretched_length : 0.0;
+  return limits;
+}
+
+coupling::IntegratorSettings integrator_settings(const scene::Scene& scene, const DynamicsRequest& request) {
+  for (const auto& [setting, value] : {std::pair{Setting::relative_tolerance, request.relative_tolerance},
+                                       std::pair{Setting::absolute_tolerance, request.absolute_tolerance}}) {
+    if (!(value > 0.0 && value < 1.0)) {
+      throw SettingError(setting, fmt::format("{}", value), "not a valid tolerance (valid range (0, 1))");
+    }
+  }
+  coupling::IntegratorSettings settings;
+  settings.kind = request.integrator;
+  settings.relative_tolerance = request.relative_tolerance;
+  settings.absolute_tolerance = request.absolute_tolerance;
+  settings.output_interval = scene.simulation.output_interval;
+  settings.duration = request.duration.value_or(scene.simulation.duration);
+  if (!(settings.duration >= settings.output_interval) || !std::isfinite(settings.duration)) {
+    throw SettingError(Setting::duration, fmt::format("{}", settings.duration),
+                       fmt::format("shorter than one output interval of the scene ({} s) (valid range [{}, inf) s)",
+                                   settings.output_interval, settings.output_interval));
+  }
+  if (!(request.fixed_step >= 0.0 && request.fixed_step <= settings.output_interval)) {
+    throw SettingError(Setting::fixed_step, fmt::format("{}", request.fixed_step),
+                       fmt::format("not a valid fixed step (valid range [0, {}] s, the output interval)",
+                                   settings.output_interval));
+  }
+  if (settings.kind == coupling::Integrator::generalized_alpha && request.fixed_step == 0.0) {
+    throw SettingError(Setting::fixed_step, "0",
+                       fmt::format("generalized-alpha is a fixed-step method: give a fixed step in (0, {}] s, e.g. 0.01",
+                                   settings.output_interval));
+  }
+  settings.fixed_step = request.fixed_step;
+  if (request.max_order != 0 && (request.max_order < 1 || request.max_order > 5)) {
+    throw SettingError(Setting::max_order, fmt::format("{}", request.max_order), "not a BDF order (valid range [1, 5])");
+  }
+  settings.max_order = request.max_order != 0 ? request.max_order : (scene.boom.damping_ratio > 0.0 ? 5 : 2);
+  settings.monitor = monitor_limits(scene);
+  return settings;
+}
+
+long ModelRun::slack_events() const {
+  return std::count_if(result.wire_events.begin(), result.wire_events.end(),
+                       [](const coupling::WireEvent& event) { return event.slack; });
+}
+
+PreparedRun prepare_run(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes) {
+  PreparedRun prepared;
+  prepared.choice = choice;
+  prepared.equations = scene::build_crane(scene, choice, modes);
+  coupling::CraneEquations& equations = *prepared.equations;
+  prepared.statics = coupling::solve_static_equilibrium(equations, equations.initial_guess());
+  prepared.from_static_equilibrium = scene.simulation.initial_state == scene::InitialState::static_equilibrium;
+  prepared.initial_state = prepared.from_static_equilibrium ? prepared.statics.z : equations.initial_guess();
+  if (scene.simulation.cargo_lift > 0.0 && equations.cargo_offset() >= 0) {
+    prepared.initial_state(equations.cargo_offset() + 1) += scene.simulation.cargo_lift;  // raised, released at rest
+  }
+  return prepared;
+}
+
+namespace {
+
+// The statistics window, per-output statistics, wire amplification, constraint residual and
+// real-time factor of a finished run.
+void summarize(const scene::Scene& scene, double duration, ModelRun& run) {
+  run.window = stats_window(scene, run.result.time);
+  run.stats = series_stats(run.result.samples, run.statics.outputs, run.window);
+  double max_tension = 0.0;
+  run.max_constraint_residual = 0.0;
+  for (const coupling::CraneOutputs& sample : run.result.samples) {
+    max_tension = std::max(max_tension, sample.wire_tension);
+    run.max_constraint_residual = std::max(run.max_constraint_residual, std::abs(sample.constraint_residual));
+  }
+  run.amplification = run.statics.outputs.wire_tension > 0.0 ? max_tension / run.statics.outputs.wire_tension
+                                                               : std::numeric_limits<double>::quiet_NaN();
+  run.real_time_factor = duration / run.result.stats.wall_seconds;
+}
+
+ModelRun prepared_model(const PreparedRun& prepared) {
+  ModelRun run;
+  run.choice = prepared.choice;
+  run.elastic_dof = prepared.equations->elastic_size();
+  run.state_size = prepared.state_size();
+  run.from_static_equilibrium = prepared.from_static_equilibrium;
+  run.statics = prepared.statics;
+  return run;
+}
+
+}  // namespace
+
+ModelRun integrate_run(const scene::Scene& scene, PreparedRun& prepared, const coupling::IntegratorSettings& settings) {
+  ModelRun run = prepared_model(prepared);
+  coupling::IntegratorSettings run_settings = settings;
+  run_settings.monitor.static_tension = prepared.statics.outputs.wire_tension;
+  run.result = coupling::integrate(*prepared.equations, prepared.initial_state, run_settings);
+  summarize(scene, settings.duration, run);
+  return run;
+}
+
+ModelRun run_model(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::IntegratorSettings& settings,
+                   modal::ModeCache* modes, const std::function<void(const ModelRun&)>& on_prepared) {
+  PreparedRun prepared = prepare_run(scene, choice, modes);
+  if (on_prepared) on_prepared(prepared_model(prepared));
+  return integrate_run(scene, prepared, settings);
+}
+
+double draft_at_mid_length(const scene::Scene& scene, const coupling::CraneOutputs& outputs) {
+  if (!scene.hull) return std::numeric_limits<double>::quiet_NaN();
+  const scene::Hull& hull = *scene.hull;
+  const Eigen::Vector2d keel_mid =
+      outputs.hull.head<2>() +
+      coupling::rotation(outputs.hull.z()) * Eigen::Vector2d(hull.g1_aft_of_mid_length, -hull.g1_above_keel);
+  return -keel_mid.y();
+}
+
+}  // namespace ffrf::study

@@ -1,0 +1,117 @@
+// The one run pipeline (issue 12.2). prepare_run() builds the crane of a boom choice, solves its
+// static equilibrium and brings it to the scene's initial state: the static equilibrium (or the
+// as-built pose, simulation.initial_state), with the cargo raised by simulation.cargo_lift and
+// released at rest; a hub's prescribed motion is part of the model. integrate_run() integrates a
+// prepared model and gathers its statistics; run_model() is the two in a row. Every study — run,
+// the converged reference, compare, sweep, recommend, the stability experiments — and the benches
+// go through these functions: nothing else brings a model to its initial state.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "coupling/simulation.hpp"
+#include "coupling/static_equilibrium.hpp"
+#include "modal/mode_cache.hpp"
+#include "scene/crane_builder.hpp"
+#include "scene/scene.hpp"
+#include "study/output_series.hpp"
+
+namespace ffrf::study {
+
+// --- integrator settings: one set of defaults for every study ---
+
+// A setting a study was given, in neutral words (the command line maps each to its option).
+enum class Setting {
+  relative_tolerance, absolute_tolerance, duration, fixed_step, max_order,
+  reference_elements, reference_tolerance, reference_bound, reference_levels, tolerance, jobs,
+};
+std::string_view to_string(Setting setting);  // "relative tolerance", ...
+
+// A setting out of its valid range: which, the value as given, what is wrong (with the range).
+class SettingError : public std::invalid_argument {
+ public:
+  SettingError(Setting setting, std::string value, std::string problem);
+  Setting setting() const { return setting_; }
+  const std::string& value() const { return value_; }
+  const std::string& problem() const { return problem_; }
+
+ private:
+  Setting setting_;
+  std::string value_, problem_;
+};
+
+// What a run is asked for; the rest of coupling::IntegratorSettings follows from the scene.
+struct DynamicsRequest {
+  coupling::Integrator integrator = coupling::Integrator::cvode;
+  double relative_tolerance = 1e-6;
+  double absolute_tolerance = 1e-6;
+  std::optional<double> duration;  // default: simulation.duration of the scene
+  double fixed_step = 0.0;         // generalized-α: required; arkode: 0 = adaptive [s]
+  int max_order = 0;               // largest BDF order of cvode/ida; 0: from the physics
+};
+
+// The settings for a scene: its output interval, the duration, the failure detectors' bounds of
+// the scene (monitor_limits), and the BDF order limit from the physics when not given: 2 for an
+// undamped boom (BDF 3–5 are held to tiny steps by its undamped stiff modes on the imaginary
+// axis; 2 is A-stable), 5 otherwise. Throws SettingError for a value out of range.
+coupling::IntegratorSettings integrator_settings(const scene::Scene& scene, const DynamicsRequest& request);
+
+// The failure detectors' bounds for a scene (deflection and drift limits, the boom's Euler load,
+// the wire); integrate_run() adds the static wire tension.
+coupling::MonitorLimits monitor_limits(const scene::Scene& scene);
+
+// --- the pipeline ---
+
+// A model in its initial state, ready to integrate (possibly more than once: benches).
+struct PreparedRun {
+  scene::BoomChoice choice;
+  std::unique_ptr<coupling::CraneEquations> equations;
+  coupling::StaticEquilibrium statics;
+  Eigen::VectorXd initial_state;        // minimal coordinates at t = 0 (at rest)
+  bool from_static_equilibrium = true;  // false: simulation.initial_state = as-built
+  int state_size() const { return static_cast<int>(2 * initial_state.size()); }  // ODE state (z, ż)
+};
+
+// One model's complete run.
+struct ModelRun {
+  scene::BoomChoice choice;
+  int elastic_dof = 0;
+  int state_size = 0;                   // 2 × minimal coordinates
+  bool from_static_equilibrium = true;
+  coupling::StaticEquilibrium statics;
+  coupling::RunResult result;
+  StatsWindow window;
+  std::vector<SeriesStats> stats;  // per crane_series() entry
+  double amplification = 0.0;      // max wire tension over the run / static tension
+  double max_constraint_residual = 0.0;
+  double real_time_factor = 0.0;   // simulated seconds per wall second (integration)
+
+  const coupling::CraneOutputs& static_outputs() const { return statics.outputs; }
+  long slack_events() const;       // the wire went slack
+  double work() const { return static_cast<double>(result.stats.steps) * state_size; }  // steps × state size
+};
+
+// Builds the crane (modes from `modes`, or solved here), solves its static equilibrium, applies
+// the scene's initial state. Throws scene::SceneError (the scene cannot make this crane) and
+// coupling::SolverFailure (KINSOL).
+PreparedRun prepare_run(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes = nullptr);
+
+// Integrates a prepared model with `settings` (the static wire tension added to its monitor) and
+// gathers the statistics. Throws coupling::SolverFailure.
+ModelRun integrate_run(const scene::Scene& scene, PreparedRun& prepared, const coupling::IntegratorSettings& settings);
+
+// prepare_run then integrate_run. `on_prepared` sees the run once its static equilibrium is known,
+// before the integration (the command line prints the static report there).
+ModelRun run_model(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::IntegratorSettings& settings,
+                   modal::ModeCache* modes = nullptr, const std::function<void(const ModelRun&)>& on_prepared = {});
+
+// Hull draft at mid-length [m] (keel depth below still water) of a static or sampled pose; NaN
+// without a hull (hub scenes).
+double draft_at_mid_length(const scene::Scene& scene, const coupling::CraneOutputs& outputs);
+
+}  // namespace ffrf::study

@@ -1,0 +1,113 @@
+// Running the sweep's configurations against one reference, in parallel (see sweep.hpp).
+#include "study/sweep.hpp"
+
+#include "study/recommend_reasoning.hpp"
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <cmath>
+#include <mutex>
+#include <thread>
+
+namespace ffrf::study {
+namespace {
+
+// Generalized-α rounds its step down to divide the output interval (theory §8.3).
+double dividing_step(double requested, double output_interval) {
+  return output_interval / std::ceil(output_interval / requested - 1e-9);
+}
+
+}  // namespace
+
+std::string_view to_string(RunStatus status) {
+  switch (status) {
+    case RunStatus::ok: return "ok";
+    case RunStatus::failed: return "failed";
+    case RunStatus::skipped: return "skipped";
+  }
+  return "?";
+}
+
+SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config) {
+  SweepResult r;
+  r.config = config;
+  const scene::Scene& scene = *setup.scene;
+  const double output_interval = scene.simulation.output_interval;
+  try {
+    DynamicsRequest request;
+    request.integrator = config.integrator;
+    request.relative_tolerance = request.absolute_tolerance = config.rtol > 0.0 ? config.rtol : 1e-6;
+    request.duration = setup.duration;
+    if (config.step > 0.0) r.step = request.fixed_step = dividing_step(config.step, output_interval);
+    coupling::IntegratorSettings settings = integrator_settings(scene, request);
+    PreparedRun prepared = prepare_run(scene, config.choice, setup.modes);
+    if (config.integrator == coupling::Integrator::arkode) {
+      r.stable_step = coupling::explicit_stable_step(*prepared.equations, prepared.initial_state);
+      const double h = config.stability_factor > 0.0 ? config.stability_factor * r.stable_step : r.stable_step;
+      if (config.stability_factor > 0.0) r.step = settings.fixed_step = h;
+      const double needed = setup.duration / h;
+      if (config.stability_factor <= 1.0 && needed > static_cast<double>(setup.max_explicit_steps)) {
+        r.status = RunStatus::skipped;
+        r.reason = fmt::format("not run: the explicit stability limit {:.3g} s needs about {:.2g} steps for {:g} s, more "
+                               "than the sweep's budget of {:.2g}",
+                               r.stable_step, needed, setup.duration, static_cast<double>(setup.max_explicit_steps));
+        return r;
+      }
+    }
+    const ModelRun run = integrate_run(scene, prepared, settings);
+    r.errors = coupling::compare_runs(run.result, setup.reference->run.result, setup.window_start);
+    r.worst = worst_error(r.errors, setup.judged);
+    r.stats = run.result.stats;
+  } catch (const coupling::SolverFailure& failure) {
+    r.status = RunStatus::failed;
+    r.reason = fmt::format("{}: {} (t = {:g} s)", failure.solver(), failure.cause(), failure.time());
+  } catch (const std::exception& error) {
+    r.status = RunStatus::failed;
+    r.reason = error.what();
+  }
+  return r;
+}
+
+SweepStudy sweep(const scene::Scene& scene, const SweepRequest& request,
+                 const std::function<void(const ConvergedReference&)>& on_reference,
+                 const std::function<void(const SweepResult&, std::size_t, std::size_t)>& progress) {
+  if (request.jobs < 1) {
+    throw SettingError(Setting::jobs, fmt::format("{}", request.jobs), "not a thread count (valid range [1, inf))");
+  }
+  modal::ModeCache modes;
+  SweepStudy study;
+  study.stiffening_from_physics = !request.stiffening;
+  study.stiffening = request.stiffening.value_or(physics_stiffening(scene, request.tolerance));
+  scene::Scene modelled = scene;
+  modelled.boom.stiffening = study.stiffening;
+  study.reference = converged_reference(modelled, request.reference, request.duration, &modes);
+  if (on_reference) on_reference(study.reference);
+  study.window_start = error_window(modelled, request.duration);
+  study.judged = judged_outputs(modelled);
+  std::vector<SweepConfig> configs;
+  for (const SweepConfig& config : sweep_grid(request.grid)) {
+    if (request.shard.contains(config)) configs.push_back(config);
+  }
+  const SweepSetup setup{&modelled, &study.reference, study.window_start, study.judged, request.duration,
+                         request.max_explicit_steps, &modes};
+  study.results.resize(configs.size());
+  std::atomic<std::size_t> next{0};
+  std::size_t done = 0;
+  std::mutex progress_mutex;
+  auto worker = [&] {
+    for (std::size_t i = next++; i < configs.size(); i = next++) {
+      study.results[i] = run_configuration(setup, configs[i]);
+      const std::lock_guard lock(progress_mutex);
+      ++done;
+      if (progress) progress(study.results[i], done, configs.size());
+    }
+  };
+  std::vector<std::thread> threads;
+  const std::size_t count = std::min<std::size_t>(static_cast<std::size_t>(request.jobs), configs.size());
+  for (std::size_t t = 0; t < count; ++t) threads.emplace_back(worker);
+  for (std::thread& thread : threads) thread.join();
+  return study;
+}
+
+}  // namespace ffrf::study

@@ -1,0 +1,80 @@
+// The accuracy–speed sweep (`ffrf sweep`): the converged reference, then every configuration of a
+// grid (study/sweep_grid.hpp), or one shard of it, in parallel. Each configuration is one run of
+// the one pipeline (study/run_pipeline.hpp) measured against the reference over the error window;
+// a solver failure is a result with status `failed` and the reason, never an exception. The
+// workers share one mode cache (each mesh's eigenproblem is solved once) and ARPACK guards itself
+// (modal/), so nothing here is serialized but the cache's own look-ups.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "coupling/error_metrics.hpp"
+#include "scene/scene.hpp"
+#include "study/error_measure.hpp"
+#include "study/reference.hpp"
+#include "study/sweep_grid.hpp"
+
+namespace ffrf::study {
+
+enum class RunStatus { ok, failed, skipped };
+std::string_view to_string(RunStatus status);
+
+struct SweepResult {
+  SweepConfig config;
+  RunStatus status = RunStatus::ok;
+  std::string reason;           // failed/skipped: why
+  double step = 0.0;            // fixed step actually taken [s] (0: adaptive)
+  double stable_step = 0.0;     // ARKODE rows: the explicit stability limit [s] (0: not computed)
+  coupling::RunErrors errors;   // ok rows
+  WorstError worst;             // ok rows: over the judged outputs
+  coupling::SolverStats stats;  // ok rows
+};
+
+struct SweepRequest {
+  SweepGrid grid = SweepGrid::quick;
+  Shard shard;
+  double duration = 0.0;                // simulated time of every run [s]
+  ReferenceOptions reference;
+  int jobs = 1;                         // worker threads
+  // Geometric stiffening of every run and the reference; empty: physics_stiffening at `tolerance`
+  // (as compare and recommend).
+  std::optional<scene::Stiffening> stiffening;
+  double tolerance = 0.01;
+  long max_explicit_steps = 2'000'000;  // ARKODE runs needing more steps are skipped (with the reason)
+};
+
+struct SweepStudy {
+  scene::Stiffening stiffening = scene::Stiffening::none;
+  bool stiffening_from_physics = false;
+  ConvergedReference reference;
+  double window_start = 0.0;
+  std::vector<coupling::OutputChannel> judged;
+  std::vector<SweepResult> results;  // in grid order (the shard's configurations only)
+};
+
+// What a configuration runs against (shared, read-only, by the workers).
+struct SweepSetup {
+  const scene::Scene* scene = nullptr;
+  const ConvergedReference* reference = nullptr;
+  double window_start = 0.0;
+  std::vector<coupling::OutputChannel> judged;
+  double duration = 0.0;
+  long max_explicit_steps = 2'000'000;
+  modal::ModeCache* modes = nullptr;
+};
+
+// One configuration (thread-safe).
+SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config);
+
+// The reference, then the shard's configurations over request.jobs threads. `on_reference` is
+// called once the reference is known; `progress` (serialized) after each configuration with the
+// number done and the total. Throws scene::SceneError, coupling::SolverFailure (the reference),
+// SettingError.
+SweepStudy sweep(const scene::Scene& scene, const SweepRequest& request,
+                 const std::function<void(const ConvergedReference&)>& on_reference = {},
+                 const std::function<void(const SweepResult&, std::size_t done, std::size_t total)>& progress = {});
+
+}  // namespace ffrf::study

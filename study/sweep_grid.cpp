@@ -1,0 +1,108 @@
+// The sweep grid (see sweep_grid.hpp).
+#include "study/sweep_grid.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+
+namespace ffrf::study {
+namespace {
+
+using scene::BoomChoice;
+using scene::BoomKind;
+using coupling::Integrator;
+
+struct GridSpec {
+  std::vector<int> nodal_elements;
+  std::vector<int> modal_modes;      // on the N = 16 mesh, each with and without static modes
+  std::vector<double> tolerances;    // for the adaptive integrators
+  std::vector<Integrator> adaptive;  // cvode, ida, arkode (adaptive)
+  std::vector<double> alpha_steps;   // generalized-α fixed steps [s]
+  std::vector<double> erk_factors;   // ARKODE fixed step as a multiple of the stability limit
+};
+
+GridSpec spec(SweepGrid grid) {
+  switch (grid) {
+    case SweepGrid::quick:
+      return {{1, 4, 16}, {1, 2, 4}, {1e-6}, {Integrator::cvode}, {0.01}, {}};
+    case SweepGrid::medium:
+      return {{1, 2, 4, 8, 16, 32}, {1, 2, 3, 4, 6, 8, 12}, {1e-4, 1e-6, 1e-8}, {Integrator::cvode},
+              {0.05, 0.01}, {0.5, 2.0}};
+    case SweepGrid::full:
+      return {{1, 2, 4, 8, 16, 32, 64}, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}, {1e-4, 1e-6, 1e-8},
+              {Integrator::cvode, Integrator::ida, Integrator::arkode}, {0.05, 0.01, 0.0025}, {0.5, 2.0}};
+  }
+  return {};
+}
+
+std::vector<BoomChoice> models(const GridSpec& s) {
+  std::vector<BoomChoice> list{{BoomKind::rigid, 1}};
+  for (int n : s.nodal_elements) list.push_back({BoomKind::nodal, n});
+  for (const bool static_modes : {false, true}) {
+    for (int k : s.modal_modes) list.push_back({BoomKind::modal, 16, k, static_modes});
+  }
+  return list;
+}
+
+}  // namespace
+
+std::string_view to_string(SweepGrid grid) {
+  switch (grid) {
+    case SweepGrid::quick: return "quick";
+    case SweepGrid::medium: return "medium";
+    case SweepGrid::full: return "full";
+  }
+  return "?";
+}
+
+std::string grid_description(SweepGrid grid) {
+  const GridSpec s = spec(grid);
+  std::string adaptive;
+  for (Integrator i : s.adaptive) adaptive += std::string(coupling::to_string(i)) + ", ";
+  std::string text = fmt::format(
+      "grid `{}`: models rigid, nodal N ∈ {{{}}}, modal k ∈ {{{}}} with and without static modes (N = 16 mesh); "
+      "integrators {}at rtol ∈ {{{}}}; generalized-alpha at h ∈ {{{}}} s",
+      to_string(grid), fmt::join(s.nodal_elements, ", "), fmt::join(s.modal_modes, ", "), adaptive,
+      fmt::join(s.tolerances, ", "), fmt::join(s.alpha_steps, ", "));
+  text += s.erk_factors.empty()
+              ? "; ARKODE explicit RK at a fixed step 2× its stability limit on the rigid crane only (a run that must fail)"
+              : fmt::format("; ARKODE explicit RK at fixed steps {{{}}}× its stability limit", fmt::join(s.erk_factors, ", "));
+  return text;
+}
+
+std::vector<SweepConfig> sweep_grid(SweepGrid grid) {
+  const GridSpec s = spec(grid);
+  std::vector<SweepConfig> configs;
+  auto add = [&](const BoomChoice& choice, Integrator integrator, double rtol, double step, double factor) {
+    configs.push_back({static_cast<int>(configs.size()), choice, integrator, rtol, step, factor});
+  };
+  const std::vector<BoomChoice> list = models(s);
+  for (const BoomChoice& choice : list) {
+    for (Integrator integrator : s.adaptive) {
+      for (double rtol : s.tolerances) add(choice, integrator, rtol, 0.0, 0.0);
+    }
+    for (double h : s.alpha_steps) add(choice, Integrator::generalized_alpha, 1e-6, h, 0.0);
+    for (double factor : s.erk_factors) add(choice, Integrator::arkode, 0.0, 0.0, factor);
+  }
+  // The quick grid's one configuration that must fail: explicit RK past its stability limit.
+  if (s.erk_factors.empty()) add(list.front(), Integrator::arkode, 0.0, 0.0, 2.0);
+  return configs;
+}
+
+std::string model_family(const BoomChoice& choice) {
+  switch (choice.kind) {
+    case BoomKind::rigid: return "rigid";
+    case BoomKind::nodal: return "nodal";
+    case BoomKind::modal: return choice.static_modes ? "modal+static" : "modal";
+  }
+  return "?";
+}
+
+std::string integrator_label(const SweepConfig& c) {
+  const std::string name(coupling::to_string(c.integrator));
+  if (c.stability_factor > 0.0) return fmt::format("{} h {:g}x limit", name, c.stability_factor);
+  if (c.step > 0.0) return fmt::format("{} h {:g} s", name, c.step);
+  return fmt::format("{} rtol {:g}", name, c.rtol);
+}
+
+}  // namespace ffrf::study

@@ -1,0 +1,45 @@
+// The configurations of `ffrf sweep`: boom model × integrator × tolerance or step, enumerated in a
+// fixed order so that every configuration has a stable id (its index) and `--shard i/n` selects a
+// deterministic slice (id % n == i).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene/crane_builder.hpp"
+#include "coupling/simulation.hpp"
+
+namespace ffrf::study {
+
+enum class SweepGrid { quick, medium, full };
+std::string_view to_string(SweepGrid grid);
+// One paragraph saying what the grid contains.
+std::string grid_description(SweepGrid grid);
+
+struct SweepConfig {
+  int id = 0;
+  scene::BoomChoice choice;
+  coupling::Integrator integrator = coupling::Integrator::cvode;
+  double rtol = 0.0;               // 0: none (fixed-step explicit RK)
+  double step = 0.0;               // fixed step [s] (generalized-α); 0: adaptive or by stability_factor
+  double stability_factor = 0.0;   // > 0: ARKODE fixed step = factor × the explicit stability limit
+};
+
+// Every configuration of the grid, ids 0, 1, 2, ... in order.
+std::vector<SweepConfig> sweep_grid(SweepGrid grid);
+
+// "rigid", "nodal", "modal", "modal+static": the marker style of the charts.
+std::string model_family(const scene::BoomChoice& choice);
+// "cvode rtol 1e-06", "generalized-alpha h 0.01 s", "arkode h 2x limit": for tables.
+std::string integrator_label(const SweepConfig& config);
+
+// A deterministic slice of the grid: the configurations with id % count == index.
+struct Shard {
+  int index = 0;
+  int count = 1;
+  bool contains(const SweepConfig& config) const { return config.id % count == index; }
+};
+
+}  // namespace ffrf::study

@@ -1,0 +1,97 @@
+// One physics across commands (issue 11.5): compare, sweep and recommend on the same scene use the
+// same reference (same stiffening — what recommend's reasoning decides —, same levels, the same
+// samples), the same error window, the same judged outputs, and give the same error for the same
+// model. The reference scene at 25 s (the window is the 5 s after the 20 s wave ramp), two levels.
+#include <gtest/gtest.h>
+
+#include "study/compare.hpp"
+#include "study/recommend.hpp"
+#include "study/sweep.hpp"
+#include "study_test_support.hpp"
+
+namespace {
+
+using namespace ffrf;
+
+bool same_model(const scene::BoomChoice& a, const scene::BoomChoice& b, scene::Stiffening modelled) {
+  return a.kind == b.kind && (a.kind == scene::BoomKind::rigid || a.elements == b.elements) &&
+         (a.kind != scene::BoomKind::modal || (a.modes == b.modes && a.static_modes == b.static_modes)) &&
+         a.stiffening.value_or(modelled) == b.stiffening.value_or(modelled);
+}
+
+void expect_same_reference(const study::ConvergedReference& a, const study::ConvergedReference& b, const char* what) {
+  SCOPED_TRACE(what);
+  EXPECT_EQ(a.choice.label(), b.choice.label());
+  EXPECT_EQ(a.settings.relative_tolerance, b.settings.relative_tolerance);
+  ASSERT_EQ(a.levels.size(), b.levels.size());
+  for (std::size_t i = 0; i < a.levels.size(); ++i) EXPECT_EQ(a.levels[i].change, b.levels[i].change) << "level " << i;
+  EXPECT_EQ(a.window_start, b.window_start);
+  ASSERT_EQ(a.run.result.samples.size(), b.run.result.samples.size());
+  for (std::size_t i = 0; i < a.run.result.samples.size(); ++i) {
+    EXPECT_EQ(a.run.result.samples[i].cargo.y(), b.run.result.samples[i].cargo.y()) << i;
+    EXPECT_EQ(a.run.result.samples[i].wire_tension, b.run.result.samples[i].wire_tension) << i;
+  }
+}
+
+TEST(Agreement, CompareSweepAndRecommendMeasureTheSameModelAlike) {
+  const scene::Scene scene = test::scene_file("paper_floating_crane.toml");
+  const double duration = 25.0;
+  study::ReferenceOptions reference;
+  reference.max_levels = 2;
+
+  study::RecommendRequest recommend_request;
+  recommend_request.duration = duration;
+  recommend_request.reference = reference;
+  const study::Recommendation rec = study::recommend(scene, recommend_request);
+  ASSERT_TRUE(rec.chosen);
+  const study::Candidate& chosen = rec.candidates[*rec.chosen];
+  const scene::Stiffening stiffening = rec.reference_scene.boom.stiffening;
+  EXPECT_EQ(stiffening, scene::Stiffening::static_load) << "5 % of the Euler load: the physics needs static stiffening";
+
+  // Compare at the candidates' tolerance and integrator.
+  study::DynamicsRequest dynamics;
+  dynamics.integrator = chosen.integrator;
+  dynamics.relative_tolerance = dynamics.absolute_tolerance = rec.reasoning.relative_tolerance;
+  dynamics.duration = duration;
+  study::CompareRequest compare_request;
+  compare_request.settings = study::integrator_settings(scene, dynamics);
+  compare_request.reference = reference;
+  const study::Comparison comparison = study::compare(scene, compare_request);
+
+  // The sweep's reference, and the chosen model run as a sweep configuration against it.
+  study::SweepRequest sweep_request;
+  sweep_request.duration = duration;
+  sweep_request.reference = reference;
+  sweep_request.shard = {0, 1'000'000};  // configuration 0 only: the reference is what is compared
+  const study::SweepStudy sweep = study::sweep(scene, sweep_request);
+  scene::Scene modelled = scene;
+  modelled.boom.stiffening = sweep.stiffening;
+  const study::SweepSetup setup{&modelled, &sweep.reference, sweep.window_start, sweep.judged, duration, 2'000'000, nullptr};
+  const study::SweepResult configured = study::run_configuration(
+      setup, {0, chosen.choice, chosen.integrator, rec.reasoning.relative_tolerance, 0.0, 0.0});
+  ASSERT_EQ(configured.status, study::RunStatus::ok) << configured.reason;
+
+  // Same reference physics, window and judged outputs.
+  EXPECT_EQ(comparison.stiffening, stiffening);
+  EXPECT_EQ(sweep.stiffening, stiffening);
+  expect_same_reference(comparison.reference, rec.reference, "compare vs recommend");
+  expect_same_reference(sweep.reference, rec.reference, "sweep vs recommend");
+  EXPECT_EQ(comparison.window_start, rec.reference.window_start);
+  EXPECT_EQ(sweep.window_start, rec.reference.window_start);
+  EXPECT_EQ(comparison.judged, rec.outputs);
+  EXPECT_EQ(sweep.judged, rec.outputs);
+  EXPECT_GT(rec.reference.window_start, 0.0) << "errors after the wave ramp";
+
+  // The same error for the same model.
+  EXPECT_EQ(configured.worst.error, chosen.error) << chosen.label();
+  EXPECT_EQ(std::string(coupling::channel_name(configured.worst.channel)), chosen.worst_output);
+  bool found = false;
+  for (std::size_t m = 0; m < comparison.runs.size(); ++m) {
+    if (!same_model(comparison.runs[m].choice, chosen.choice, stiffening)) continue;
+    found = true;
+    EXPECT_EQ(comparison.worst[m].error, chosen.error) << chosen.label();
+  }
+  EXPECT_TRUE(found) << "compare's models include the recommended " << chosen.label();
+}
+
+}  // namespace

@@ -1,0 +1,138 @@
+// The recommend study (study::recommend) called directly (moved from the CLI tests). Independent
+// checks: the chosen model's error and the next cheaper one's against the tolerance (verification
+// runs against the converged reference); the reasoning's boom frequencies against the modes
+// analysis; the static tip deflection and Euler load against the cantilever formulas evaluated here
+// from the scene's numbers; a very stiff boom is rigid; a wave near the boom's first period keeps
+// that mode; the spin-up scene's unstiffened model fails by a named divergence; cost counted as
+// steps × state size.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "study/modes.hpp"
+#include "study/recommend.hpp"
+#include "study_test_support.hpp"
+
+namespace {
+
+using namespace ffrf;
+
+const study::Candidate& chosen(const study::Recommendation& rec) { return rec.candidates.at(rec.chosen.value()); }
+
+bool fails(const study::Candidate& c, double tolerance) {
+  return c.status == study::CandidateStatus::solver_failure || c.error > tolerance;
+}
+
+TEST(Recommend, ReferenceSceneAtOnePercentChosenPassesNextCheaperFails) {
+  const scene::Scene scene = test::scene_file("paper_floating_crane.toml");
+  study::RecommendRequest request;
+  request.duration = 40.0;
+  const study::Recommendation rec = study::recommend(scene, request);
+  ASSERT_TRUE(rec.chosen);
+  const study::Candidate& c = chosen(rec);
+  EXPECT_EQ(c.status, study::CandidateStatus::passed);
+  EXPECT_LE(c.error, 0.01);
+  ASSERT_TRUE(rec.next_cheaper);
+  EXPECT_LT(*rec.next_cheaper, *rec.chosen);
+  EXPECT_TRUE(fails(rec.candidates[*rec.next_cheaper], 0.01)) << study::to_string(rec.candidates[*rec.next_cheaper].status);
+  // Cost is solver work, steps × state size (2 × minimal coordinates), and the speed-up is the reference's over the chosen one's.
+  EXPECT_DOUBLE_EQ(c.work(), static_cast<double>(c.steps) * c.state_size);
+  EXPECT_NEAR(rec.work_speedup(), rec.reference.run.work() / c.work(), 1e-9 * rec.work_speedup());
+  EXPECT_GT(rec.work_speedup(), 1.0);
+  // The prestress is 5 % of the Euler load: the reasoning asks for static stiffening, and the
+  // unstiffened twin of the chosen model is what it proves wrong.
+  EXPECT_EQ(c.choice.stiffening.value_or(rec.reference_scene.boom.stiffening), scene::Stiffening::static_load);
+  EXPECT_EQ(rec.reference_scene.boom.stiffening, scene::Stiffening::static_load);
+
+  // Reasoning figures from the cantilever formulas, evaluated here from the scene's numbers.
+  const double L = 120.0, EI = 2.1e11 * 11.4, rhoA = 1.0e4, g = 9.81, mc = 1.3e6, phi = std::numbers::pi / 3.0;
+  const double delta = (mc * g * L * L * L / 3.0 + rhoA * g * std::pow(L, 4) / 8.0) * std::cos(phi) / EI;
+  EXPECT_NEAR(rec.reasoning.static_tip_deflection, delta, 1e-9 * delta);
+  EXPECT_NEAR(rec.reasoning.euler_load, std::numbers::pi * std::numbers::pi * EI / (4.0 * L * L), 1.0);
+  EXPECT_NEAR(rec.reasoning.wave_frequency, 2.0 * std::numbers::pi / 10.0, 1e-12);
+  EXPECT_EQ(rec.reasoning.dynamic_modes, 1);  // (0.628/3.78)²/(1 − ·) = 2.8 % > 1 %
+
+  // The frequency figures are those of the modes analysis of the same boom.
+  const study::ModesResult modes = study::solve_modes(scene.boom.mesh, fem::Boundary::clamped_free,
+                                                      modal::EigenSolverKind::arpack,
+                                                      static_cast<int>(rec.reasoning.modes.size()));
+  ASSERT_EQ(rec.reasoning.modes.size(), modes.modes.size());
+  for (std::size_t i = 0; i < modes.modes.size(); ++i) {
+    EXPECT_NEAR(rec.reasoning.modes[i].angular_frequency, modes.modes[i].angular_frequency, 1e-9 * modes.modes[i].angular_frequency);
+  }
+}
+
+TEST(Recommend, VeryStiffBoomIsRigid) {
+  scene::Scene scene = test::scene_file("paper_floating_crane.toml");
+  scene.boom.mesh.section.youngs_modulus = 2.1e15;
+  study::RecommendRequest request;
+  request.duration = 30.0;
+  request.reference.max_levels = 2;
+  const study::Recommendation rec = study::recommend(scene, request);
+  ASSERT_TRUE(rec.chosen);
+  EXPECT_EQ(chosen(rec).choice.kind, scene::BoomKind::rigid);
+  EXPECT_LE(chosen(rec).error, 0.01);
+  // ω1 = 3.78 · 100 rad/s: no mode is driven dynamically by the 10 s wave.
+  EXPECT_EQ(rec.reasoning.dynamic_modes, 0);
+  EXPECT_NEAR(rec.reasoning.modes.at(0).angular_frequency, 100.0 * 3.778, 0.01 * 377.8);
+}
+
+TEST(Recommend, WavePeriodNearTheBoomsFirstPeriodKeepsTheMode) {
+  // The boom softened 3.6× (E = 5.8e10 Pa: ω1 = 3.78·√(5.8/21) = 1.99 rad/s, period 3.2 s) under a
+  // 5 s wave (ω_w = 1.257 rad/s), which the hull passes on (its heave period is 5.9 s): mode 1 is
+  // driven at r = 0.63, a quasi-static error r²/(1 − r²) = 0.66 ≫ 1 %, so no model may treat it
+  // statically.
+  scene::Scene scene = test::scene_file("paper_floating_crane.toml");
+  scene.wave->period = 5.0;
+  scene.boom.mesh.section.youngs_modulus = 5.8e10;
+  study::RecommendRequest request;
+  request.duration = 30.0;
+  const study::Recommendation rec = study::recommend(scene, request);
+  const double omega1 = rec.reasoning.modes.at(0).angular_frequency;
+  EXPECT_NEAR(omega1, 3.7779 * std::sqrt(5.8e10 / 2.1e11), 2e-3 * omega1);
+  EXPECT_NEAR(rec.reasoning.wave_frequency, 2.0 * std::numbers::pi / 5.0, 1e-12);
+  const double r = rec.reasoning.wave_frequency / omega1;
+  EXPECT_GT(r * r / (1.0 - r * r), 0.5);
+  EXPECT_GE(rec.reasoning.dynamic_modes, 1);
+  // Every candidate that drops a dynamically driven mode is pruned, never run.
+  for (const study::Candidate& c : rec.candidates) {
+    const bool drops_modes = c.choice.kind == scene::BoomKind::rigid ||
+                             (c.choice.kind == scene::BoomKind::modal && c.choice.modes < rec.reasoning.dynamic_modes);
+    if (drops_modes) {
+      EXPECT_EQ(c.status, study::CandidateStatus::pruned) << c.label();
+    }
+  }
+  ASSERT_TRUE(rec.chosen);
+  const study::Candidate& c = chosen(rec);
+  EXPECT_EQ(c.status, study::CandidateStatus::passed);
+  EXPECT_LE(c.error, 0.01);
+  EXPECT_NE(c.choice.kind, scene::BoomKind::rigid);
+  if (c.choice.kind == scene::BoomKind::modal) {
+    EXPECT_GE(c.choice.modes, rec.reasoning.dynamic_modes);
+  }
+  ASSERT_TRUE(rec.next_cheaper);
+  EXPECT_TRUE(fails(rec.candidates[*rec.next_cheaper], 0.01));
+}
+
+TEST(Recommend, SpinUpRequiresCentrifugalStiffening) {
+  const scene::Scene scene = test::scene_file("spin_up_beam.toml");
+  study::RecommendRequest request;
+  request.duration = 14.0;
+  request.reference.max_levels = 1;
+  const study::Recommendation rec = study::recommend(scene, request);
+  ASSERT_TRUE(rec.chosen);
+  EXPECT_EQ(chosen(rec).choice.stiffening.value_or(rec.reference_scene.boom.stiffening), scene::Stiffening::centrifugal);
+  EXPECT_LE(chosen(rec).error, 0.01);
+  const double w1 = rec.reasoning.modes.at(0).angular_frequency;
+  EXPECT_NEAR(rec.reasoning.centrifugal_softening, 16.0 / (w1 * w1), 1e-12);
+  EXPECT_EQ(rec.reasoning.required_stiffening, scene::Stiffening::centrifugal);
+  // The unstiffened linear model, when run, diverges (Ω = 4 > ω1 ≈ 3.8 rad/s): a named solver failure.
+  ASSERT_TRUE(rec.next_cheaper);
+  const study::Candidate& cheaper = rec.candidates[*rec.next_cheaper];
+  EXPECT_EQ(cheaper.choice.stiffening.value_or(rec.reference_scene.boom.stiffening), scene::Stiffening::none);
+  EXPECT_EQ(cheaper.status, study::CandidateStatus::solver_failure);
+  EXPECT_NE(cheaper.failure.find("divergence"), std::string::npos) << cheaper.failure;
+}
+
+}  // namespace
