@@ -139,8 +139,6 @@ void compare_amplification(const Baseline& baseline, const Baseline& run, double
   out.push_back(d);
 }
 
-std::string model_text(const scene::BoomChoice& choice) { return choice.label(); }
-
 }  // namespace
 
 double default_response_tolerance(const Baseline& baseline) {
@@ -175,7 +173,12 @@ std::vector<SettingDifference> model_differences(const BaselineModel& b, const B
   const auto differ = [&](const char* setting, const std::string& baseline, const std::string& run) {
     if (baseline != run) out.push_back({setting, baseline, run});
   };
-  differ("boom model", model_text(b.choice), model_text(r.choice));
+  differ("boom model", std::string(scene::to_string(b.choice.kind)), std::string(scene::to_string(r.choice.kind)));
+  differ("elements", fmt::format("{}", b.choice.elements), fmt::format("{}", r.choice.elements));
+  if (b.choice.kind == scene::BoomKind::modal || r.choice.kind == scene::BoomKind::modal) {
+    differ("vibration modes", fmt::format("{}", b.choice.modes), fmt::format("{}", r.choice.modes));
+    differ("static correction modes", b.choice.static_modes ? "with" : "without", r.choice.static_modes ? "with" : "without");
+  }
   const auto stiffening = [](const scene::BoomChoice& c) {
     return c.stiffening ? std::string(scene::to_string(*c.stiffening)) : std::string("the scene's");
   };
