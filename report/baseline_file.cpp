@@ -221,7 +221,7 @@ study::Baseline read_baseline_body(const Node& root) {
 }  // namespace
 
 BaselineFileError::BaselineFileError(std::string file, std::string key, std::string value, std::string problem)
-    : std::runtime_error(fmt::format("{}: {}{}: {}", file, key, key.empty() ? "" : " = " + value, problem)),
+    : std::runtime_error(key.empty() ? fmt::format("{}: {}", file, problem) : fmt::format("{}: {} = {}: {}", file, key, value, problem)),
       file_(std::move(file)),
       key_(std::move(key)),
       value_(std::move(value)),
