@@ -48,6 +48,7 @@ class Node {
     return json_.size();
   }
   bool is_null() const { return json_.is_null(); }
+  bool has(const std::string& name) const { return json_.is_object() && json_.contains(name); }
   double number() const {
     if (!json_.is_number()) fail("not a number");
     return json_.get<double>();
@@ -196,6 +197,23 @@ study::Baseline read_baseline_body(const Node& root) {
     b.boom_frequencies.push_back({mode.at("hz").number(0.0, INFINITY, true, "Hz"), mode.at("kind").text(),
                                   mode.at("order").integer(0, 1'000'000)});
   }
+  const Node error = root.at("integration_error");
+  if (!error.is_null() && error.has("problem")) {
+    study::IntegrationError e;
+    e.problem = error.at("problem").text();
+    if (e.problem.empty()) error.at("problem").fail("empty: say why the error was not measured");
+    b.integration_error = e;
+  } else if (!error.is_null()) {
+    study::IntegrationError e;
+    e.relative_tolerance = error.at("rtol").number(0.0, 1.0, true);
+    e.absolute_tolerance = error.at("atol").number(0.0, 1.0, true);
+    e.fixed_step = error.at("fixed_step_s").number(0.0, INFINITY, false, "s");
+    e.steps = error.at("steps").count();
+    e.largest = error.at("largest_deviation").number(0.0, INFINITY, false);
+    e.channel = error.at("channel").text();
+    e.quantity = error.at("quantity").text();
+    b.integration_error = e;
+  }
   const Node window = root.at("statistics_window");
   b.window_start = window.at("start_s").number(0.0, INFINITY, false, "s");
   b.window_after_ramp = window.at("after_ramp").boolean();
@@ -267,6 +285,17 @@ std::string baseline_json(const BaselineFile& file) {
   Json modes = Json::array();
   for (const study::BoomFrequency& f : b.boom_frequencies) modes.push_back(Json{{"hz", f.hz}, {"kind", f.kind}, {"order", f.order}});
   doc["boom_frequencies"] = Json{{"boundary", "clamped-free"}, {"elements", b.boom_elements}, {"solver", "arpack"}, {"modes", modes}};
+  if (b.integration_error && !b.integration_error->measured()) {
+    doc["integration_error"] = Json{{"problem", b.integration_error->problem}};
+  } else if (b.integration_error) {
+    const study::IntegrationError& e = *b.integration_error;
+    doc["integration_error"] = Json{{"rtol", e.relative_tolerance}, {"atol", e.absolute_tolerance},
+                                    {"fixed_step_s", e.fixed_step},  {"steps", e.steps},
+                                    {"largest_deviation", e.largest}, {"channel", e.channel},
+                                    {"quantity", e.quantity}};
+  } else {
+    doc["integration_error"] = nullptr;
+  }
   doc["statistics_window"] = Json{{"start_s", b.window_start}, {"after_ramp", b.window_after_ramp}};
   doc["wire_amplification"] = b.wire_amplification ? Json(*b.wire_amplification) : Json(nullptr);
   doc["history"] = Json{{"decimation", b.decimation},

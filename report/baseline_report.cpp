@@ -26,6 +26,20 @@ std::string cost_line(const coupling::SolverStats& s) {
                      s.function_evaluations, s.jacobian_evaluations, s.newton_iterations, s.wall_seconds);
 }
 
+std::string tighter_text(const study::IntegrationError& e) {
+  return e.fixed_step > 0.0 ? fmt::format("fixed step {:g} s", e.fixed_step)
+                            : fmt::format("rtol {:g}, atol {:g}", e.relative_tolerance, e.absolute_tolerance);
+}
+
+// How the default tolerance of the responses came about.
+std::string response_tolerance_text(const study::Baseline& b) {
+  std::string text = fmt::format("max({:g} x the baseline's rtol {:g}", study::response_tolerance_factor, b.model.relative_tolerance);
+  if (b.integration_error && b.integration_error->measured()) {
+    text += fmt::format(", {:g} x its run's integration error {:.3g}", study::integration_error_factor, b.integration_error->largest);
+  }
+  return text + ")";
+}
+
 std::string commit_text(const std::string& commit) { return commit == "unknown" ? "commit unknown" : "commit " + commit; }
 
 // The deviation and its tolerance in units of the scale (absolute when the scale is 0).
@@ -73,6 +87,15 @@ std::string baseline_record_text(const BaselineFile& file) {
   }
   text += fmt::format("boom        clamped-free, N = {}: {} Hz\n", b.boom_elements, frequencies.empty() ? "(none)" : frequencies);
   text += fmt::format("statistics  over t >= {:g} s{}\n", b.window_start, b.window_after_ramp ? " (after the wave ramp)" : " (the whole run)");
+  if (b.integration_error && !b.integration_error->measured()) {
+    text += fmt::format("error       integration error not measured ({}): a check's default tolerance of the responses is "
+                        "{:.3g}\n", b.integration_error->problem, study::default_response_tolerance(b));
+  } else if (b.integration_error) {
+    const study::IntegrationError& e = *b.integration_error;
+    text += fmt::format("error       integration error {:.3g} ({} {}) against the same run at {} ({} steps): a check's "
+                        "default tolerance of the responses is {:.3g}\n",
+                        e.largest, e.channel, e.quantity, tighter_text(e), e.steps, study::default_response_tolerance(b));
+  }
   text += fmt::format("history     every {} output sample{} ({:g} s, at least {} points per shortest period), {} samples\n",
                       b.decimation, b.decimation == 1 ? "" : "s", b.decimation * b.model.output_interval,
                       study::history_points_per_period, b.history_time.size());
@@ -106,9 +129,9 @@ std::string baseline_check_text(const BaselineCheckContext& context, const study
   }
   text += fmt::format(
       "tolerances  |difference| <= relative x scale + absolute; boom frequencies: relative {:g} of f; responses: "
-      "relative {:g} ({:g} x the baseline's rtol {:g} unless given) of the channel's standard deviation in the baseline, "
-      "absolute {:g} (channel units)\n",
-      check.frequency_tolerance, check.response_tolerance, study::response_tolerance_factor, b.model.relative_tolerance,
+      "relative {:.3g} ({}) of the channel's standard deviation in the baseline, absolute {:g} (channel units)\n",
+      check.frequency_tolerance, check.response_tolerance,
+      check.response_tolerance_given ? "given" : "default: " + response_tolerance_text(b),
       check.absolute_tolerance);
   text += fmt::format("run         {}\n            baseline: {}\n\n", cost_line(check.run.cost), cost_line(b.cost));
   text += fmt::format("{:<20} {:<14} {:>15} {:>15} {:>12} {:>10} {:>10}  {}\n", "channel", "quantity", "baseline", "this run",
@@ -156,6 +179,7 @@ std::string baseline_check_json(const BaselineCheckContext& context, const study
   }
   doc["model_differences"] = differences;
   doc["tolerances"] = Json{{"frequency_relative", check.frequency_tolerance},
+                           {"response_relative_default", study::default_response_tolerance(context.baseline->baseline)},
                            {"response_relative", check.response_tolerance},
                            {"response_absolute", check.absolute_tolerance}};
   Json deviations = Json::array();

@@ -117,7 +117,7 @@ std::vector<std::string> chosen_columns(const scene::Scene& scene, const std::ve
 
 }  // namespace
 
-Baseline record_baseline(const scene::Scene& scene, const BaselineRequest& request, modal::ModeCache* modes) {
+Baseline record_run(const scene::Scene& scene, const BaselineRequest& request, modal::ModeCache* modes) {
   const std::vector<std::string> columns = chosen_columns(scene, request.outputs);
   Baseline baseline;
   baseline.model = baseline_model(scene, request.choice, request.settings);

@@ -13,6 +13,10 @@
 //    at least 20 points (history_decimation); k = 1 when the output interval is already coarser.
 //  * The model and settings that reproduce the run (boom choice with its stiffening resolved,
 //    integrator, tolerances, BDF order, fixed step, duration, output interval) and its cost.
+//  * The run's own integration error, measured when recording: the same run again with 1/100 of
+//    the tolerances (a fixed-step run: a quarter of the step), and the largest deviation of any
+//    recorded response from it in the units a check judges (study/baseline_check.hpp). A check's
+//    default tolerance of the responses is derived from it.
 // The run itself is study::run_model, the one pipeline. File provenance (program version, commit,
 // scene file hash, date) and the file format belong to report/baseline_file.hpp.
 #pragma once
@@ -66,6 +70,18 @@ struct ChannelBaseline {
   std::vector<double> history;      // at Baseline::history_time
 };
 
+// The recorded run's integration error, estimated against a tighter run of the same model.
+struct IntegrationError {
+  double relative_tolerance = 0.0;  // of the tighter run
+  double absolute_tolerance = 0.0;
+  double fixed_step = 0.0;          // [s] (0: adaptive)
+  long steps = 0;                   // of the tighter run
+  double largest = 0.0;             // largest deviation of a response (deviation as a check judges it)
+  std::string channel, quantity;    // where
+  std::string problem;              // not empty: not measured, and why (the tighter runs failed)
+  bool measured() const { return problem.empty(); }
+};
+
 struct Baseline {
   BaselineModel model;
   coupling::SolverStats cost;  // steps, evaluations, wall time of the recorded run
@@ -77,6 +93,7 @@ struct Baseline {
   int decimation = 1;          // history keeps every decimation-th output sample
   std::vector<double> history_time;  // [s]
   std::vector<ChannelBaseline> channels;
+  std::optional<IntegrationError> integration_error;  // none: not measured (check runs)
 
   const ChannelBaseline* channel(const std::string& name) const;  // nullptr when not recorded
 };
@@ -110,8 +127,14 @@ int history_decimation(const scene::Scene& scene, double output_interval, double
 // Throws modal::EigenSolverError.
 std::vector<BoomFrequency> boom_frequencies(const scene::Scene& scene, int elements);
 
-// Runs the model (study::run_model) and keeps what a baseline holds. Throws std::invalid_argument
-// for an unknown output, scene::SceneError, coupling::SolverFailure and modal::EigenSolverError.
+// Runs the model once (study::run_model) and keeps what a baseline holds, without the integration
+// error. Throws std::invalid_argument for an unknown output, scene::SceneError,
+// coupling::SolverFailure and modal::EigenSolverError.
+Baseline record_run(const scene::Scene& scene, const BaselineRequest& request, modal::ModeCache* modes = nullptr);
+
+// record_run(), then the same run with tighter settings (1/100 of the tolerances; a fixed-step
+// run: a quarter of the step) that measures its integration error (baseline_record.cpp); when the
+// tighter runs fail, the error says why it was not measured. Throws as record_run().
 Baseline record_baseline(const scene::Scene& scene, const BaselineRequest& request, modal::ModeCache* modes = nullptr);
 
 }  // namespace ffrf::study

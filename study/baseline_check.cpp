@@ -142,7 +142,9 @@ void compare_amplification(const Baseline& baseline, const Baseline& run, double
 }  // namespace
 
 double default_response_tolerance(const Baseline& baseline) {
-  return response_tolerance_factor * baseline.model.relative_tolerance;
+  const double floor = response_tolerance_factor * baseline.model.relative_tolerance;
+  const std::optional<IntegrationError>& error = baseline.integration_error;
+  return error && error->measured() ? std::max(floor, integration_error_factor * error->largest) : floor;
 }
 
 void validate(const BaselineTolerances& tolerances, const Baseline& baseline) {
@@ -204,6 +206,7 @@ BaselineCheck compare_baseline(const Baseline& baseline, const Baseline& run, co
   check.frequency_tolerance =
       relative_for(tolerances, frequencies_name, tolerances.frequency.value_or(default_frequency_tolerance));
   check.response_tolerance = tolerances.relative.value_or(default_response_tolerance(baseline));
+  check.response_tolerance_given = tolerances.relative.has_value();
   check.absolute_tolerance = tolerances.absolute;
   compare_frequencies(baseline, run, check.frequency_tolerance, check.deviations);
   for (const ChannelBaseline& b : baseline.channels) {
@@ -231,7 +234,7 @@ BaselineCheck check_baseline(const scene::Scene& scene, const Baseline& baseline
   request.settings = settings;
   for (const ChannelBaseline& channel : baseline.channels) request.outputs.push_back(channel.name);
   request.decimation = baseline.decimation;
-  return compare_baseline(baseline, record_baseline(scene, request, modes), tolerances);
+  return compare_baseline(baseline, record_run(scene, request, modes), tolerances);
 }
 
 }  // namespace ffrf::study

@@ -106,6 +106,22 @@ TEST(BaselineFile, ReadsBackEveryValueBitForBit) {
   EXPECT_EQ(c.history, a.channels[0].history);
   EXPECT_TRUE(std::signbit(c.history[1])) << "-0.0 keeps its sign";
 
+  report::BaselineFile measured = file;
+  measured.baseline.integration_error = study::IntegrationError{1e-8, 1e-8, 0.0, 2313, 2.0 / 3.0 * 1e-5, "wire_tension_N", "min", ""};
+  const auto error = report::parse_baseline(report::baseline_json(measured), "mem").baseline.integration_error;
+  ASSERT_TRUE(error.has_value());
+  EXPECT_TRUE(error->measured());
+  EXPECT_EQ(error->largest, 2.0 / 3.0 * 1e-5);
+  EXPECT_EQ(error->steps, 2313);
+  EXPECT_EQ(error->quantity, "min");
+  report::BaselineFile failed = file;
+  failed.baseline.integration_error = study::IntegrationError{};
+  failed.baseline.integration_error->problem = "the tighter runs failed: CVODE ...";
+  const auto unmeasured = report::parse_baseline(report::baseline_json(failed), "mem").baseline.integration_error;
+  ASSERT_TRUE(unmeasured.has_value());
+  EXPECT_FALSE(unmeasured->measured());
+  EXPECT_EQ(unmeasured->problem, "the tighter runs failed: CVODE ...");
+
   report::BaselineFile calm = file;
   calm.baseline.wire_amplification.reset();
   EXPECT_FALSE(report::parse_baseline(report::baseline_json(calm), "mem").baseline.wire_amplification.has_value());
@@ -136,6 +152,10 @@ TEST(BaselineFile, MalformedFilesAreNamedWithKeyValueAndProblem) {
   EXPECT_EQ(parse_error(edited("6.02214076e+23\n", "6.02214076e+23, 1.0\n")),
             "base.json: channels[0].history = [0.1111111111111111,-0.0,6.02214076e+23,1.0]: 4 samples, but "
             "history.time_s has 3");
+  EXPECT_EQ(parse_error(edited("\"integration_error\": null", "\"integration_error\": {\"problem\": \"\"}")),
+            "base.json: integration_error.problem = \"\": empty: say why the error was not measured");
+  EXPECT_EQ(parse_error(edited("\"integration_error\": null", "\"integration_error\": {\"rtol\": 1e-8}")),
+            "base.json: integration_error.atol = (missing): a required key is missing");
   EXPECT_EQ(parse_error(edited("\"hz\": 0.3333333333333333", "\"hz\": -1")),
             "base.json: boom_frequencies.modes[0].hz = -1: out of range (valid range (0, inf) Hz)");
 }
