@@ -177,7 +177,7 @@ std::vector<SettingDifference> model_differences(const BaselineModel& b, const B
   };
   differ("boom model", std::string(scene::to_string(b.choice.kind)), std::string(scene::to_string(r.choice.kind)));
   differ("elements", fmt::format("{}", b.choice.elements), fmt::format("{}", r.choice.elements));
-  if (b.choice.kind == scene::BoomKind::modal || r.choice.kind == scene::BoomKind::modal) {
+  if (b.choice.kind == scene::BoomKind::modal && r.choice.kind == scene::BoomKind::modal) {  // else: the boom model differs
     differ("vibration modes", fmt::format("{}", b.choice.modes), fmt::format("{}", r.choice.modes));
     differ("static correction modes", b.choice.static_modes ? "with" : "without", r.choice.static_modes ? "with" : "without");
   }

@@ -17,9 +17,10 @@
 //    what the tolerance must admit is a different but equally valid solution — another compiler,
 //    another linear solver, another step sequence — which differs from the recorded one by up to
 //    about the sum of the two runs' errors. docs/baselines.md shows it measured on the shipped
-//    scenes: the recorded runs' errors are 13–270 × rtol (an undamped spinning boom accumulates
-//    phase error), independent implementations at the same rtol differ by up to 2.5 × the larger
-//    error, and a stiffer boom (E × 1.01) moves the responses by 10–1000 times the default.
+//    scenes: the recorded runs' errors are 17–263 × rtol (an undamped spinning boom accumulates
+//    phase error), the same models solved by IDA instead of CVODE at the same rtol differ from them
+//    by up to 7 × that error, and a stiffer boom (E × 1.01) moves the reference crane's responses by
+//    5–125 times the default.
 //  * the wire tension's dynamic amplification: scale its baseline value, the responses' relative
 //    tolerance (name "wire_amplification").
 // Relative tolerances can be set for all responses, per channel (its column name), for

@@ -223,6 +223,30 @@ TEST_F(CraneBaseline, HistoriesAtOtherTimesAreNotComparedAndFail) {
   EXPECT_NE(history.problem.find("other times"), std::string::npos) << history.problem;
 }
 
+TEST(BaselineModel, DifferencesAreListedSettingBySetting) {
+  study::BaselineModel a;
+  a.choice = {scene::BoomKind::modal, 16, 2, true};
+  a.choice.stiffening = scene::Stiffening::none;
+  study::BaselineModel b = a;
+  EXPECT_TRUE(study::model_differences(a, b).empty());
+  b.choice.modes = 4;
+  b.choice.static_modes = false;
+  b.choice.stiffening = scene::Stiffening::static_load;
+  b.integrator = coupling::Integrator::ida;
+  b.duration = 60.0;
+  const std::vector<study::SettingDifference> d = study::model_differences(a, b);
+  ASSERT_EQ(d.size(), 5u);
+  EXPECT_EQ(d[0].setting, "vibration modes");
+  EXPECT_EQ(d[0].baseline, "2");
+  EXPECT_EQ(d[0].run, "4");
+  EXPECT_EQ(d[1].setting, "static correction modes");
+  EXPECT_EQ(d[2].setting, "geometric stiffening");
+  EXPECT_EQ(d[2].run, "static");
+  EXPECT_EQ(d[3].setting, "integrator");
+  EXPECT_EQ(d[4].setting, "duration");
+  EXPECT_EQ(d[4].run, "60 s");
+}
+
 TEST(BaselineStatistics, MeanAndStandardDeviationOfASineOverWholePeriods) {
   std::vector<coupling::CraneOutputs> samples(400);
   coupling::CraneOutputs statics;
