@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -23,6 +24,8 @@
 
 namespace ffrf::app {
 namespace {
+
+namespace fs = std::filesystem;
 
 struct RecordOptions {
   std::string scene;
@@ -113,6 +116,10 @@ int record(const RecordOptions& options) {
     request.choice = boom_choice(options.model, default_boom_choice(*scene));
     request.settings = integrator_settings(options.dynamics, *scene);
     if (!options.outputs.empty()) request.outputs = parse_outputs(options.outputs);
+    const fs::path directory = fs::absolute(options.out).parent_path();
+    if (!fs::is_directory(directory)) {
+      throw BadOption(fmt::format("--out {}: the directory {} does not exist", options.out, directory.string()));
+    }
     file.provenance = report::baseline_provenance(options.scene, scene->name);
   } catch (const BadOption& error) {
     return bad_input("baseline record", error.what());
@@ -128,7 +135,12 @@ int record(const RecordOptions& options) {
   } catch (const coupling::SolverFailure& failure) {
     return solver_failure("baseline record", std::string(coupling::to_string(failure.kind())), failure, options.out);
   }
-  report::write_baseline(options.out, report::baseline_json(file));
+  try {
+    report::write_baseline(options.out, report::baseline_json(file));
+  } catch (const std::runtime_error& error) {
+    fmt::print(stderr, "ffrf baseline record: error: {}\n", error.what());
+    return exit_failure;
+  }
   fmt::print("{}\nwrote {}\n", report::baseline_record_text(file), options.out);
   return exit_ok;
 }
@@ -160,8 +172,9 @@ int check(const CheckOptions& options) {
     return bad_input("baseline check", error.what());
   } catch (const BadOption& error) {
     return bad_input("baseline check", error.what());
-  } catch (const std::invalid_argument& error) {  // a --tolerance that names nothing in the baseline
-    return bad_input("baseline check", fmt::format("--tolerance: {}", error.what()));
+  } catch (const study::ToleranceError& error) {  // a --tolerance that names nothing in the baseline
+    return bad_input("baseline check", fmt::format("--tolerance {}={}: {}: {}", error.name(), error.value(), options.baseline,
+                                                   error.problem()));
   }
   study::BaselineCheck result;
   try {

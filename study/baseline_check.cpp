@@ -147,11 +147,15 @@ double default_response_tolerance(const Baseline& baseline) {
   return error && error->measured() ? std::max(floor, integration_error_factor * error->largest) : floor;
 }
 
+ToleranceError::ToleranceError(std::string name, double value, std::string problem)
+    : std::invalid_argument(fmt::format("tolerance {} = {}: {}", name, value, problem)),
+      name_(std::move(name)),
+      value_(value),
+      problem_(std::move(problem)) {}
+
 void validate(const BaselineTolerances& tolerances, const Baseline& baseline) {
   const auto check_value = [](const std::string& name, double value) {
-    if (!(value >= 0.0) || !std::isfinite(value)) {
-      throw std::invalid_argument(fmt::format("tolerance {} = {}: not a tolerance (valid range [0, inf))", name, value));
-    }
+    if (!(value >= 0.0) || !std::isfinite(value)) throw ToleranceError(name, value, "not a tolerance (valid range [0, inf))");
   };
   if (tolerances.frequency) check_value(frequencies_name, *tolerances.frequency);
   if (tolerances.relative) check_value("relative", *tolerances.relative);
@@ -162,10 +166,7 @@ void validate(const BaselineTolerances& tolerances, const Baseline& baseline) {
   for (const auto& [name, value] : tolerances.per_name) {
     const bool known = name == frequencies_name || (name == amplification_name && baseline.wire_amplification) ||
                        baseline.channel(name) != nullptr;
-    if (!known) {
-      throw std::invalid_argument(fmt::format("tolerance {} = {}: the baseline has no channel or quantity '{}'; it has {}",
-                                              name, value, name, names));
-    }
+    if (!known) throw ToleranceError(name, value, fmt::format("the baseline has no channel or quantity '{}'; it has {}", name, names));
     check_value(name, value);
   }
 }

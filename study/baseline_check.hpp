@@ -33,6 +33,7 @@
 
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -57,8 +58,23 @@ struct BaselineTolerances {
 // The relative tolerance of the responses when none is given.
 double default_response_tolerance(const Baseline& baseline);
 
-// Throws std::invalid_argument naming a per-name tolerance that names nothing in the baseline (with
-// the valid names) or a tolerance that is negative or not finite.
+// A tolerance that cannot be used: its name ("relative", "absolute", "frequencies", a channel, ...),
+// its value and what is wrong (with the valid names or range).
+class ToleranceError : public std::invalid_argument {
+ public:
+  ToleranceError(std::string name, double value, std::string problem);
+  const std::string& name() const { return name_; }
+  double value() const { return value_; }
+  const std::string& problem() const { return problem_; }
+
+ private:
+  std::string name_;
+  double value_;
+  std::string problem_;
+};
+
+// Throws ToleranceError for a per-name tolerance that names nothing in the baseline (with the valid
+// names) or a tolerance that is negative or not finite.
 void validate(const BaselineTolerances& tolerances, const Baseline& baseline);
 
 struct Deviation {
@@ -97,7 +113,7 @@ struct BaselineCheck {
   bool passed() const { return failures() == 0; }
 };
 
-// Judges `run` against `baseline` (both recorded; pure: no run). Throws std::invalid_argument as validate().
+// Judges `run` against `baseline` (both recorded; pure: no run). Throws ToleranceError as validate().
 BaselineCheck compare_baseline(const Baseline& baseline, const Baseline& run, const BaselineTolerances& tolerances);
 
 // Runs `choice` with `settings` on `scene` (recording the baseline's channels at its decimation) and

@@ -129,7 +129,9 @@ TEST(CliBaseline, BadInputIsNamedWithExitTwo) {
 
   r = run_ffrf(check + "'" + base + "' --tolerance hook_speed_m_per_s=1e-3", dir.path());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("hook_speed_m_per_s"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--tolerance hook_speed_m_per_s=0.001: " + base + ": the baseline has no channel or quantity"),
+            std::string::npos)
+      << r.err;
   EXPECT_NE(r.err.find("wire_tension_N"), std::string::npos) << "the valid names are listed: " << r.err;
 
   r = run_ffrf(check + "'" + base + "' --tolerance wire_tension_N", dir.path());
@@ -148,6 +150,10 @@ TEST(CliBaseline, BadInputIsNamedWithExitTwo) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--outputs hook_speed: unknown output 'hook_speed'"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "x.json")) << "nothing written on bad input";
+
+  r = run_ffrf("baseline record '" + kCrane + "' --out '" + (dir / "no_dir" / "x.json").string() + "'", dir.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("the directory " + (dir / "no_dir").string() + " does not exist"), std::string::npos) << r.err;
 
   r = run_ffrf("baseline record '" + (dir / "none.toml").string() + "' --out '" + (dir / "x.json").string() + "'", dir.path());
   EXPECT_EQ(r.exit_code, 2);

@@ -210,7 +210,7 @@ TEST_F(CraneBaseline, ToleranceIsRelativeTimesTheChannelsStdPlusAbsolute) {
   EXPECT_TRUE(study::compare_baseline(*baseline_, run, tolerances).passed()) << "a per-channel tolerance overrides";
 
   tolerances.per_name["cargo_heave"] = 1e-3;  // not a column of the baseline
-  EXPECT_THROW(study::compare_baseline(*baseline_, run, tolerances), std::invalid_argument);
+  EXPECT_THROW(study::compare_baseline(*baseline_, run, tolerances), study::ToleranceError);
 }
 
 TEST_F(CraneBaseline, HistoriesAtOtherTimesAreNotComparedAndFail) {
