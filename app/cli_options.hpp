@@ -9,6 +9,7 @@
 #include <string>
 
 #include "coupling/failure.hpp"
+#include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/reference.hpp"
@@ -35,6 +36,27 @@ void add_stiffening_option(CLI::App& sub, std::string& stiffening);
 struct BadOption : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// The boom model as typed on the command line (`run`, `baseline record|check`); an option not given
+// is empty.
+struct ModelOptions {
+  std::string boom;  // empty: nodal (run, record) or the baseline's (check)
+  std::optional<int> elements;
+  std::optional<int> modes;
+  bool static_modes = false;
+  bool no_static_modes = false;
+  std::string stiffening;  // empty: the scene's boom.stiffening (or the baseline's)
+};
+// The default modal boom is the one docs/validation.md recommends under a hanging load: k = 2
+// vibration modes with static correction modes (k = 4 without them misses the static deflection).
+inline constexpr int default_modal_modes = 2;
+// --boom --elements/-N --modes/-k --static-modes --no-static-modes --stiffening.
+void add_model_options(CLI::App& sub, ModelOptions& options);
+// The boom of a scene when no option is given: nodal on the scene's mesh (boom.elements), the
+// default modal modes with static modes, the scene's stiffening.
+scene::BoomChoice default_boom_choice(const scene::Scene& scene);
+// `base` with the options that were given; throws BadOption naming the option, value and range.
+scene::BoomChoice boom_choice(const ModelOptions& options, scene::BoomChoice base);
 
 // The integrator settings for a scene (progress on a terminal); throws BadOption.
 coupling::IntegratorSettings integrator_settings(const DynamicsOptions& options, const scene::Scene& scene);

@@ -22,51 +22,12 @@ namespace {
 
 struct RunOptions {
   std::string scene;
-  std::string boom = "nodal";
-  std::optional<int> elements;
-  std::optional<int> modes;
-  bool static_modes = false;
-  bool no_static_modes = false;
-  std::string stiffening;           // empty: the scene's boom.stiffening
+  ModelOptions model;
   std::optional<double> spin_rate;  // overrides hub.spin_rate
   DynamicsOptions dynamics;
   bool json = false;
   std::string out;
 };
-
-// The default modal boom is the one docs/validation.md recommends under a hanging load: k = 2
-// vibration modes with static correction modes (k = 4 without them misses the static deflection).
-constexpr int default_modes = 2;
-
-// The boom choice from the options; throws BadOption.
-scene::BoomChoice boom_choice(const RunOptions& options, const scene::Scene& scene) {
-  scene::BoomChoice choice;
-  const auto kind = scene::parse_boom_kind(options.boom);
-  if (!kind) throw BadOption(fmt::format("--boom {}: unknown boom model; choose one of {}", options.boom, scene::boom_kind_choices()));
-  choice.kind = *kind;
-  choice.elements = options.elements.value_or(scene.boom.mesh.element_count);
-  if (choice.elements < 1) {
-    throw BadOption(fmt::format("--elements {}: not a valid element count (valid range [1, inf))", choice.elements));
-  }
-  if (options.static_modes && options.no_static_modes) throw BadOption("--static-modes and --no-static-modes exclude each other");
-  choice.modes = options.modes.value_or(default_modes);
-  choice.static_modes = !options.no_static_modes;
-  if (!options.stiffening.empty()) {
-    choice.stiffening = scene::parse_stiffening(options.stiffening);
-    if (!choice.stiffening) {
-      throw BadOption(fmt::format("--stiffening {}: unknown stiffening; choose one of none, static, centrifugal, both",
-                                  options.stiffening));
-    }
-  }
-  if (choice.kind == scene::BoomKind::modal) {
-    const int dof = 3 * choice.elements;  // (u, v, φ) per node, the root node clamped
-    if (choice.modes < 1 || choice.modes >= dof) {
-      throw BadOption(fmt::format("--modes {}: not a valid mode count for N = {} elements ({} elastic DOFs) (valid range [1, {}])",
-                                  choice.modes, choice.elements, dof, dof - 1));
-    }
-  }
-  return choice;
-}
 
 void write_outputs(report::StagedDirectory& out, const report::RunContext& context, const study::ModelRun& run) {
   out.write("timeseries.csv", report::timeseries_csv(run));
@@ -92,7 +53,7 @@ int run_crane(const RunOptions& options) {
       }
       scene->hub->spin_rate = *options.spin_rate;
     }
-    choice = boom_choice(options, *scene);
+    choice = boom_choice(options.model, default_boom_choice(*scene));
     settings = integrator_settings(options.dynamics, *scene);
   } catch (const BadOption& error) {
     return bad_input("run", error.what());
@@ -135,17 +96,8 @@ Command add_run_command(CLI::App& parent) {
   auto options = std::make_shared<RunOptions>();
   CLI::App* sub = parent.add_subcommand("run", "Static equilibrium, then the dynamics of one crane model in the scene's waves");
   sub->add_option("scene", options->scene, "Scene file (TOML) with [hull], [boom], [cargo] and [wire], or a [hub]")->required();
-  sub->add_option("--boom", options->boom, "Boom model " + scene::boom_kind_choices())->capture_default_str();
-  sub->add_option("--elements,-N", options->elements, "Number of beam elements (default: boom.elements of the scene)");
-  sub->add_option("--modes,-k", options->modes,
-                  fmt::format("Number of vibration modes of the modal boom (default: {}, with static modes)", default_modes));
-  sub->add_flag("--static-modes", options->static_modes,
-                "Add the static correction modes to the modal boom (the default; docs/validation.md)");
-  sub->add_flag("--no-static-modes", options->no_static_modes,
-                "Vibration modes only (misses the static deflection under a hanging load)");
+  add_model_options(*sub, options->model);
   sub->add_option("--spin-rate", options->spin_rate, "Final spin rate of a hub scene [rad/s] (default: hub.spin_rate)");
-  sub->add_option("--stiffening", options->stiffening,
-                  "Geometric stiffening none|static|centrifugal|both (default: boom.stiffening of the scene)");
   add_dynamics_options(*sub, options->dynamics);
   sub->add_flag("--json", options->json, "Print the JSON summary on stdout instead of the text report");
   sub->add_option("--out", options->out,

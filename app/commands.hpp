@@ -1,7 +1,8 @@
 // The subcommands of the `ffrf` program. Each registers its options on the parent CLI11 app and
 // returns the function that runs it after parsing; the function returns the process exit code:
 // 0 success, 1 a computation or output failed (recommend: no model met the tolerance), 2 bad input
-// (scene file or command line), 3 a solver (KINSOL, CVODE, IDA, ARKODE) failed.
+// (scene file or command line), 3 a solver (KINSOL, CVODE, IDA, ARKODE) failed, 4 a regression
+// (`baseline check`: a quantity outside its tolerance).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -13,6 +14,7 @@ inline constexpr int exit_ok = 0;
 inline constexpr int exit_failure = 1;
 inline constexpr int exit_bad_input = 2;
 inline constexpr int exit_solver_failure = 3;
+inline constexpr int exit_regression = 4;
 
 struct Command {
   CLI::App* subcommand;
@@ -27,5 +29,6 @@ Command add_sweep_command(CLI::App& parent);            // command_sweep.cpp
 Command add_stability_command(CLI::App& parent);        // command_stability.cpp
 Command add_recommend_command(CLI::App& parent);        // command_recommend.cpp
 Command add_scene_reference_command(CLI::App& parent);  // command_scene_reference.cpp
+Command add_baseline_command(CLI::App& parent);         // command_baseline.cpp
 
 }  // namespace ffrf::app

@@ -15,7 +15,8 @@ int main(int argc, char** argv) {
                                 add_compare_command(app), add_sweep_command(app),
                                 add_stability_command(app),
                                 add_recommend_command(app),
-                                add_scene_reference_command(app)};
+                                add_scene_reference_command(app),
+                                add_baseline_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -54,14 +54,18 @@ std::string ffrf_version() {
 #endif
 }
 
-RunContext make_context(const std::string& scene_file, const scene::Scene& scene,
-                        const coupling::IntegratorSettings& settings) {
+std::string utc_date() {
   const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   std::tm utc{};
   ::gmtime_r(&now, &utc);
   char date[32];
   std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return {scene_file, &scene, settings, date, {}};
+  return date;
+}
+
+RunContext make_context(const std::string& scene_file, const scene::Scene& scene,
+                        const coupling::IntegratorSettings& settings) {
+  return {scene_file, &scene, settings, utc_date(), {}};
 }
 
 std::string static_report(const scene::Scene& scene, const study::ModelRun& run) {

@@ -23,6 +23,8 @@ struct RunContext {
 RunContext make_context(const std::string& scene_file, const scene::Scene& scene,
                         const coupling::IntegratorSettings& settings);
 std::string ffrf_version();
+// Now, ISO 8601 in UTC ("2025-01-31T12:00:00Z").
+std::string utc_date();
 
 // The static equilibrium in a few lines (draft and trim, tip deflection, wire, joint reaction).
 std::string static_report(const scene::Scene& scene, const study::ModelRun& run);

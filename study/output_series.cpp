@@ -79,15 +79,24 @@ std::vector<SeriesStats> series_stats(const std::vector<CraneOutputs>& samples, 
     s.static_value = series_reference(spec, statics);
     s.min = INFINITY;
     s.max = -INFINITY;
-    double sum_squares = 0.0;
+    double sum = 0.0, sum_squares = 0.0;
     for (std::size_t i = window.first; i < samples.size(); ++i) {
       const double v = series_value(spec, samples[i], statics);
       s.min = std::min(s.min, v);
       s.max = std::max(s.max, v);
+      sum += v;
       sum_squares += (v - s.static_value) * (v - s.static_value);
     }
     const std::size_t count = samples.size() - std::min(window.first, samples.size());
     s.rms = count > 0 ? std::sqrt(sum_squares / static_cast<double>(count)) : NAN;
+    s.mean = count > 0 ? sum / static_cast<double>(count) : NAN;
+    // Second pass about the mean (no cancellation of a large static part, e.g. the wire tension).
+    double sum_deviations = 0.0;
+    for (std::size_t i = window.first; i < samples.size(); ++i) {
+      const double d = series_value(spec, samples[i], statics) - s.mean;
+      sum_deviations += d * d;
+    }
+    s.standard_deviation = count > 0 ? std::sqrt(sum_deviations / static_cast<double>(count)) : NAN;
     stats.push_back(s);
   }
   return stats;

@@ -44,6 +44,8 @@ struct SeriesStats {
   double static_value = 0.0;  // the reference (0 for displacements from static)
   double min = 0.0, max = 0.0;
   double rms = 0.0;           // about static_value
+  double mean = 0.0;          // over the window
+  double standard_deviation = 0.0;  // about the mean (population: divided by the count)
 };
 // Statistics of every series over the window.
 std::vector<SeriesStats> series_stats(const std::vector<coupling::CraneOutputs>& samples,
