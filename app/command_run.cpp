@@ -12,10 +12,12 @@
 
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
+#include "app/option_checks.hpp"
 #include "report/crane_charts.hpp"
 #include "report/gnuplot.hpp"
 #include "report/output_directory.hpp"
 #include "report/run_report.hpp"
+#include "study/work_limits.hpp"
 
 namespace ffrf::app {
 namespace {
@@ -64,6 +66,12 @@ scene::BoomChoice boom_choice(const RunOptions& options, const scene::Scene& sce
       throw BadOption(fmt::format("--modes {}: not a valid mode count for N = {} elements ({} elastic DOFs) (valid range [1, {}])",
                                   choice.modes, choice.elements, dof, dof - 1));
     }
+  }
+  try {
+    study::check_run_memory(choice);
+  } catch (const study::SettingError& error) {  // name where the element count came from
+    throw BadOption(options.elements ? option_message(error)
+                                     : fmt::format("boom.elements = {} ({}): {}", choice.elements, options.scene, error.problem()));
   }
   return choice;
 }
@@ -136,14 +144,17 @@ Command add_run_command(CLI::App& parent) {
   CLI::App* sub = parent.add_subcommand("run", "Static equilibrium, then the dynamics of one crane model in the scene's waves");
   sub->add_option("scene", options->scene, "Scene file (TOML) with [hull], [boom], [cargo] and [wire], or a [hub]")->required();
   sub->add_option("--boom", options->boom, "Boom model " + scene::boom_kind_choices())->capture_default_str();
-  sub->add_option("--elements,-N", options->elements, "Number of beam elements (default: boom.elements of the scene)");
+  sub->add_option("--elements,-N", options->elements, "Number of beam elements (default: boom.elements of the scene)")
+      ->check(scene_key_count("boom.elements"));
   sub->add_option("--modes,-k", options->modes,
-                  fmt::format("Number of vibration modes of the modal boom (default: {}, with static modes)", default_modes));
+                  fmt::format("Number of vibration modes of the modal boom (default: {}, with static modes)", default_modes))
+      ->check(whole_number(1, 1000));
   sub->add_flag("--static-modes", options->static_modes,
                 "Add the static correction modes to the modal boom (the default; docs/validation.md)");
   sub->add_flag("--no-static-modes", options->no_static_modes,
                 "Vibration modes only (misses the static deflection under a hanging load)");
-  sub->add_option("--spin-rate", options->spin_rate, "Final spin rate of a hub scene [rad/s] (default: hub.spin_rate)");
+  sub->add_option("--spin-rate", options->spin_rate, "Final spin rate of a hub scene [rad/s] (default: hub.spin_rate)")
+      ->check(scene_key_range("hub.spin_rate"));
   sub->add_option("--stiffening", options->stiffening,
                   "Geometric stiffening none|static|centrifugal|both (default: boom.stiffening of the scene)");
   add_dynamics_options(*sub, options->dynamics);
