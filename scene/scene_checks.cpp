@@ -239,14 +239,14 @@ std::vector<SceneFinding> physics_findings(const Scene& scene) {
   if (scene.is_crane() && scene.boom.mount && scene.cargo && scene.wire) {
     const bool inside = check_hull_geometry(scene, found);
     if (scene.environment.gravity <= 0.0) {
-      found.error({"environment.gravity"},
+      found.error({"environment.gravity", "hull.mass"},
                   "a floating hull needs gravity: its buoyancy ρ g V holds it up (valid range (0, 30] m/s^2 with a "
                   "[hull])");
     } else if (inside) {
       check_hydrostatics(scene, found);
     }
     if (scene.mooring.surge_stiffness <= 0.0) {
-      found.error({"mooring.surge_stiffness"},
+      found.error({"mooring.surge_stiffness", "hull.mass"},
                   "surge has no restoring force: nothing but a mooring spring holds the hull in surge, so its static "
                   "equilibrium is undetermined; add [mooring] with surge_stiffness > 0 (the reference crane has 5e5 "
                   "N/m) (valid range (0, 1e+10] N/m with a [hull])");

@@ -299,9 +299,13 @@ class SceneReader {
         line = line_of(*found->second);
         value = show_value(*found->second);
       } else {
+        // An absent key: its section's line, else the first other key of the finding that is written.
         const KeySpec& spec = key_spec(key);
         if (const auto section = sections_.find(std::string(spec.section())); section != sections_.end()) {
           line = line_of(*section->second);
+        }
+        for (std::size_t k = 1; line == 0 && k < finding.keys.size(); ++k) {
+          if (const auto other = present_.find(finding.keys[k]); other != present_.end()) line = line_of(*other->second);
         }
         value = spec.presence == Presence::defaulted ? format_default(spec) + " (default)" : std::string();
       }
