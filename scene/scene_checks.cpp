@@ -147,13 +147,13 @@ void check_hydrostatics(const Scene& scene, Findings& found) {
   if (rest.deck_sinkage >= freeboard) {
     const bool bow = rest.trim > 0.0;
     found.error({"cargo.mass", "boom.root_x", "boom.angle", "hull.g1_aft_of_mid_length"},
-                fmt::format("the deck would be under water at rest: the load moment {:.4g} t m about mid-length trims "
-                            "the hull {} by θ = M/(Δ·GM_L) = {:.3g} deg (linear hydrostatics, GM_L = {:.4g} m), sinking "
-                            "the {} deck edge {:.4g} m for a freeboard of {:.4g} m; lighten the load, shorten the "
-                            "outreach or move G1 to balance it",
-                            std::abs(rest.load_moment) / 1e3, bow ? "bow down" : "stern down",
-                            std::abs(rest.trim) / kDegree, rest.metacentric_height, bow ? "bow" : "stern",
-                            rest.deck_sinkage, freeboard));
+                fmt::format("the deck would be under water at rest: the load moment {:.4g} t m about mid-length needs "
+                            "a trim of θ = M/(Δ·GM_L) = {:.3g} deg {} to balance (linear hydrostatics, GM_L = {:.4g} "
+                            "m), but the {} deck edge reaches the water at {:.3g} deg (freeboard {:.4g} m over half "
+                            "the length, {:g} m); lighten the load, shorten the outreach or move G1 to balance it",
+                            std::abs(rest.load_moment) / 1e3, std::abs(rest.trim) / kDegree, bow ? "bow down" : "stern down",
+                            rest.metacentric_height, bow ? "bow" : "stern",
+                            std::atan(freeboard / (0.5 * hull.length)) / kDegree, freeboard, 0.5 * hull.length));
     return;
   }
   if (rest.cargo_bottom < 0.0) {
