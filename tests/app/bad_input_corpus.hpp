@@ -50,7 +50,4 @@ struct TimedRun {
 };
 TimedRun run_ffrf_timed(const std::string& args, const fs::path& scratch, const std::string& prefix = {});
 
-// Every entry of a directory (names, sorted).
-std::vector<std::string> directory_entries(const fs::path& directory);
-
 }  // namespace ffrf::test

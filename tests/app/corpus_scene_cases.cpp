@@ -135,13 +135,6 @@ std::vector<SceneCase> generated_scene_cases() {
   return cases;
 }
 
-std::vector<std::string> directory_entries(const fs::path& directory) {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(directory)) names.push_back(entry.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 namespace {
 
 class CorpusScene : public ::testing::TestWithParam<SceneCase> {};

@@ -69,13 +69,6 @@ Child interrupt(pid_t pid, int signal) {
   return child;
 }
 
-std::vector<std::string> entries(const fs::path& directory) {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(directory)) names.push_back(entry.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 struct SignalCase {
   int signal;
   int exit_code;
@@ -102,7 +95,7 @@ TEST_P(CliSignals, RunStopsCleanlyAndLeavesNothingBesideOut) {
   EXPECT_LT(child.seconds_after_signal, 2.0) << "stopped at an output time, not by the watcher's forced exit";
   const std::string err = read_text(dir / "stderr.txt");
   EXPECT_NE(err.find(std::string("interrupted by ") + c.name + ": stopped"), std::string::npos) << err;
-  EXPECT_TRUE(entries(parent).empty()) << "left beside --out: " << entries(parent).front();
+  EXPECT_TRUE(directory_entries(parent).empty()) << "left beside --out: " << directory_entries(parent).front();
 }
 
 TEST_P(CliSignals, SweepWithWorkerThreadsStopsCleanly) {
@@ -120,8 +113,9 @@ TEST_P(CliSignals, SweepWithWorkerThreadsStopsCleanly) {
   EXPECT_EQ(WEXITSTATUS(child.status), c.exit_code) << read_text(dir / "stderr.txt");
   EXPECT_LT(child.seconds_after_signal, 2.0);
   EXPECT_NE(read_text(dir / "stderr.txt").find(std::string("ffrf sweep: interrupted by ") + c.name), std::string::npos);
-  EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"stderr.txt", "stdout.txt", "sweep"}));
-  EXPECT_TRUE(entries(out).empty()) << "the old marker no longer describes the directory: " << entries(out).front();
+  EXPECT_EQ(directory_entries(dir.path()), (std::vector<std::string>{"stderr.txt", "stdout.txt", "sweep"}));
+  EXPECT_TRUE(directory_entries(out).empty())
+      << "the old marker no longer describes the directory: " << directory_entries(out).front();
 }
 
 INSTANTIATE_TEST_SUITE_P(Signals, CliSignals,
