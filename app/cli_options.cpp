@@ -7,6 +7,8 @@
 #include <cstdio>
 
 #include "app/commands.hpp"
+#include "app/option_checks.hpp"
+#include "study/work_limits.hpp"
 
 namespace ffrf::app {
 
@@ -18,30 +20,39 @@ void add_dynamics_options(CLI::App& sub, DynamicsOptions& options) {
                      "index1, baumgarte, projection = full coordinates as an index-1 ODE (BDF): unstabilized (the constraint "
                      "drifts), with Baumgarte feedback (omega_b = 10 rad/s), or projected onto the constraint after every step")
       ->capture_default_str();
-  sub.add_option("--rtol", options.rtol, "Relative tolerance, in (0, 1)")->capture_default_str();
-  sub.add_option("--atol", options.atol, "Absolute tolerance (scaled by each coordinate's typical size), in (0, 1)")
-      ->capture_default_str();
-  sub.add_option("--duration", options.duration, "Simulated time [s] (default: simulation.duration of the scene)");
+  const CLI::Validator tolerance = finite_number(study::min_tolerance, study::max_tolerance);
+  sub.add_option("--rtol", options.rtol, "Relative tolerance")->capture_default_str()->check(tolerance);
+  sub.add_option("--atol", options.atol, "Absolute tolerance (scaled by each coordinate's typical size)")
+      ->capture_default_str()
+      ->check(tolerance);
+  sub.add_option("--duration", options.duration, "Simulated time [s] (default: simulation.duration of the scene)")
+      ->check(scene_key_range("simulation.duration"));
   sub.add_option("--max-order", options.max_order,
                  "Largest BDF order of cvode and ida, 1-5 (default: 2 for an undamped boom, where BDF 3-5 are not "
-                 "stable on its undamped stiff modes; 5 otherwise)");
+                 "stable on its undamped stiff modes; 5 otherwise)")
+      ->check(whole_number(1, 5));
   sub.add_option("--step", options.step,
                  "Fixed time step [s] of generalized-alpha (required) and arkode (0: adaptive), at most the output interval")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number(0.0, 3600.0, "s"));
 }
 
 void add_reference_options(CLI::App& sub, study::ReferenceOptions& options) {
   sub.add_option("--reference-elements", options.start_elements, "Reference: elements of the first level")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(scene_key_count("boom.elements"));
   sub.add_option("--reference-rtol", options.start_relative_tolerance,
                  "Reference: CVODE relative tolerance of the first level")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number(study::min_tolerance, study::max_tolerance));
   sub.add_option("--reference-bound", options.bound,
                  "Reference: converged when the worst normalized RMS change between two levels is below this")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number(0.0, 1.0, {}, true));
   sub.add_option("--reference-levels", options.max_levels,
                  "Reference: at most this many levels (each doubles the elements and tightens rtol 10x)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(whole_number(1, 6));
 }
 
 void add_stiffening_option(CLI::App& sub, std::string& stiffening) {
@@ -52,9 +63,11 @@ void add_stiffening_option(CLI::App& sub, std::string& stiffening) {
 
 void add_model_options(CLI::App& sub, ModelOptions& options) {
   sub.add_option("--boom", options.boom, "Boom model " + scene::boom_kind_choices() + " (default: nodal)");
-  sub.add_option("--elements,-N", options.elements, "Number of beam elements (default: boom.elements of the scene)");
+  sub.add_option("--elements,-N", options.elements, "Number of beam elements (default: boom.elements of the scene)")
+      ->check(scene_key_count("boom.elements"));
   sub.add_option("--modes,-k", options.modes,
-                 fmt::format("Number of vibration modes of the modal boom (default: {}, with static modes)", default_modal_modes));
+                 fmt::format("Number of vibration modes of the modal boom (default: {}, with static modes)", default_modal_modes))
+      ->check(whole_number(1, 1000));
   sub.add_flag("--static-modes", options.static_modes,
                "Add the static correction modes to the modal boom (the default; docs/validation.md)");
   sub.add_flag("--no-static-modes", options.no_static_modes,
@@ -100,6 +113,12 @@ scene::BoomChoice boom_choice(const ModelOptions& options, scene::BoomChoice cho
                                   choice.modes, choice.elements, dof, dof - 1));
     }
   }
+  try {
+    study::check_run_memory(choice);
+  } catch (const study::SettingError& error) {  // name where the element count came from
+    throw BadOption(options.elements ? option_message(error)
+                                     : fmt::format("boom.elements = {}: {}", choice.elements, error.problem()));
+  }
   return choice;
 }
 
@@ -116,6 +135,7 @@ std::string_view option_name(study::Setting setting) {
     case study::Setting::reference_levels: return "--reference-levels";
     case study::Setting::tolerance: return "--tolerance";
     case study::Setting::jobs: return "--jobs";
+    case study::Setting::elements: return "--elements";
   }
   return "?";
 }
@@ -152,6 +172,7 @@ std::optional<scene::Stiffening> stiffening_option(const std::string& stiffening
 std::optional<scene::Scene> load_scene(const std::string& path, const std::string& command, bool needs_base) {
   try {
     scene::Scene scene = scene::load_scene(path);
+    for (const std::string& warning : scene.warnings) fmt::print(stderr, "warning: {}\n", warning);
     if (needs_base && !scene.has_base()) {
       bad_input(command, fmt::format("{}: not a crane scene: it has neither a [hull] section (a crane needs [hull], [cargo], "
                                      "[wire] and boom.angle/root_x/root_y) nor a [hub]; `ffrf modes` analyses a single beam",

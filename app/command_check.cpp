@@ -48,6 +48,7 @@ Command add_check_command(CLI::App& parent) {
   return {sub, [scene_path] {
             try {
               const scene::Scene scene = scene::load_scene(*scene_path);
+              for (const std::string& warning : scene.warnings) fmt::print(stderr, "warning: {}\n", warning);
               fmt::print("{}: OK ({}{})\n", *scene_path, scene.name.empty() ? "" : scene.name + ": ", summary(scene));
               return exit_ok;
             } catch (const scene::SceneError& error) {

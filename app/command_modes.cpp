@@ -14,6 +14,7 @@
 
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
+#include "app/option_checks.hpp"
 #include "fem/beam_model.hpp"
 #include "report/campbell_report.hpp"
 #include "report/gnuplot.hpp"
@@ -49,11 +50,16 @@ void progress(const std::string& message) { app::progress("modes", message); }
 void progress_done() { app::progress("modes", ""); }
 int bad_input(const std::string& message) { return app::bad_input("modes", message); }
 
-double parse_finite(const std::string& name, const std::string& text, std::optional<double> minimum) {
-  const std::string range = minimum ? fmt::format("[{:g}, inf)", *minimum) : "(-inf, inf)";
+// The plausible ranges of the spin (the scene's hub.spin_rate) and the axial force (beyond 1e13 N
+// no boom section survives; the eigenproblem would lose all precision).
+constexpr double max_spin = 1000.0;        // [rad/s]
+constexpr double max_axial_force = 1e13;   // [N]
+
+double parse_finite(const std::string& name, const std::string& text, double minimum, double maximum, const char* unit) {
+  const std::string range = fmt::format("[{:g}, {:g}] {}", minimum, maximum, unit);
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || (minimum && value < *minimum)) {
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || value < minimum || value > maximum) {
     throw std::invalid_argument(fmt::format("{} {}: not a valid value (valid range {}, a finite number)", name, text, range));
   }
   return value;
@@ -61,8 +67,8 @@ double parse_finite(const std::string& name, const std::string& text, std::optio
 
 study::SpinRange parse_spin_range(const std::string& text) {
   const auto fail = [&](const std::string& why) {
-    throw std::invalid_argument(fmt::format("--spin-range {}: {} (expected a:b:n in rad/s with 0 <= a < b and an integer "
-                                            "count n in [2, 10000])", text, why));
+    throw std::invalid_argument(fmt::format("--spin-range {}: {} (expected a:b:n in rad/s with 0 <= a < b <= {:g} and an "
+                                            "integer count n in [2, 10000])", text, why, max_spin));
   };
   const auto first_colon = text.find(':');
   const auto second_colon = first_colon == std::string::npos ? std::string::npos : text.find(':', first_colon + 1);
@@ -82,6 +88,7 @@ study::SpinRange parse_spin_range(const std::string& text) {
   const double n = number(text.substr(second_colon + 1), "count n");
   if (a < 0.0) fail(fmt::format("first spin a = {:g} rad/s is negative", a));
   if (!(b > a)) fail(fmt::format("last spin b = {:g} must exceed the first a = {:g}", b, a));
+  if (b > max_spin) fail(fmt::format("last spin b = {:g} rad/s is beyond {:g} rad/s", b, max_spin));
   if (n != std::floor(n) || n < 2.0 || n > 10000.0) fail(fmt::format("count n = {:g} is not an integer in [2, 10000]", n));
   return {a, b, static_cast<int>(n)};
 }
@@ -115,9 +122,11 @@ int run_spinning(const ModesOptions& options, const scene::Scene& scene, const f
       throw std::invalid_argument(fmt::format("--spin {} and --spin-range {} exclude each other: give one spin rate or one "
                                               "range", *options.spin, *options.spin_range));
     }
-    if (options.spin) spin = parse_finite("--spin", *options.spin, 0.0);
+    if (options.spin) spin = parse_finite("--spin", *options.spin, 0.0, max_spin, "rad/s");
     if (options.spin_range) range = parse_spin_range(*options.spin_range);
-    if (options.axial_force) axial_force = parse_finite("--axial-force", *options.axial_force, std::nullopt);
+    if (options.axial_force) {
+      axial_force = parse_finite("--axial-force", *options.axial_force, -max_axial_force, max_axial_force, "N");
+    }
   } catch (const std::invalid_argument& error) {
     return bad_input(error.what());
   }
@@ -221,8 +230,10 @@ Command add_modes_command(CLI::App& parent) {
   auto options = std::make_shared<ModesOptions>();
   CLI::App* sub = parent.add_subcommand("modes", "Natural frequencies and mode shapes of the boom vs Euler–Bernoulli");
   sub->add_option("scene", options->scene, "Scene file (TOML)")->required();
-  sub->add_option("--elements,-N", options->elements, "Number of beam elements (default: boom.elements of the scene)");
-  sub->add_option("--modes,-k", options->modes, "Number of modes (default: 6, plus the rigid modes for free-free)");
+  sub->add_option("--elements,-N", options->elements, "Number of beam elements (default: boom.elements of the scene)")
+      ->check(scene_key_count("boom.elements"));
+  sub->add_option("--modes,-k", options->modes, "Number of modes (default: 6, plus the rigid modes for free-free)")
+      ->check(whole_number(1, 1000));
   sub->add_option("--boundary", options->boundary,
                   "Boundary condition " + fem::boundary_choices() + " (default: boom.boundary of the scene)");
   sub->add_option("--solver", options->solver, "Eigen solver " + modal::eigen_solver_choices())

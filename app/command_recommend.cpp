@@ -14,6 +14,7 @@
 
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
+#include "app/option_checks.hpp"
 #include "report/output_directory.hpp"
 #include "report/recommend_report.hpp"
 
@@ -123,7 +124,8 @@ Command add_recommend_command(CLI::App& parent) {
   sub->add_option("--outputs", options->outputs,
                   "Comma-separated outputs the tolerance applies to (default: cargo_heave,cargo_pitch,crane_heave,"
                   "crane_pitch,wire_tension,joint_moment for a crane; tip_deflection for a hub)");
-  sub->add_option("--duration", options->duration, "Simulated time [s] of every run (default: simulation.duration of the scene)");
+  sub->add_option("--duration", options->duration, "Simulated time [s] of every run (default: simulation.duration of the scene)")
+      ->check(scene_key_range("simulation.duration"));
   add_reference_options(*sub, options->reference);
   sub->add_flag("--json", options->json, "Print the JSON report on stdout instead of the text report");
   sub->add_option("--out", options->out, "Write recommendation.md and recommendation.json into this directory");

@@ -12,10 +12,12 @@
 
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
+#include "app/option_checks.hpp"
 #include "report/crane_charts.hpp"
 #include "report/gnuplot.hpp"
 #include "report/output_directory.hpp"
 #include "report/run_report.hpp"
+#include "study/work_limits.hpp"
 
 namespace ffrf::app {
 namespace {
@@ -97,7 +99,8 @@ Command add_run_command(CLI::App& parent) {
   CLI::App* sub = parent.add_subcommand("run", "Static equilibrium, then the dynamics of one crane model in the scene's waves");
   sub->add_option("scene", options->scene, "Scene file (TOML) with [hull], [boom], [cargo] and [wire], or a [hub]")->required();
   add_model_options(*sub, options->model);
-  sub->add_option("--spin-rate", options->spin_rate, "Final spin rate of a hub scene [rad/s] (default: hub.spin_rate)");
+  sub->add_option("--spin-rate", options->spin_rate, "Final spin rate of a hub scene [rad/s] (default: hub.spin_rate)")
+      ->check(scene_key_range("hub.spin_rate"));
   add_dynamics_options(*sub, options->dynamics);
   sub->add_flag("--json", options->json, "Print the JSON summary on stdout instead of the text report");
   sub->add_option("--out", options->out,

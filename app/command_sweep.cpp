@@ -17,6 +17,8 @@
 
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
+#include "app/option_checks.hpp"
+#include "report/output_directory.hpp"
 #include "report/gnuplot.hpp"
 #include "report/reference_report.hpp"
 #include "report/sweep_report.hpp"
@@ -62,6 +64,7 @@ std::optional<study::Shard> parse_shard(const std::string& text) {
 
 int merge(const SweepOptions& options) {
   if (options.out.empty()) return bad_input("sweep", "--merge needs --out DIR for the merged outputs");
+  report::check_output_directory(options.out, "report.md");
   std::vector<report::SweepRow> rows;
   for (const std::string& file : options.merge) {
     try {
@@ -118,7 +121,10 @@ int run_sweep(const SweepOptions& options) {
   } catch (const study::SettingError& error) {
     return bad_input("sweep", option_message(error));
   }
-  if (!options.out.empty()) report::png_terminal();  // fail before the computation when gnuplot is missing
+  if (!options.out.empty()) {
+    report::png_terminal();                                   // fail before the computation when gnuplot is missing
+    report::check_output_directory(options.out, "report.md");  // or when DIR cannot be written
+  }
 
   study::SweepStudy result;
   try {
@@ -158,12 +164,13 @@ Command add_sweep_command(CLI::App& parent) {
   sub->add_option("scene", options->scene, "Scene file (TOML) of a crane");
   sub->add_option("--out", options->out,
                   "Write sweep.csv, accuracy_speed.png, mode_count.png (with gnuplot scripts and data) and report.md here");
-  sub->add_option("--jobs,-j", options->jobs, "Worker threads (0: one per core)")->capture_default_str();
+  sub->add_option("--jobs,-j", options->jobs, "Worker threads (0: one per core)")->capture_default_str()->check(whole_number(0, 1024));
   sub->add_option("--shard", options->shard, "Run only the configurations with id % n == i (i/n)");
   sub->add_option("--merge", options->merge, "Join these shard CSVs (sweep.csv of each shard's --out) into --out DIR")
       ->expected(1, -1);
   sub->add_option("--duration", options->duration,
-                  fmt::format("Simulated time [s] (default: {:g} s with --quick, the scene's duration otherwise)", quick_duration));
+                  fmt::format("Simulated time [s] (default: {:g} s with --quick, the scene's duration otherwise)", quick_duration))
+      ->check(scene_key_range("simulation.duration"));
   sub->add_flag("--quick", options->quick,
                 "The small grid (the default): rigid, nodal N 1/4/16, modal k 1/2/4 +- static; cvode and generalized-alpha");
   sub->add_flag("--medium", options->medium,

@@ -24,10 +24,22 @@ enum class FailureKind {
   wire_slack,                  // the wire went slack
   snap_load,                   // the wire snapped taut again after slack
   buckling,                    // compression near or beyond the boom's Euler load
+  capsize,                     // the hull pitched past 90°
+  deck_submerged,              // a deck edge went under water (no green water or flooding modelled)
+  cargo_in_water,              // the cargo dipped into the water (no water forces on it modelled)
   model_error,                 // the model refused a state (e.g. a hull out of the water)
   setup,                       // invalid settings or a solver set-up failure
 };
 std::string_view to_string(FailureKind kind);  // "divergence", "step-size collapse", ...
+// Every kind, in declaration order (the user guide lists each: tests/app/test_user_guide_errors.cpp).
+inline constexpr FailureKind all_failure_kinds[] = {
+    FailureKind::divergence,     FailureKind::step_size_collapse, FailureKind::error_test_failures,
+    FailureKind::newton_divergence, FailureKind::too_much_work,   FailureKind::constraint_drift,
+    FailureKind::mass_not_positive_definite, FailureKind::unstable_explicit, FailureKind::wire_slack,
+    FailureKind::snap_load,      FailureKind::buckling,           FailureKind::capsize,
+    FailureKind::deck_submerged, FailureKind::cargo_in_water,     FailureKind::model_error,
+    FailureKind::setup,
+};
 
 struct Detection {
   FailureKind kind;

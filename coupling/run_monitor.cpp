@@ -8,6 +8,7 @@
 #include <string>
 
 #include "coupling/simulation.hpp"
+#include "coupling/stop_request.hpp"
 
 namespace ffrf::coupling {
 namespace {
@@ -32,6 +33,84 @@ double slope(const std::vector<double>& x, const std::vector<double>& y) {
   return denominator > 0.0 ? (n * sxy - sx * sy) / denominator : 0.0;
 }
 
+// The lowest point of a box (half extents) centred at `centre` [m] and turned by `angle` [rad].
+double lowest_point(const Eigen::Vector2d& centre, double angle, double half_length, double half_height) {
+  return centre.y() - half_length * std::abs(std::sin(angle)) - half_height * std::abs(std::cos(angle));
+}
+
+// Capsize: the hull pitched past 90° (fatal: nothing the model describes follows).
+void watch_capsize(const char* solver, double t, const CraneOutputs& sample) {
+  constexpr double kDegree = 3.14159265358979323846 / 180.0;
+  const double pitch = sample.hull.z();
+  if (std::abs(pitch) >= 90.0 * kDegree) {
+    throw SolverFailure(FailureKind::capsize, solver, format("the hull pitched to %.4g deg: it capsized", pitch / kDegree),
+                        t,
+                        "the crane is not stable under this load and sea: lower the load or the boom, enlarge the hull, "
+                        "or reduce the wave",
+                        pitch / kDegree);
+  }
+}
+
+// How far a sample's deck edges (the deeper one; > 0: under water) and the cargo's lowest corner
+// lie below the lowest wave trough −ζ_a (certainly wet there).
+double deck_immersion(const WaterLimits& water, const CraneOutputs& sample, bool& bow) {
+  const double pitch = sample.hull.z();
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (const double x : {water.hull_stern_x, water.hull_bow_x}) {
+    const double deck_y = sample.hull.y() + std::sin(pitch) * x + std::cos(pitch) * water.hull_deck_y;
+    if (-water.wave_amplitude - deck_y > deepest) {
+      deepest = -water.wave_amplitude - deck_y;
+      bow = x > 0.0;
+    }
+  }
+  return deepest;
+}
+double cargo_immersion(const WaterLimits& water, const CraneOutputs& sample) {
+  return -water.wave_amplitude - lowest_point(sample.cargo.head<2>(), sample.cargo.z(), water.cargo_half_length,
+                                              water.cargo_half_height);
+}
+
+// The post-run water detections: the first time a deck edge, and the cargo, went under water.
+void water_detections(const RunResult& result, const WaterLimits& water, std::vector<Detection>& found) {
+  double deck_first = -1.0, deck_deepest = 0.0, cargo_first = -1.0, cargo_deepest = 0.0;
+  bool bow = true;
+  for (std::size_t k = 0; k < result.samples.size(); ++k) {
+    bool at_bow = true;
+    const double deck = deck_immersion(water, result.samples[k], at_bow);
+    if (deck > 0.0) {
+      if (deck_first < 0.0) {
+        deck_first = result.time[k];
+        bow = at_bow;
+      }
+      deck_deepest = std::max(deck_deepest, deck);
+    }
+    if (water.cargo_half_length > 0.0) {
+      const double cargo = cargo_immersion(water, result.samples[k]);
+      if (cargo > 0.0) {
+        if (cargo_first < 0.0) cargo_first = result.time[k];
+        cargo_deepest = std::max(cargo_deepest, cargo);
+      }
+    }
+  }
+  if (deck_first >= 0.0) {
+    found.push_back({FailureKind::deck_submerged, deck_first, false,
+                     std::string(bow ? "the bow" : "the stern") +
+                         format(" deck edge went under water at t = %.4g s, at most %.3g m below the lowest wave trough: "
+                                "the box hull model has no water on deck or flooding, so the motions from then on are "
+                                "outside the model",
+                                deck_first, deck_deepest),
+                     "lighten the load or shorten the outreach, enlarge the hull's depth, or reduce the wave",
+                     deck_deepest});
+  }
+  if (cargo_first >= 0.0) {
+    found.push_back({FailureKind::cargo_in_water, cargo_first, false,
+                     format("the cargo dipped into the water at t = %.4g s, at most %.3g m below the lowest wave "
+                            "trough: the model has no water forces on the cargo",
+                            cargo_first, cargo_deepest),
+                     "shorten the wire, raise the boom, or reduce the crane's motion", cargo_deepest});
+  }
+}
+
 }  // namespace
 
 std::string_view to_string(FailureKind kind) {
@@ -47,6 +126,9 @@ std::string_view to_string(FailureKind kind) {
     case FailureKind::wire_slack: return "wire slack";
     case FailureKind::snap_load: return "snap load";
     case FailureKind::buckling: return "buckling";
+    case FailureKind::capsize: return "capsize";
+    case FailureKind::deck_submerged: return "deck submerged";
+    case FailureKind::cargo_in_water: return "cargo in water";
     case FailureKind::model_error: return "model error";
     case FailureKind::setup: return "set-up";
   }
@@ -66,11 +148,13 @@ FailureKind model_failure_kind(const std::exception& error) {
 }
 
 void DivergenceWatch::observe(double t, const CraneOutputs& sample) {
+  throw_if_stop_requested();  // SIGINT/SIGTERM: end the run at this output time
   const double deflection = sample.tip_deflection.norm();
   if (!std::isfinite(deflection) || !sample.cargo.allFinite() || !sample.hull.allFinite()) {
     throw SolverFailure(FailureKind::divergence, solver_, "the state is no longer finite", t,
                         "reduce the step or tighten --rtol/--atol; check the scene's stiffness and mass values");
   }
+  if (limits_.water.floating) watch_capsize(solver_, t, sample);
   if (limits_.boom_length <= 0.0) return;
   const double bound = limits_.deflection_limit * limits_.boom_length;
   // The window opens when |δ| first passes 10 % of the bound and closes only on a real decay below
@@ -208,6 +292,7 @@ std::vector<Detection> post_run_detections(const RunResult& result, const Monito
                                     "loss under compression is modelled",
                      ratio});
   }
+  if (limits.water.floating) water_detections(result, limits.water, found);
   const SolverStats& stats = result.stats;
   if (stats.steps > 10 && static_cast<double>(stats.error_test_failures) > limits.error_test_failure_ratio * static_cast<double>(stats.steps)) {
     found.push_back({FailureKind::error_test_failures, result.time.empty() ? 0.0 : result.time.back(), false,

@@ -1,6 +1,7 @@
 // The failure detectors every run carries (issue 5): while the run goes, a divergence watch on the
 // boom tip's elastic deflection (the linear floating-frame model is meaningless once it is a sizeable
-// fraction of the boom length); after the run, the wire's slack intervals and snap loads (tension
+// fraction of the boom length) and, for a floating hull, a capsize watch (pitch past 90°); after the
+// run, a deck edge or the cargo under water (what the model does not describe), the wire's slack intervals and snap loads (tension
 // from zero back to a peak), the clamp's constraint drift, the boom's compression against its Euler
 // buckling load π²EI/(4L²) (clamped-free), and a high rate of rejected steps. Solver failures
 // (step-size collapse, Newton divergence, non-positive-definite mass matrix, explicit instability)
@@ -18,6 +19,15 @@ namespace ffrf::coupling {
 struct RunResult;
 struct SolverStats;
 
+// A floating hull's box (relative to G1, hull frame) and the cargo's, for the capsize, deck and
+// cargo-in-water watch; the surface lies within ±wave_amplitude of still water (y = 0).
+struct WaterLimits {
+  bool floating = false;  // false: no water (a hub)
+  double hull_stern_x = 0.0, hull_bow_x = 0.0, hull_deck_y = 0.0;  // [m]
+  double cargo_half_length = 0.0, cargo_half_height = 0.0;          // [m]; 0: no cargo
+  double wave_amplitude = 0.0;                                      // ζ_a [m]
+};
+
 struct MonitorLimits {
   double boom_length = 0.0;               // L [m]; 0: no deflection watch
   double deflection_limit = 0.2;          // divergence bound on |tip deflection| / L [-]
@@ -27,9 +37,12 @@ struct MonitorLimits {
   double wire_unstretched_length = 0.0;   // L0 [m]; 0: no wire
   double static_tension = 0.0;            // the wire's tension at rest [N] (snap ratio); 0: unknown
   double error_test_failure_ratio = 0.3;  // warn when rejected steps exceed this fraction of steps
+  WaterLimits water = {};                 // capsize, deck submerged, cargo in water
 };
 
-// Watches each output sample; throws SolverFailure(divergence) with the growth rate σ of the
+// Watches each output sample: first a stop request (SIGINT/SIGTERM: throws coupling::Interrupted),
+// then, for a floating hull, capsize (|pitch| ≥ 90°: SolverFailure(capsize)); then
+// throws SolverFailure(divergence) with the growth rate σ of the
 // deflection: the least-squares slope of ln|δ| over its envelope (the record highs since |δ| passed
 // 10 % of the bound, kept through the dips of an oscillation until it decays below 1 %), NaN
 // ("unresolved") when the bound was passed within one output interval
@@ -63,7 +76,8 @@ std::vector<SnapLoad> snap_loads(const RunResult& result, const MonitorLimits& l
 // Largest |C| and the buckling load ratio (largest root compression / Euler load) over the samples.
 double max_constraint_drift(const RunResult& result);
 double max_buckling_load_ratio(const RunResult& result, const MonitorLimits& limits);
-// The post-run detections (non-fatal): wire slack, snap loads, constraint drift, buckling, rejected steps.
+// The post-run detections (non-fatal): wire slack, snap loads, constraint drift, buckling, a deck
+// edge or the cargo below the lowest wave trough (deck submerged, cargo in water), rejected steps.
 std::vector<Detection> post_run_detections(const RunResult& result, const MonitorLimits& limits);
 
 }  // namespace ffrf::coupling

@@ -13,13 +13,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "report/git_commit.hpp"
 #include "report/json.hpp"
 #include "report/run_report.hpp"
 
 namespace ffrf::report {
-
-// Defined in the generated git_commit.cpp (report/git_commit.cmake).
-const char* built_git_commit();
 
 namespace {
 

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "fem/boundary.hpp"
 #include "fem/mesh.hpp"
@@ -134,6 +135,9 @@ struct Scene {
   Radiation radiation;
   Mooring mooring;
   Simulation simulation;
+  // What the loader's physics checks found doubtful but not wrong (scene/scene_checks.hpp), each
+  // as "FILE:LINE: key = value: message"; the commands print them before any work.
+  std::vector<std::string> warnings;
 
   bool is_crane() const { return hull.has_value(); }  // then cargo, wire and boom.mount are present
   bool has_base() const { return hull.has_value() || hub.has_value(); }  // a time-domain system: hull or hub

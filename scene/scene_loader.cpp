@@ -11,6 +11,8 @@
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "scene/scene_checks.hpp"
+#include "scene/scene_file.hpp"
 #include "scene/scene_schema.hpp"
 
 namespace ffrf::scene {
@@ -69,7 +71,10 @@ class SceneReader {
     check_one_of_groups();
     if (problems_.empty()) check_scene();
     if (!problems_.empty()) throw SceneError(sorted(std::move(problems_)));
-    return build();
+    Scene scene = build();
+    check_physics(scene);
+    if (!problems_.empty()) throw SceneError(sorted(std::move(problems_)));
+    return scene;
   }
 
  private:
@@ -180,21 +185,29 @@ class SceneReader {
       case ValueKind::number: {
         QuantityResult result = QuantityError{fmt::format("expected a number (SI {}) or a \"value unit\" string",
                                                           si_unit(key.dimension).empty() ? "-" : si_unit(key.dimension))};
+        WrittenQuantity written{shown, ""};
         if (const auto* s = node.as_string()) {
           result = parse_quantity(s->get(), key.dimension, key.allow_infinity);
+          written = split_quantity(s->get()).value_or(WrittenQuantity{});
         } else if (node.is_number()) {
-          result = check_number(node.value<double>().value_or(0.0), key.allow_infinity);
+          result = check_bare_number(node.value<double>().value_or(0.0), key.dimension, key.allow_infinity);
         }
         if (const auto* error = std::get_if<QuantityError>(&result)) {
-          report(line, name, shown, fmt::format("{} (valid range {})", error->message, range));
-        } else if (const double value = std::get<double>(result); !key.range.contains(value)) {
-          report(line, name, shown, fmt::format("out of range (valid range {})", range));
+          const std::string slips = unit_required(key.dimension) && written.unit.empty()
+                                        ? did_you_mean(unit_slips(key, written.number, written.unit))
+                                        : std::string();
+          report(line, name, shown, fmt::format("{}{} (valid range {})", error->message, slips, range));
+        } else if (const double value = std::get<double>(result); !accepts(key, value)) {
+          report(line, name, shown,
+                 fmt::format("out of range (valid range {}){}", range,
+                             did_you_mean(unit_slips(key, written.number, written.unit))));
         } else {
           resolved_[name] = {value, {}};
         }
         return;
       }
       case ValueKind::integer: {
+        // A whole number within the range (the range is finite: no value can wrap on conversion).
         const auto value = node.value<double>();
         if (!node.is_number() || !value || !std::isfinite(*value) || std::floor(*value) != *value) {
           report(line, name, shown, fmt::format("expected a whole number (valid range {})", range));
@@ -270,21 +283,34 @@ class SceneReader {
         }
       }
     }
-    if (!crane_ || hub_) return;
-    const double boom_mass = boom_mass_per_length() * number("boom.length");
-    const double total = number("hull.mass") + boom_mass + number("cargo.mass");
-    const double buoyancy =
-        number("environment.water_density") * number("hull.length") * number("hull.width") * number("hull.depth");
-    if (total >= buoyancy) {
-      report(line_of(*present_.at("hull.mass")), "hull.mass", show_value(*present_.at("hull.mass")),
-             fmt::format("the loaded crane would sink: hull {:.6g} t + boom {:.6g} t + cargo {:.6g} t = {:.6g} t "
-                         "is not less than the buoyancy of the fully submerged hull ρ·L·B·D = {:.6g} t",
-                         number("hull.mass") / 1e3, boom_mass / 1e3, number("cargo.mass") / 1e3, total / 1e3,
-                         buoyancy / 1e3));
-    }
-    if (number("simulation.output_interval") > number("simulation.duration")) {
-      report(0, "simulation.output_interval", fmt::format("{}", number("simulation.output_interval")),
-             fmt::format("longer than simulation.duration = {} s", number("simulation.duration")));
+  }
+
+  // The cross-key physics of the built scene (scene_checks.hpp): errors are problems, warnings go
+  // with the scene. Each finding is reported at its first key, shown with the value as written.
+  void check_physics(Scene& scene) {
+    for (SceneFinding& finding : physics_findings(scene)) {
+      const std::string& key = finding.keys.front();
+      int line = 0;
+      std::string value;
+      if (const auto found = present_.find(key); found != present_.end()) {
+        line = line_of(*found->second);
+        value = show_value(*found->second);
+      } else {
+        // An absent key: its section's line, else the first other key of the finding that is written.
+        const KeySpec& spec = key_spec(key);
+        if (const auto section = sections_.find(std::string(spec.section())); section != sections_.end()) {
+          line = line_of(*section->second);
+        }
+        for (std::size_t k = 1; line == 0 && k < finding.keys.size(); ++k) {
+          if (const auto other = present_.find(finding.keys[k]); other != present_.end()) line = line_of(*other->second);
+        }
+        value = spec.presence == Presence::defaulted ? format_default(spec) + " (default)" : std::string();
+      }
+      if (finding.error) {
+        report(line, key, value, std::move(finding.message));
+      } else {
+        scene.warnings.push_back(format_problem({file_, line, 0, key, value, std::move(finding.message)}));
+      }
     }
   }
 
@@ -413,18 +439,17 @@ Scene load_scene_text(std::string_view toml_text, const std::string& file) {
     root = toml::parse(toml_text, file);
   } catch (const toml::parse_error& error) {
     const auto& begin = error.source().begin;
-    throw SceneError({{file, static_cast<int>(begin.line), static_cast<int>(begin.column), "", "",
-                       fmt::format("malformed TOML: {}", error.description())}});
+    SceneProblem problem{file, static_cast<int>(begin.line), static_cast<int>(begin.column), "", "",
+                         fmt::format("malformed TOML: {}", error.description())};
+    // Name the key and value of the line when it is a known scene key ("elements = 99999999999999999999").
+    if (const auto written = key_on_line(toml_text, problem.line)) {
+      problem.key = written->key;
+      problem.value = written->value;
+      if (const KeySpec* key = find_key(written->key)) problem.message += fmt::format(" (valid range {})", format_range(*key));
+    }
+    throw SceneError({std::move(problem)});
   }
   return SceneReader(file, toml_text).read(root);
-}
-
-Scene load_scene(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError({{path, 0, 0, "", "", "cannot open the scene file for reading"}});
-  std::ostringstream text;
-  text << in.rdbuf();
-  return load_scene_text(text.str(), path);
 }
 
 }  // namespace ffrf::scene

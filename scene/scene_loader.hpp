@@ -34,7 +34,11 @@ class SceneError : public std::runtime_error {
   std::vector<SceneProblem> problems_;
 };
 
-// Throws SceneError listing every problem; a file that cannot be read is one problem.
+// A scene file is a few kilobytes; anything beyond this is refused unread (a device, a wrong file).
+inline constexpr std::size_t max_scene_bytes = 1 << 20;
+
+// Throws SceneError listing every problem; a file that cannot be read (missing, a directory, larger
+// than max_scene_bytes) is one problem.
 Scene load_scene(const std::string& path);
 // The same for TOML text; `file` names it in messages.
 Scene load_scene_text(std::string_view toml_text, const std::string& file);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <fmt/format.h>
 #include <stdexcept>
@@ -15,10 +16,14 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
-constexpr Range kPositive{{0.0, false}, {kInf, false}};
-constexpr Range kNonNegative{{0.0, true}, {kInf, false}};
-constexpr Range kAny{};
+
+// Physical ranges: what a floating crane (or a beam on a hub) can plausibly have, not only what the
+// equations accept, so that a unit slip (210 Pa for 210 GPa, 12600 kg for 12600 t) or an overflow
+// (1e308) is named here instead of ending in a solver. [a, b] includes the ends, above() excludes a.
+constexpr Range between(double lower, double upper) { return {{lower, true}, {upper, true}}; }
+constexpr Range above(double lower, double upper) { return {{lower, false}, {upper, true}}; }
 constexpr Range kFraction{{0.0, true}, {1.0, false}};  // damping ratios below critical
+constexpr Range kAny{};  // choice and text keys
 
 constexpr KeySpec required(std::string_view name, Dimension dimension, Range range, std::string_view help,
                            std::string_view display_unit = {}) {
@@ -87,25 +92,29 @@ constexpr std::array kKeys{
     text("scene.name", "Short name shown in reports."),
     text("scene.description", "One-line description of the scene."),
     // [boom]
-    required("boom.length", length, kPositive, "Boom length L from the root B to the tip A′."),
-    required("boom.youngs_modulus", pressure, kPositive, "Young's modulus E of the equivalent section."),
-    required("boom.area", area, kPositive, "Cross-section area A (axial rigidity EA)."),
-    required("boom.second_moment", second_moment, kPositive,
+    required("boom.length", length, between(0.1, 1000.0), "Boom length L from the root B to the tip A′."),
+    required("boom.youngs_modulus", pressure, between(1e9, 1.5e12),
+             "Young's modulus E of the equivalent section (1 GPa: polymer composites; 210 GPa: steel).", "GPa"),
+    required("boom.area", area, between(1e-6, 100.0), "Cross-section area A (axial rigidity EA)."),
+    required("boom.second_moment", second_moment, between(1e-14, 1e4),
              "Second moment of area I about the axis normal to the plane (bending rigidity EI)."),
-    one_of("boom mass", "boom.mass_per_length", mass_per_length, kPositive,
+    one_of("boom mass", "boom.mass_per_length", mass_per_length, between(1e-3, 1e6),
            "Mass per unit length ρA. Give exactly one of boom.mass_per_length and boom.density."),
-    one_of("boom mass", "boom.density", density, kPositive,
+    one_of("boom mass", "boom.density", density, between(100.0, 25000.0),
            "Material density ρ; the mass per length is ρ·A. Give exactly one of boom.mass_per_length and "
            "boom.density."),
-    integer("boom.elements", Range{{1.0, true}, {kInf, false}}, 16.0,
+    integer("boom.elements", between(1.0, 10000.0), 16.0,
             "Number N of beam finite elements (`--elements` overrides it)."),
     choice("boom.boundary", "clamped-free|free-free|pinned-pinned", "clamped-free",
            "Boundary condition for `ffrf modes` (`--boundary` overrides it). The coupled crane always clamps "
            "the root to the hull (the floating-frame reference condition)."),
     crane_required("boom.angle", angle, Range{{0.0, false}, {kPi / 2.0, false}},
-                   "Boom angle above the hull's x axis (counter-clockwise).", "deg"),
-    crane_required("boom.root_x", length, kAny, "x of the boom root B relative to G1, hull frame."),
-    crane_required("boom.root_y", length, kAny, "y of the boom root B relative to G1, hull frame."),
+                   "Boom angle above the hull's x axis (counter-clockwise), with its unit: \"60 deg\".", "deg"),
+    crane_required("boom.root_x", length, between(-1000.0, 1000.0),
+                   "x of the boom root B relative to G1, hull frame; B must lie over the hull (between its ends)."),
+    crane_required("boom.root_y", length, between(-1000.0, 1000.0),
+                   "y of the boom root B relative to G1, hull frame; B must lie between the keel and half the hull "
+                   "length above the deck (a crane pedestal)."),
     defaulted("boom.damping_ratio", ratio, kFraction, 0.0,
               "Structural damping of the boom: fraction of critical in its first mode."),
     choice("boom.stiffening", "none|static|centrifugal|both", "none",
@@ -113,69 +122,83 @@ constexpr std::array kKeys{
            "and cargo (compression softens), centrifugal = from the frame's angular velocity, updated during the "
            "run; both; none = the linear floating-frame model (`--stiffening` overrides it)."),
     // [hull]
-    required("hull.mass", mass, kPositive, "Hull mass without the boom.", "t"),
-    required("hull.pitch_radius_of_gyration", length, kPositive, "Radius of gyration of the hull for pitch about G1."),
-    required("hull.length", length, kPositive, "Length of the box hull (x)."),
-    required("hull.width", length, kPositive, "Width (beam) of the box hull, normal to the plane."),
-    required("hull.depth", length, kPositive, "Depth of the box hull, keel to deck."),
-    required("hull.g1_above_keel", length, kNonNegative, "Height of G1 above the keel."),
-    required("hull.g1_aft_of_mid_length", length, kAny, "Distance of G1 aft of the hull's mid-length (< 0: forward)."),
+    required("hull.mass", mass, between(1e3, 1e9), "Hull mass without the boom.", "t"),
+    required("hull.pitch_radius_of_gyration", length, between(0.1, 1000.0),
+             "Radius of gyration of the hull for pitch about G1; at most the distance from G1 to the farthest "
+             "corner of the box."),
+    required("hull.length", length, between(1.0, 1000.0), "Length of the box hull (x)."),
+    required("hull.width", length, between(1.0, 1000.0), "Width (beam) of the box hull, normal to the plane."),
+    required("hull.depth", length, between(0.5, 100.0), "Depth of the box hull, keel to deck."),
+    required("hull.g1_above_keel", length, between(0.0, 100.0), "Height of G1 above the keel; below the deck."),
+    required("hull.g1_aft_of_mid_length", length, between(-500.0, 500.0),
+             "Distance of G1 aft of the hull's mid-length (< 0: forward); within half the hull length."),
     // [hub]
-    defaulted("hub.radius", length, kNonNegative, 0.0,
+    defaulted("hub.radius", length, between(0.0, 1000.0), 0.0,
               "Distance from the hub's axis to the boom root B, along the boom axis."),
-    defaulted("hub.angle", angle, kAny, 0.0, "Angle of the hub and the boom above the x axis at t = 0.", "deg"),
+    defaulted("hub.angle", angle, between(-2.0 * kPi, 2.0 * kPi), 0.0,
+              "Angle of the hub and the boom above the x axis at t = 0, with its unit: \"30 deg\".", "deg"),
     choice("hub.motion", "fixed|spin-up|constant-spin", "fixed",
            "Prescribed rotation: fixed = held at hub.angle; spin-up = θ(t) = (Ωs/Ts)[t²/2 + (Ts/2π)²(cos(2πt/Ts) − 1)] "
            "for t < Ts, then Ωs (t − Ts/2) (Simo & Vu-Quoc 1986); constant-spin = Ωs t from rest."),
-    defaulted("hub.spin_rate", angular_velocity, kAny, 0.0, "Final spin rate Ωs of spin-up and constant-spin."),
-    defaulted("hub.spin_up_time", time, kPositive, 15.0, "Spin-up time Ts."),
+    defaulted("hub.spin_rate", angular_velocity, between(-1000.0, 1000.0), 0.0,
+              "Final spin rate Ωs of spin-up and constant-spin."),
+    defaulted("hub.spin_up_time", time, between(0.01, 1e5), 15.0, "Spin-up time Ts."),
     // [cargo]
-    required("cargo.mass", mass, kPositive, "Cargo mass.", "t"),
-    required("cargo.length", length, kPositive, "Length of the cargo box (x)."),
-    required("cargo.height", length, kPositive, "Height of the cargo box (y)."),
-    required("cargo.hook_x", length, kAny, "x of the hook C relative to G2, cargo frame."),
-    required("cargo.hook_y", length, kAny, "y of the hook C relative to G2, cargo frame."),
-    optional("cargo.pitch_radius_of_gyration", length, kPositive,
-             "Radius of gyration for pitch about G2. Default: the uniform box's √((l² + h²)/12)."),
+    required("cargo.mass", mass, between(1.0, 1e8), "Cargo mass.", "t"),
+    required("cargo.length", length, between(0.01, 500.0), "Length of the cargo box (x)."),
+    required("cargo.height", length, between(0.01, 500.0), "Height of the cargo box (y)."),
+    required("cargo.hook_x", length, between(-500.0, 500.0),
+             "x of the hook C relative to G2, cargo frame; C must lie on or inside the box."),
+    required("cargo.hook_y", length, between(-500.0, 500.0),
+             "y of the hook C relative to G2, cargo frame; C must lie on or inside the box."),
+    optional("cargo.pitch_radius_of_gyration", length, between(0.001, 500.0),
+             "Radius of gyration for pitch about G2, at most half the box diagonal. Default: the uniform box's "
+             "√((l² + h²)/12)."),
     // [wire]
-    required("wire.unstretched_length", length, kPositive, "Unstretched length L0 of the wire rope."),
-    required("wire.stiffness", stiffness, kPositive, "Axial stiffness EA/L0 of the wire rope."),
+    required("wire.unstretched_length", length, between(0.01, 5000.0), "Unstretched length L0 of the wire rope."),
+    required("wire.stiffness", stiffness, between(1.0, 1e12), "Axial stiffness EA/L0 of the wire rope."),
     defaulted("wire.damping_ratio", ratio, kFraction, 0.0,
               "Axial damping as a fraction of critical for the cargo mass on the wire stiffness."),
     // [environment]
-    defaulted("environment.water_density", density, kPositive, 1025.0, "Sea-water density ρ."),
-    defaulted("environment.gravity", acceleration, kNonNegative, 9.81, "Gravitational acceleration g (0: none)."),
-    with_infinity(defaulted("environment.water_depth", length, Range{{0.0, false}, {kInf, true}}, kInf,
-                            "Water depth; `inf` (or \"inf\") is deep water.")),
+    defaulted("environment.water_density", density, between(800.0, 1500.0), 1025.0, "Sea-water density ρ."),
+    defaulted("environment.gravity", acceleration, between(0.0, 30.0), 9.81,
+              "Gravitational acceleration g (0: none; a floating hull needs it)."),
+    with_infinity(defaulted("environment.water_depth", length, between(0.5, 11000.0), kInf,
+                            "Water depth, more than the hull's draft; `inf` (or \"inf\") is deep water.")),
     // [wave]
-    required("wave.height", length, kNonNegative, "Wave height H, trough to crest."),
-    required("wave.period", time, kPositive, "Wave period T."),
+    required("wave.height", length, between(0.0, 30.0),
+             "Wave height H, trough to crest; below the breaking limits H/λ < 1/7 and H < 0.78 × water depth."),
+    required("wave.period", time, between(1.0, 40.0), "Wave period T."),
     choice("wave.direction", "following|head", "following",
            "following: the wave travels +x (the boom overhangs the bow at +x); head: it travels −x."),
-    defaulted("wave.ramp_periods", ratio, kNonNegative, 2.0, "The wave is ramped in over this many periods."),
+    defaulted("wave.ramp_periods", ratio, between(0.0, 100.0), 2.0, "The wave is ramped in over this many periods."),
     // [radiation]
-    defaulted("radiation.surge_added_mass", ratio, kNonNegative, 0.0, "A11 as a multiple of the displaced mass."),
-    defaulted("radiation.heave_added_mass", ratio, kNonNegative, 0.0, "A33 as a multiple of the displaced mass."),
-    defaulted("radiation.pitch_added_inertia", ratio, kNonNegative, 0.0,
+    defaulted("radiation.surge_added_mass", ratio, between(0.0, 10.0), 0.0, "A11 as a multiple of the displaced mass."),
+    defaulted("radiation.heave_added_mass", ratio, between(0.0, 10.0), 0.0, "A33 as a multiple of the displaced mass."),
+    defaulted("radiation.pitch_added_inertia", ratio, between(0.0, 10.0), 0.0,
               "A55 as a multiple of the hull's pitch inertia I55 about G1."),
-    defaulted("radiation.surge_damping", ratio, kNonNegative, 0.0, "B11 as a fraction of critical damping in surge."),
-    defaulted("radiation.heave_damping", ratio, kNonNegative, 0.0, "B33 as a fraction of critical damping in heave."),
-    defaulted("radiation.pitch_damping", ratio, kNonNegative, 0.0, "B55 as a fraction of critical damping in pitch."),
+    defaulted("radiation.surge_damping", ratio, between(0.0, 2.0), 0.0, "B11 as a fraction of critical damping in surge."),
+    defaulted("radiation.heave_damping", ratio, between(0.0, 2.0), 0.0, "B33 as a fraction of critical damping in heave."),
+    defaulted("radiation.pitch_damping", ratio, between(0.0, 2.0), 0.0, "B55 as a fraction of critical damping in pitch."),
     // [mooring]
-    defaulted("mooring.surge_stiffness", stiffness, kNonNegative, 0.0, "Surge spring on the hull at G1."),
+    defaulted("mooring.surge_stiffness", stiffness, between(0.0, 1e10), 0.0,
+              "Surge spring on the hull at G1. A floating hull needs it: nothing else restores surge, so its static "
+              "equilibrium would be undetermined."),
     // [simulation]
-    defaulted("simulation.duration", time, kPositive, 120.0, "Simulated time span."),
-    defaulted("simulation.output_interval", time, kPositive, 0.05, "Interval between output samples."),
+    defaulted("simulation.duration", time, above(0.0, 1e6), 120.0,
+              "Simulated time span; at most 1000000 output intervals."),
+    defaulted("simulation.output_interval", time, between(1e-5, 3600.0), 0.05,
+              "Interval between output samples; at most the duration."),
     choice("simulation.initial_state", "static-equilibrium|as-built", "static-equilibrium",
            "static-equilibrium: start from the static equilibrium (KINSOL); as-built: start from the "
            "undeformed posture as given."),
-    defaulted("simulation.cargo_lift", length, kNonNegative, 0.0,
+    defaulted("simulation.cargo_lift", length, between(0.0, 100.0), 0.0,
               "Raise the cargo this far above its starting posture and release it at rest: a dropped load whose "
               "wire goes slack and snaps taut (0: no lift)."),
-    defaulted("simulation.deflection_limit", ratio, Range{{0.0, false}, {kInf, false}}, 0.2,
+    defaulted("simulation.deflection_limit", ratio, above(0.0, 2.0), 0.2,
               "Divergence detector: a run stops as diverged when the boom tip's elastic deflection exceeds this "
               "fraction of the boom length (the linear floating-frame model is meaningless beyond it)."),
-    defaulted("simulation.constraint_drift_limit", length, kPositive, 1e-3,
+    defaulted("simulation.constraint_drift_limit", length, between(1e-12, 100.0), 1e-3,
               "Constraint-drift detector: a full-coordinate run is flagged when the clamp residual |C| at B exceeds "
               "this."),
 };
@@ -242,7 +265,57 @@ std::string format_range(const KeySpec& key) {
                                   format_bound(key.range.lower.value, factor),
                                   format_bound(key.range.upper.value, factor), key.range.upper.closed ? ']' : ')');
   const std::string_view unit = key.kind == ValueKind::number ? display_unit(key) : std::string_view{};
-  return unit.empty() ? range : range + " " + std::string(unit);
+  if (!unit.empty()) range += " " + std::string(unit);
+  return key.allow_infinity ? range + " or inf" : range;
+}
+
+bool accepts(const KeySpec& key, double value) {
+  return key.range.contains(value) || (key.allow_infinity && value == kInf);
+}
+
+std::vector<std::string> unit_slips(const KeySpec& key, std::string_view number, std::string_view written_unit) {
+  if (key.kind != ValueKind::number) return {};
+  double value = 0.0;
+  const std::string_view digits = !number.empty() && number.front() == '+' ? number.substr(1) : number;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (ec != std::errc{} || end != digits.data() + digits.size() || !std::isfinite(value) || value == 0.0) return {};
+  // The middle of the range: the default when there is one, else the geometric (or plain) mean of its ends.
+  const Range& range = key.range;
+  double middle = 0.5 * (range.lower.value + range.upper.value);
+  if (key.presence == Presence::defaulted && key.default_value != 0.0 && std::isfinite(key.default_value)) {
+    middle = key.default_value;
+  } else if (range.lower.value > 0.0) {
+    middle = std::sqrt(range.lower.value * range.upper.value);
+  }
+  const auto distance = [&](double si) {
+    return middle > 0.0 && si > 0.0 ? std::abs(std::log(si / middle)) : std::abs(si - middle);
+  };
+  std::vector<std::pair<double, double>> found;  // (distance, SI value)
+  std::vector<std::string> names;
+  for (const UnitChoice& unit : units_of(key.dimension)) {
+    const double si = value * unit.factor;
+    if (unit.symbol == written_unit || (written_unit.empty() && !unit_required(key.dimension) && unit.factor == 1.0)) {
+      continue;
+    }
+    if (!range.contains(si)) continue;
+    const bool same = std::any_of(found.begin(), found.end(), [&](const auto& f) { return f.second == si; });
+    if (same) continue;
+    found.emplace_back(distance(si), si);
+    names.push_back(fmt::format("\"{} {}\"", number, unit.symbol));
+  }
+  std::vector<std::size_t> order(found.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return found[a].first < found[b].first; });
+  std::vector<std::string> sorted;
+  for (std::size_t i = 0; i < order.size() && i < 2; ++i) sorted.push_back(names[order[i]]);
+  return sorted;
+}
+
+std::string did_you_mean(const std::vector<std::string>& suggestions) {
+  if (suggestions.empty()) return {};
+  std::string text = "; did you mean " + suggestions.front();
+  for (std::size_t i = 1; i < suggestions.size(); ++i) text += " or " + suggestions[i];
+  return text + "?";
 }
 
 std::string format_default(const KeySpec& key) {

@@ -9,6 +9,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "scene/units.hpp"
 
@@ -77,8 +78,16 @@ const KeySpec* find_key(std::string_view dotted_name);
 // The key spec by name; throws std::logic_error for a name that is not in the table (a bug).
 const KeySpec& key_spec(std::string_view dotted_name);
 
-// "(0, inf) m", "[1, inf)", "(0, 90) deg" in the key's display unit.
+// "[0.1, 1000] m", "[1, 10000]", "(0, 90) deg" in the key's display unit ("... or inf" where allowed).
 std::string format_range(const KeySpec& key);
+// Whether a value (SI) is valid for the key: inside its range, or +inf where allowed.
+bool accepts(const KeySpec& key, double value);
+// A unit slip: the other units of the key's dimension in which `number` (as written, with
+// `written_unit`; empty for a bare SI number) would lie in the key's range, as "\"210 GPa\"",
+// nearest the middle of the range first (at most two).
+std::vector<std::string> unit_slips(const KeySpec& key, std::string_view number, std::string_view written_unit);
+// "; did you mean A?" or "; did you mean A or B?" (empty for no suggestion).
+std::string did_you_mean(const std::vector<std::string>& suggestions);
 // "16", "clamped-free", "inf m", "0.02"; empty when the key has no default.
 std::string format_default(const KeySpec& key);
 // The closest known key to a misspelled dotted name (edit distance), if any is close enough.

@@ -145,25 +145,64 @@ double unit_factor(std::string_view unit, Dimension dimension) {
   return found->factor;
 }
 
+bool unit_required(Dimension dimension) { return dimension == Dimension::angle; }
+
+std::vector<UnitChoice> units_of(Dimension dimension) {
+  std::vector<UnitChoice> units;
+  for (const Unit& unit : kUnits) {
+    if (unit.dimension == dimension && unit.listed) units.push_back({unit.symbol, unit.factor});
+  }
+  return units;
+}
+
+std::optional<WrittenQuantity> split_quantity(std::string_view text) {
+  const std::string_view trimmed = trim(text);
+  if (trimmed.empty()) return std::nullopt;
+  // Optional leading '+', which std::from_chars does not accept.
+  const std::string_view number_text = trimmed.front() == '+' ? trimmed.substr(1) : trimmed;
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(number_text.data(), number_text.data() + number_text.size(), value);
+  if (end == number_text.data() || (ec != std::errc{} && ec != std::errc::result_out_of_range)) return std::nullopt;
+  const auto used = static_cast<std::size_t>(end - trimmed.data());
+  return WrittenQuantity{std::string(trim(trimmed.substr(0, used))), std::string(trim(trimmed.substr(used)))};
+}
+
 QuantityResult check_number(double value, bool allow_infinity) {
   if (std::isnan(value)) return QuantityError{"not a number (NaN)"};
   if (std::isinf(value) && !allow_infinity) return QuantityError{"infinite values are not allowed here"};
   return value;
 }
 
+QuantityResult check_bare_number(double value, Dimension dimension, bool allow_infinity) {
+  auto checked = check_number(value, allow_infinity);
+  if (std::holds_alternative<QuantityError>(checked)) return checked;
+  if (unit_required(dimension) && value != 0.0 && std::isfinite(value)) {
+    return QuantityError{fmt::format("{} needs its unit: a bare number could be degrees or radians ({})",
+                                     dimension_name(dimension), accepted_units(dimension))};
+  }
+  return checked;
+}
+
 QuantityResult parse_quantity(std::string_view text, Dimension dimension, bool allow_infinity) {
   const std::string_view trimmed = trim(text);
   if (trimmed.empty()) return QuantityError{fmt::format("empty value, expected {}", dimension_name(dimension))};
-  // Optional leading '+', which std::from_chars does not accept.
-  const std::string_view number_text = trimmed.front() == '+' ? trimmed.substr(1) : trimmed;
+  const std::optional<WrittenQuantity> written = split_quantity(trimmed);
   double value = 0.0;
-  const auto [end, ec] = std::from_chars(number_text.data(), number_text.data() + number_text.size(), value);
-  if (ec != std::errc{} || end == number_text.data()) {
+  if (written) {
+    const std::string_view number = written->number.front() == '+' ? std::string_view(written->number).substr(1)
+                                                                     : std::string_view(written->number);
+    const auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
+    if (ec == std::errc::result_out_of_range) {
+      return QuantityError{fmt::format("{} is beyond the range of a double-precision number", written->number)};
+    }
+  }
+  if (!written) {
     return QuantityError{fmt::format("expected a number optionally followed by a unit ({}), e.g. \"10 {}\"",
                                      accepted_units(dimension), si_unit(dimension))};
   }
-  const std::string_view unit = trim(std::string_view(end, static_cast<std::size_t>(number_text.data() + number_text.size() - end)));
-  const Unit* found = unit.empty() ? &kUnits.front() : find_unit(unit, dimension);  // no unit: SI
+  const std::string_view unit = written->unit;
+  if (unit.empty()) return check_bare_number(value, dimension, allow_infinity);  // no unit: SI
+  const Unit* found = find_unit(unit, dimension);
   if (found == nullptr) {
     if (const Unit* other = find_any_unit(unit); other != nullptr) {
       return QuantityError{fmt::format("{} is {}, expected {} ({})", unit,

@@ -3,28 +3,38 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "coupling/error_metrics.hpp"
 #include "study/error_measure.hpp"
+#include "study/work_limits.hpp"
 
 namespace ffrf::study {
 
 void validate(const ReferenceOptions& o) {
-  if (o.start_elements < 1) {
-    throw SettingError(Setting::reference_elements, fmt::format("{}", o.start_elements),
-                       "not a valid element count (valid range [1, inf))");
-  }
-  if (!(o.start_relative_tolerance > 0.0 && o.start_relative_tolerance < 1.0)) {
-    throw SettingError(Setting::reference_tolerance, fmt::format("{}", o.start_relative_tolerance),
-                       "not a valid tolerance (valid range (0, 1))");
-  }
-  if (!(o.bound > 0.0 && std::isfinite(o.bound))) {
-    throw SettingError(Setting::reference_bound, fmt::format("{}", o.bound), "not a valid bound (valid range (0, inf))");
-  }
   if (o.max_levels < 1 || o.max_levels > 6) {
     throw SettingError(Setting::reference_levels, fmt::format("{}", o.max_levels),
                        "not a valid level count (valid range [1, 6])");
+  }
+  // The finest level (N0·2^(levels−1) elements, rtol0·10^−(levels−1)) within the work limits.
+  const int doubling = 1 << (o.max_levels - 1);
+  const int max_start = std::max(1, max_nodal_elements() / doubling);
+  if (o.start_elements < 1 || o.start_elements > max_start) {
+    throw SettingError(Setting::reference_elements, fmt::format("{}", o.start_elements),
+                       fmt::format("not a valid element count for {} levels (valid range [1, {}]: the finest level's "
+                                   "{}·{} elements within the memory limit)",
+                                   o.max_levels, max_start, max_start, doubling));
+  }
+  const double finest = std::pow(0.1, o.max_levels - 1);
+  if (!(o.start_relative_tolerance >= min_tolerance / finest && o.start_relative_tolerance <= max_tolerance)) {
+    throw SettingError(Setting::reference_tolerance, fmt::format("{}", o.start_relative_tolerance),
+                       fmt::format("not a valid tolerance for {} levels (valid range [{:g}, {:g}]: the finest level "
+                                   "divides it by {:g})",
+                                   o.max_levels, min_tolerance / finest, max_tolerance, 1.0 / finest));
+  }
+  if (!(o.bound > 0.0 && o.bound < 1.0)) {
+    throw SettingError(Setting::reference_bound, fmt::format("{}", o.bound), "not a valid bound (valid range (0, 1))");
   }
 }
 

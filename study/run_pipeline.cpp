@@ -9,6 +9,8 @@
 
 #include "coupling/planar.hpp"
 #include "fem/analytic_beam.hpp"
+#include "scene/scene_checks.hpp"
+#include "study/work_limits.hpp"
 
 namespace ffrf::study {
 
@@ -25,6 +27,7 @@ std::string_view to_string(Setting setting) {
     case Setting::reference_levels: return "reference levels";
     case Setting::tolerance: return "error tolerance";
     case Setting::jobs: return "worker threads";
+    case Setting::elements: return "boom elements";
   }
   return "?";
 }
@@ -43,14 +46,27 @@ coupling::MonitorLimits monitor_limits(const scene::Scene& scene) {
   limits.constraint_drift_limit = scene.simulation.constraint_drift_limit;
   limits.buckling_load = *fem::euler_buckling_load(mesh, fem::Boundary::clamped_free);  // the root is clamped
   limits.wire_unstretched_length = scene.wire ? scene.wire->unstretched_length : 0.0;
+  if (scene.is_crane()) {  // a floating hull: capsize, deck and cargo-in-water watch
+    const scene::Hull& hull = *scene.hull;
+    limits.water.floating = true;
+    limits.water.hull_stern_x = hull.g1_aft_of_mid_length - 0.5 * hull.length;
+    limits.water.hull_bow_x = hull.g1_aft_of_mid_length + 0.5 * hull.length;
+    limits.water.hull_deck_y = hull.depth - hull.g1_above_keel;
+    if (scene.cargo) {
+      limits.water.cargo_half_length = 0.5 * scene.cargo->length;
+      limits.water.cargo_half_height = 0.5 * scene.cargo->height;
+    }
+    limits.water.wave_amplitude = scene.wave ? 0.5 * scene.wave->height : 0.0;
+  }
   return limits;
 }
 
 coupling::IntegratorSettings integrator_settings(const scene::Scene& scene, const DynamicsRequest& request) {
   for (const auto& [setting, value] : {std::pair{Setting::relative_tolerance, request.relative_tolerance},
                                        std::pair{Setting::absolute_tolerance, request.absolute_tolerance}}) {
-    if (!(value > 0.0 && value < 1.0)) {
-      throw SettingError(setting, fmt::format("{}", value), "not a valid tolerance (valid range (0, 1))");
+    if (!(value >= min_tolerance && value <= max_tolerance)) {
+      throw SettingError(setting, fmt::format("{}", value),
+                         fmt::format("not a valid tolerance (valid range [{:g}, {:g}])", min_tolerance, max_tolerance));
     }
   }
   coupling::IntegratorSettings settings;
@@ -64,6 +80,14 @@ coupling::IntegratorSettings integrator_settings(const scene::Scene& scene, cons
                        fmt::format("shorter than one output interval of the scene ({} s) (valid range [{}, inf) s)",
                                    settings.output_interval, settings.output_interval));
   }
+  if (settings.duration / settings.output_interval > scene::max_output_samples) {
+    throw SettingError(Setting::duration, fmt::format("{}", settings.duration),
+                       fmt::format("{:.4g} output samples at the scene's output interval {} s, more than the limit of "
+                                   "{:g} (valid range [{}, {:g}] s)",
+                                   settings.duration / settings.output_interval, settings.output_interval,
+                                   scene::max_output_samples, settings.output_interval,
+                                   scene::max_output_samples * settings.output_interval));
+  }
   if (!(request.fixed_step >= 0.0 && request.fixed_step <= settings.output_interval)) {
     throw SettingError(Setting::fixed_step, fmt::format("{}", request.fixed_step),
                        fmt::format("not a valid fixed step (valid range [0, {}] s, the output interval)",
@@ -73,6 +97,12 @@ coupling::IntegratorSettings integrator_settings(const scene::Scene& scene, cons
     throw SettingError(Setting::fixed_step, "0",
                        fmt::format("generalized-alpha is a fixed-step method: give a fixed step in (0, {}] s, e.g. 0.01",
                                    settings.output_interval));
+  }
+  if (request.fixed_step > 0.0 && settings.duration / request.fixed_step > max_fixed_steps) {
+    throw SettingError(Setting::fixed_step, fmt::format("{}", request.fixed_step),
+                       fmt::format("{:.3g} steps for {} s, more than the limit of {:g} (valid range [{:.3g}, {}] s)",
+                                   settings.duration / request.fixed_step, settings.duration, max_fixed_steps,
+                                   settings.duration / max_fixed_steps, settings.output_interval));
   }
   settings.fixed_step = request.fixed_step;
   if (request.max_order != 0 && (request.max_order < 1 || request.max_order > 5)) {
@@ -89,6 +119,7 @@ long ModelRun::slack_events() const {
 }
 
 PreparedRun prepare_run(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes) {
+  check_run_memory(choice);
   PreparedRun prepared;
   prepared.choice = choice;
   prepared.equations = scene::build_crane(scene, choice, modes);

@@ -28,7 +28,7 @@ namespace ffrf::study {
 // A setting a study was given, in neutral words (the command line maps each to its option).
 enum class Setting {
   relative_tolerance, absolute_tolerance, duration, fixed_step, max_order,
-  reference_elements, reference_tolerance, reference_bound, reference_levels, tolerance, jobs,
+  reference_elements, reference_tolerance, reference_bound, reference_levels, tolerance, jobs, elements,
 };
 std::string_view to_string(Setting setting);  // "relative tolerance", ...
 
@@ -55,10 +55,17 @@ struct DynamicsRequest {
   int max_order = 0;               // largest BDF order of cvode/ida; 0: from the physics
 };
 
+// The tolerances every run accepts: tighter than 1e-12 is at the edge of what the integrators
+// resolve in double precision (IDA at 1e-14 crawls for minutes over 2 s of the reference crane),
+// looser than 0.1 resolves nothing.
+inline constexpr double min_tolerance = 1e-12, max_tolerance = 0.1;
+
 // The settings for a scene: its output interval, the duration, the failure detectors' bounds of
 // the scene (monitor_limits), and the BDF order limit from the physics when not given: 2 for an
 // undamped boom (BDF 3–5 are held to tiny steps by its undamped stiff modes on the imaginary
-// axis; 2 is A-stable), 5 otherwise. Throws SettingError for a value out of range.
+// axis; 2 is A-stable), 5 otherwise. Throws SettingError for a value out of range, for more output
+// samples than scene::max_output_samples and for more fixed steps than max_fixed_steps
+// (study/work_limits.hpp).
 coupling::IntegratorSettings integrator_settings(const scene::Scene& scene, const DynamicsRequest& request);
 
 // The failure detectors' bounds for a scene (deflection and drift limits, the boom's Euler load,
@@ -97,7 +104,8 @@ struct ModelRun {
 };
 
 // Builds the crane (modes from `modes`, or solved here), solves its static equilibrium, applies
-// the scene's initial state. Throws scene::SceneError (the scene cannot make this crane) and
+// the scene's initial state. Throws SettingError when the model is beyond the memory limit
+// (study/work_limits.hpp), scene::SceneError (the scene cannot make this crane) and
 // coupling::SolverFailure (KINSOL).
 PreparedRun prepare_run(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes = nullptr);
 

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <exception>
+
 #include <atomic>
 #include <cmath>
 #include <mutex>
@@ -95,18 +97,26 @@ SweepStudy sweep(const scene::Scene& scene, const SweepRequest& request,
   std::atomic<std::size_t> next{0};
   std::size_t done = 0;
   std::mutex progress_mutex;
+  std::exception_ptr escaped;  // what a worker could not turn into a row (an interrupt): rethrown after the join
   auto worker = [&] {
-    for (std::size_t i = next++; i < configs.size(); i = next++) {
-      study.results[i] = run_configuration(setup, configs[i]);
+    try {
+      for (std::size_t i = next++; i < configs.size(); i = next++) {
+        study.results[i] = run_configuration(setup, configs[i]);
+        const std::lock_guard lock(progress_mutex);
+        ++done;
+        if (progress) progress(study.results[i], done, configs.size());
+      }
+    } catch (...) {
       const std::lock_guard lock(progress_mutex);
-      ++done;
-      if (progress) progress(study.results[i], done, configs.size());
+      if (!escaped) escaped = std::current_exception();
+      next = configs.size();  // hand out nothing more
     }
   };
   std::vector<std::thread> threads;
   const std::size_t count = std::min<std::size_t>(static_cast<std::size_t>(request.jobs), configs.size());
   for (std::size_t t = 0; t < count; ++t) threads.emplace_back(worker);
   for (std::thread& thread : threads) thread.join();
+  if (escaped) std::rethrow_exception(escaped);
   return study;
 }
 

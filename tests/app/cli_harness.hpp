@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -63,6 +64,14 @@ inline RunResult run_ffrf(const std::string& args, const fs::path& scratch) {
   const int status = std::system(command.c_str());
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return {code, read_text(out), read_text(err)};
+}
+
+// Every entry of a directory (names, sorted): what a command left behind.
+inline std::vector<std::string> directory_entries(const fs::path& directory) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(directory)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 inline std::string source_file(const std::string& relative) { return std::string(FFRF_SOURCE_DIR "/") + relative; }

@@ -59,18 +59,18 @@ TEST_P(CliBadScene, CheckAndModesNameFileKeyValueAndRange) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cli, CliBadScene,
-    ::testing::Values(BadScene{"length = 10.0", "boom.length", "length = 0", "0", "(0, inf) m"},
-                      BadScene{"length = 10.0", "boom.length", "length = -10.0", "-10.0", "(0, inf) m"},
+    ::testing::Values(BadScene{"length = 10.0", "boom.length", "length = 0", "0", "[0.1, 1000] m"},
+                      BadScene{"length = 10.0", "boom.length", "length = -10.0", "-10.0", "[0.1, 1000] m"},
                       BadScene{"youngs_modulus = 2.1e11", "boom.youngs_modulus", "youngs_modulus = -2.1e11",
-                               "-2.1e11", "(0, inf) Pa"},
-                      BadScene{"area = 0.01", "boom.area", "area = 0.0", "0.0", "(0, inf) m^2"},
+                               "-2.1e11", "[1, 1500] GPa"},
+                      BadScene{"area = 0.01", "boom.area", "area = 0.0", "0.0", "[1e-06, 100] m^2"},
                       BadScene{"second_moment = 8.333e-6", "boom.second_moment", "second_moment = 0", "0",
-                               "(0, inf) m^4"},
-                      BadScene{"density = 7850.0", "boom.density", "density = -7850", "-7850", "(0, inf) kg/m^3"},
-                      BadScene{"elements = 16", "boom.elements", "elements = 0", "0", "[1, inf)"},
-                      BadScene{"elements = 16", "boom.elements", "elements = -3", "-3", "[1, inf)"},
-                      BadScene{"length = 10.0", "boom.length", "length = \"10 kg\"", "\"10 kg\"", "(0, inf) m"},
-                      BadScene{"area = 0.01", "boom.area", "area = nan", "nan", "(0, inf) m^2"}),
+                               "[1e-14, 10000] m^4"},
+                      BadScene{"density = 7850.0", "boom.density", "density = -7850", "-7850", "[100, 25000] kg/m^3"},
+                      BadScene{"elements = 16", "boom.elements", "elements = 0", "0", "[1, 10000]"},
+                      BadScene{"elements = 16", "boom.elements", "elements = -3", "-3", "[1, 10000]"},
+                      BadScene{"length = 10.0", "boom.length", "length = \"10 kg\"", "\"10 kg\"", "[0.1, 1000] m"},
+                      BadScene{"area = 0.01", "boom.area", "area = nan", "nan", "[1e-06, 100] m^2"}),
     [](const ::testing::TestParamInfo<BadScene>& param_info) {
       // Readable test names from the rewritten line, e.g. "length_m10_0" for "length = -10.0".
       std::string name;

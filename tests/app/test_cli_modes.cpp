@@ -82,7 +82,7 @@ fs::path write_spin_scene(const TempDir& dir) {
   const fs::path path = dir / "spin_up_beam.toml";
   write_text(path,
              "[scene]\nname = \"spin-up beam\"\ndescription = \"test-local copy of the spin-up beam\"\n\n"
-             "[boom]\nlength = 10.0\nyoungs_modulus = 2.8e7\narea = 1.0\nsecond_moment = 5.0e-4\ndensity = 1.2\n"
+             "[boom]\nlength = 10.0\nyoungs_modulus = 7.0e10\narea = 4.0e-4\nsecond_moment = 2.0e-7\nmass_per_length = 1.2\n"
              "elements = 32\nboundary = \"clamped-free\"\n");
   return path;
 }
@@ -189,7 +189,10 @@ TEST_P(CliModesBadSpin, ExitsTwoNamingOptionAndValue) {
 INSTANTIATE_TEST_SUITE_P(
     Values, CliModesBadSpin,
     ::testing::Values(BadSpinInput{"--spin -1", "--spin -1"}, BadSpinInput{"--spin nan", "--spin nan"},
-                      BadSpinInput{"--spin 1x", "valid range [0, inf)"},
+                      BadSpinInput{"--spin 1x", "valid range [0, 1000] rad/s"},
+                      BadSpinInput{"--spin 1e308", "valid range [0, 1000] rad/s"},
+                      BadSpinInput{"--spin-range 0:1e308:3", "beyond 1000 rad/s"},
+                      BadSpinInput{"--axial-force -1e300", "valid range [-1e+13, 1e+13] N"},
                       BadSpinInput{"--spin-range 1:2", "--spin-range 1:2: malformed"},
                       BadSpinInput{"--spin-range 0:10:1", "count n = 1"},
                       BadSpinInput{"--spin-range 5:2:4", "must exceed the first"},

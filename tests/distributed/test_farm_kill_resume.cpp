@@ -20,6 +20,11 @@ namespace {
 
 constexpr std::size_t tasks = 48;
 const std::vector<std::string> workload = {"--tasks", std::to_string(tasks), "--samples", "2000000"};
+// In the run that is killed every task lasts at least 250 ms (sleeping; the results and the journal's
+// settings do not depend on it), so the 42 or more tasks left when the signal is sent take ≥ 3.5 s
+// on three compute threads: longer than Open MPI's mpirun takes to end its ranks after SIGTERM
+// (about 2.3 s measured here), so the run cannot finish first, however idle the machine.
+const std::vector<std::string> slow_tasks = {"--task-floor-ms", "250"};
 
 std::vector<std::string> with(std::vector<std::string> arguments, const std::vector<std::string>& more) {
   arguments.insert(arguments.end(), more.begin(), more.end());
@@ -49,7 +54,7 @@ TEST_P(KillAndResume, TheRerunComputesOnlyTheMissingTasksAndGivesTheSameTable) {
   const std::filesystem::path out = dir / "out";
   const std::filesystem::path journal = out / "journal.tsv";
   {
-    ChildSpec spec = toy_farm(kill.launcher, with({"--out", out.string()}, workload));
+    ChildSpec spec = toy_farm(kill.launcher, with(with({"--out", out.string()}, workload), slow_tasks));
     spec.stdout_file = dir / "killed.out";
     spec.stderr_file = dir / "killed.err";
     ChildProcess child(spec);

@@ -5,7 +5,7 @@
 // task is done; `--merge` builds the same table from shard journals. Knobs for the tests: a task
 // that fails every k-th, a trace of which process computed what, a rank that dies, a rank that
 // builds another task list.
-//   toy_farm --out DIR [--tasks N] [--samples S] [--threads T] [--shard i/n] [--settings TEXT]
+//   toy_farm --out DIR [--tasks N] [--samples S] [--task-floor-ms M] [--threads T] [--shard i/n] [--settings TEXT]
 //            [--fail-every K] [--trace DIR] [--lose-rank-after I] [--skew-rank R] [--retry-failed]
 //   toy_farm --merge JOURNAL_OR_DIR... --out DIR
 // Exit 0 when the table is written, 2 for bad input or a journal that cannot serve, 3 for an
@@ -17,7 +17,9 @@
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <filesystem>
+#include <chrono>
 #include <optional>
+#include <thread>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -47,6 +49,7 @@ struct ToyOptions {
   int skew_rank = -1;
   bool retry_failed = false;
   std::vector<std::string> merge;
+  int task_floor_ms = 0;  // every task lasts at least this long (sleeping: no CPU)
 };
 
 std::size_t task_samples(std::size_t index, std::size_t samples) { return samples * (1 + (7 * index) % 5); }
@@ -127,7 +130,10 @@ int run(Session& session, const ToyOptions& options) {
     if (options.fail_every > 0 && (task.index + 1) % options.fail_every == 0) {
       throw std::runtime_error(fmt::format("toy failure: task {} rejects its samples", task.index));
     }
-    return estimate_pi(task, task_samples(task.index, options.samples));
+    const auto start = std::chrono::steady_clock::now();
+    std::string record = estimate_pi(task, task_samples(task.index, options.samples));
+    std::this_thread::sleep_until(start + std::chrono::milliseconds(options.task_floor_ms));
+    return record;
   };
   FarmOptions farm;
   farm.output_directory = options.out;
@@ -162,6 +168,8 @@ int main(int argc, char** argv) {
   app.add_option("--lose-rank-after", options.lose_rank_after, "A rank > 0 kills itself on a task >= I");
   app.add_option("--skew-rank", options.skew_rank, "This rank builds one task more than the others");
   app.add_flag("--retry-failed", options.retry_failed, "Recompute tasks journaled as failed");
+  app.add_option("--task-floor-ms", options.task_floor_ms,
+                 "Every task lasts at least this many ms (sleeping): a kill test's run cannot finish first");
   app.add_option("--merge", options.merge, "Merge these shard journals (files or directories) into --out");
   CLI11_PARSE(app, argc, argv);
   // The session outlives the error handlers below, so that a message is printed before a broken

@@ -1,0 +1,23 @@
+// Checks of command-line values before CLI11 converts them (issue 13): every number is read whole
+// (no trailing text, no octal or hexadecimal), finite, and inside a plausible range — the same range
+// as the scene key it overrides where there is one — so that `--elements 3000000000` is named with
+// its valid range instead of wrapping around. A failed check's message is "VALUE: what is wrong
+// (valid range ...)"; main.cpp prints it as "--option VALUE: ...".
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <string_view>
+
+namespace ffrf::app {
+
+// A whole number in [lower, upper].
+CLI::Validator whole_number(long long lower, long long upper);
+// A finite number in [lower, upper] ((lower, upper] when lower_open); `unit` follows the range.
+CLI::Validator finite_number(double lower, double upper, std::string_view unit = {}, bool lower_open = false);
+// The SI range of a number scene key ("simulation.duration", "hub.spin_rate").
+CLI::Validator scene_key_range(std::string_view dotted_key);
+// The whole-number range of an integer scene key ("boom.elements").
+CLI::Validator scene_key_count(std::string_view dotted_key);
+
+}  // namespace ffrf::app
