@@ -181,8 +181,9 @@ std::string crane_chart_script(const std::string& name, const ChartSet& set, con
           : std::string();
   const std::string title = gnuplot_lines(c.title, set.subtitle);
   if (!differences) {
-    script += fmt::format("set title {} noenhanced\nset key below horizontal\nset xlabel 'time [s]'\nset ylabel {} noenhanced\n{}",
-                          title, gnuplot_quoted(c.ylabel), marker);
+    // One model (ffrf run): it is named in the subtitle, no key; several: the key below the plot.
+    script += fmt::format("set title {} noenhanced\n{}\nset xlabel 'time [s]'\nset ylabel {} noenhanced\n{}", title,
+                          set.sources.size() > 1 ? "set key below horizontal" : "unset key", gnuplot_quoted(c.ylabel), marker);
     return script + overlay_plot(c, set);
   }
   const double floor = chart_index < set.difference_floors.size() ? set.difference_floors[chart_index] : 1e-12;

@@ -55,15 +55,23 @@ std::string script_header(const std::string& name, const std::string& terminal, 
       name, terminal, size);
 }
 
-// τ and the reference's floor as horizontal lines (plot items), keyed.
-std::string threshold_lines(const SweepFacts& facts) {
-  std::string lines = fmt::format(", \\\n     {:g} with lines dt 2 lw 2 lc rgb '#d62728' title 'tolerance τ = {:g}'", facts.tolerance,
-                                  facts.tolerance);
+// τ and the reference's floor as horizontal lines across the whole plot (arrows, set before the
+// plot) and their key entries (plot items).
+struct Thresholds {
+  std::string arrows, keys;
+};
+Thresholds threshold_lines(const SweepFacts& facts) {
+  Thresholds t;
+  t.arrows = fmt::format("set arrow 11 from graph 0, first {0:g} to graph 1, first {0:g} nohead dt 2 lw 2 lc rgb '#d62728'\n",
+                         facts.tolerance);
+  t.keys = fmt::format(", \\\n     keyentry with lines dt 2 lw 2 lc rgb '#d62728' title 'tolerance τ = {:g}'", facts.tolerance);
   if (std::isfinite(facts.reference_change) && facts.reference_change > 0.0) {
-    lines += fmt::format(", \\\n     {:g} with lines dt 3 lw 2 lc rgb 'black' title \"reference's own error floor {:.2g}\"",
-                         facts.reference_change, facts.reference_change);
+    t.arrows += fmt::format("set arrow 12 from graph 0, first {0:g} to graph 1, first {0:g} nohead dt 3 lw 2 lc rgb 'black'\n",
+                            facts.reference_change);
+    t.keys += fmt::format(", \\\n     keyentry with lines dt 3 lw 2 lc rgb 'black' title \"reference's own error floor {:.2g}\"",
+                          facts.reference_change);
   }
-  return lines;
+  return t;
 }
 
 }  // namespace
@@ -83,11 +91,15 @@ void draw_sweep_charts(const StagedDirectory& out, const std::vector<SweepRow>& 
   const std::string subtitle = fmt::format("{:g} s simulated, errors against {}", facts.duration, facts.reference);
   // accuracy_speed.dat: one row per ok run: wall, worst, marker, colour, id.
   std::string points = "# wall_s worst_nrms point_type rgb_colour id family integrator\n";
+  double wall_low = INFINITY, wall_high = 0.0;
   for (const SweepRow& row : rows) {
     if (!row.ok() || *row.worst <= 0.0) continue;
+    wall_low = std::min(wall_low, *row.wall);
+    wall_high = std::max(wall_high, *row.wall);
     points += fmt::format("{} {} {} {} {} {} {}\n", *row.wall, *row.worst, integrator_point(row.integrator),
                           rgb(family_colour(row.family)), row.id, row.family, row.integrator);
   }
+  if (!(wall_high > 0.0)) wall_low = wall_high = 1.0;  // no ok run: an empty chart on a valid range
   out.write("accuracy_speed.dat", points);
   out.write("pareto.dat", pareto_data(rows));
   std::string keys;
@@ -99,19 +111,23 @@ void draw_sweep_charts(const StagedDirectory& out, const std::vector<SweepRow>& 
   for (const Style& i : integrators) {
     if (used[i.name]) keys += fmt::format(", \\\n     keyentry with points pt {} ps 1.5 lc rgb 'black' title '{}'", i.point, i.name);
   }
-  std::string script = script_header("accuracy_speed", terminal, "1100,800");
+  const Thresholds thresholds = threshold_lines(facts);
+  std::string script = script_header("accuracy_speed", terminal, "1100,800") + thresholds.arrows;
   script += fmt::format(
       "set title \"Accuracy vs speed: every successful sweep run (colour: model, marker: integrator)\\n{}\" noenhanced\n"
       "set xlabel 'wall time of the integration [s]'\n"
       "set ylabel 'worst normalized RMS error over the judged outputs'\n"
-      "set key below horizontal maxrows 2 samplen 1 width 1 font ',10'\n"
-      "set offsets graph 0.02, graph 0.25, graph 0.05, graph 0.05\n"
+      "set key below horizontal Left reverse maxrows 3 samplen 2 width 2 font ',10'\n"
+      "set xrange [{:g}:{:g}]\n"
+      "# the Pareto points' labels alternate above and below their points (neighbours often sit close)\n"
       "plot 'accuracy_speed.dat' using 1:2:3:4 with points pt variable ps 1.3 lc rgb variable notitle, \\\n"
       "     'pareto.dat' using 1:2 with steps lw 2 lc rgb '#d62728' title 'Pareto front', \\\n"
       "     'pareto.dat' using 1:2 with points pt 6 ps 2.6 lw 1.5 lc rgb '#d62728' notitle, \\\n"
-      "     'pareto.dat' using 1:2:(sprintf('%s (#%d)', stringcolumn(3), $4)) with labels left offset 1.4,0.5 font ',8' "
-      "noenhanced notitle{}{}\n",
-      subtitle, threshold_lines(facts), keys);
+      "     'pareto.dat' every 2 using 1:2:(sprintf('%s (#%d)', stringcolumn(3), $4)) with labels left offset 1.4,0.6 "
+      "font ',8' noenhanced notitle, \\\n"
+      "     'pareto.dat' every 2::1 using 1:2:(sprintf('%s (#%d)', stringcolumn(3), $4)) with labels left offset 1.4,-0.7 "
+      "font ',8' noenhanced notitle{}{}\n",
+      subtitle, wall_low / 1.3, wall_high * 6.0, thresholds.keys, keys);
   out.write("accuracy_speed.gp", script);
   run_gnuplot(out.staging(), "accuracy_speed.gp");
 
@@ -137,19 +153,19 @@ void draw_sweep_charts(const StagedDirectory& out, const std::vector<SweepRow>& 
   out.write("mode_count.dat", modes);
   const double y_low = std::pow(10.0, std::floor(std::log10(low)));
   const double y_high = std::pow(10.0, std::ceil(std::log10(high)));
-  script = script_header("mode_count", terminal, "1200,600");
+  script = script_header("mode_count", terminal, "1200,600") + thresholds.arrows;
   script += fmt::format(
       "set multiplot layout 1,2 title \"Error vs basis size: the best run of each model over its integrator settings\\n{}\" "
       "noenhanced\n"
-      "set ylabel 'worst normalized RMS error'\nset yrange [{:g}:{:g}]\nset key bottom left font ',10' opaque\n"
+      "set ylabel 'worst normalized RMS error'\nset yrange [{:g}:{:g}]\nset key below Left reverse font ',10'\nset bmargin 8  # one height for both panels\n"
       "set xlabel 'vibration modes k (N = 16 mesh)'\nset logscale x 2\nset xrange [0.8:{:g}]\nset xtics (1, 2, 3, 4, 6, 8, 12)\n"
       "plot 'mode_count.dat' index 0 using 1:2 with linespoints pt 9 ps 1.3 lw 2 lc rgb '#ff7f0e' title 'modal', \\\n"
       "     '' index 1 using 1:2 with linespoints pt 13 ps 1.3 lw 2 lc rgb '#2ca02c' title 'modal + static modes'{}\n"
       "set xlabel 'elements N'\nset xrange [0.8:{:g}]\nset xtics (1, 2, 4, 8, 16, 32, 64)\n"
       "plot 'mode_count.dat' index 2 using 1:2 with linespoints pt 7 ps 1.3 lw 2 lc rgb '#1f77b4' title 'nodal'{}\n"
       "unset multiplot\n",
-      subtitle, y_low, y_high, 1.25 * std::max(2, largest_k), threshold_lines(facts), 1.25 * std::max(2, largest_n),
-      threshold_lines(facts));
+      subtitle, y_low, y_high, 1.25 * std::max(2, largest_k), thresholds.keys, 1.25 * std::max(2, largest_n),
+      thresholds.keys);
   out.write("mode_count.gp", script);
   run_gnuplot(out.staging(), "mode_count.gp");
 }

@@ -109,7 +109,7 @@ std::string sweep_verdict_sentence(const std::vector<SweepRow>& rows, const Swee
   if (!never.empty()) s += " Fail at every setting (best error): " + never + ".";
   std::size_t not_ok = 0;
   for (const SweepRow& row : rows) not_ok += row.ok() ? 0 : 1;
-  if (not_ok > 0) s += fmt::format(" {} run{} failed or {} skipped (listed below).", not_ok, not_ok == 1 ? "" : "s", not_ok == 1 ? "was" : "were");
+  if (not_ok > 0) s += fmt::format(" {} run{} failed or {} skipped.", not_ok, not_ok == 1 ? "" : "s", not_ok == 1 ? "was" : "were");
   return s;
 }
 
