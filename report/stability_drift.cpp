@@ -22,7 +22,7 @@ std::string chart_script(const study::DriftStudy& study, const std::string& titl
       "set ylabel {} noenhanced\nset logscale y\nset format y '10^{{%L}}'\n"
       "# rounding noise: |C| below 1e-14 of the boom length L = {:g} m is drawn at that floor\n"
       "floor = {:.3g}\nfloored(x) = x < floor ? floor : x\nset yrange [floor / 3:*]\n"
-      "set key below horizontal\nset grid\n",
+      "set key below horizontal Left reverse\nset grid\n",
       png_terminal(), gnuplot_quoted(title),
       gnuplot_quoted(fmt::format("|C| [m]  (below {:.1e} m = 1e-14 L: rounding, drawn at that floor)", floor)), length,
       floor);
