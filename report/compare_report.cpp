@@ -103,8 +103,9 @@ std::string compare_markdown(const RunContext& ctx, const Comparison& c) {
                    study::output_list(c.judged));
   r += fmt::format("- ffrf {}, {}\n\n", ffrf_version(), ctx.date);
   r += stiffening_sentence(c) + "\n\n";
-  r += "## Verdict\n\n**" + verdict_sentence(c) + "**\n\n";
-  r += verdict_table(c) + "\n";
+  // The marks let scripts/regenerate-docs.sh quote this section (the README does).
+  r += "## Verdict\n\n<!-- verdict:begin -->\n**" + verdict_sentence(c) + "**\n\n";
+  r += verdict_table(c) + "<!-- verdict:end -->\n\n";
   r += "Speed-ups: the reference's wall time (integration) and solver work (steps × state size, the cost measure of "
        "`ffrf recommend`: independent of the machine's load) over the model's. Static and dynamic error: the two parts of "
        "the worst output's error.\n\n";

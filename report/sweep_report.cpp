@@ -104,7 +104,7 @@ std::string sweep_verdict_sentence(const std::vector<SweepRow>& rows, const Swee
   }
   std::string never;
   for (const SweepRow* best : best_per_model(rows)) {
-    if (passing.count(best->model) == 0) never += fmt::format("{}{} ({:.2g})", never.empty() ? "" : ", ", best->model, *best->worst);
+    if (passing.count(best->model) == 0) never += fmt::format("{}{} ({:.3g})", never.empty() ? "" : ", ", best->model, *best->worst);
   }
   if (!never.empty()) s += " Fail at every setting (best error): " + never + ".";
   std::size_t not_ok = 0;

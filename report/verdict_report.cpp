@@ -17,16 +17,24 @@ std::string_view display_unit(coupling::OutputChannel channel) {
 
 double display_scale(coupling::OutputChannel channel) { return display_unit(channel) == "deg" ? 180.0 / std::numbers::pi : 1.0; }
 
+namespace {
+
+// 2 significant digits below 100 ("5.3", "47"), whole numbers above ("130").
+std::string ratio_text(double ratio) { return ratio < 99.5 ? fmt::format("{:.2g}", ratio) : fmt::format("{:.0f}", ratio); }
+
+}  // namespace
+
 std::string speedup_words(double ratio) {
   if (!std::isfinite(ratio) || ratio <= 0.0) return "-";
-  return ratio >= 1.0 ? fmt::format("{:.2g}× less", ratio) : fmt::format("{:.2g}× more", 1.0 / ratio);
+  return ratio >= 1.0 ? ratio_text(ratio) + "× less" : ratio_text(1.0 / ratio) + "× more";
 }
 
-std::string speedup_cell(double ratio) { return std::isfinite(ratio) ? fmt::format("{:.2g}×", ratio) : std::string("-"); }
+std::string speedup_cell(double ratio) { return std::isfinite(ratio) && ratio > 0.0 ? ratio_text(ratio) + "×" : std::string("-"); }
 
 namespace {
 
-std::string error_text(double error) { return std::isfinite(error) ? fmt::format("{:.2g}", error) : std::string("not finite"); }
+// Three significant digits: a value just beyond τ must not print as τ.
+std::string error_text(double error) { return std::isfinite(error) ? fmt::format("{:.3g}", error) : std::string("not finite"); }
 
 std::string worst_of(const study::MeasuredModel& m) {
   return m.worst_output.empty() ? std::string() : fmt::format(" (worst output: {})", m.worst_output);
