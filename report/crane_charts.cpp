@@ -152,7 +152,7 @@ std::vector<double> difference_floors(const study::Comparison& c, const std::vec
     for (const coupling::CraneOutputs& sample : reference.result.samples) {
       largest = std::max(largest, std::abs(spec.value(sample) - at_rest) * chart_.scale);
     }
-    floors.push_back(std::max(1e-6 * largest, std::numeric_limits<double>::min()));
+    floors.push_back(std::max(0.01 * c.settings.relative_tolerance * largest, std::numeric_limits<double>::min()));
   }
   return floors;
 }
@@ -201,12 +201,12 @@ std::string crane_chart_script(const std::string& name, const ChartSet& set, con
       "set origin 0, 0\nset size 1, 0.42\nset tmargin 1\nset bmargin 4\nunset key\nset format x '%g'\n"
       "set xlabel 'time [s]'\nset logscale y\nset format y '10^{{%L}}'\n"
       "set ylabel {} noenhanced\n"
-      "set offsets 0, 0, graph 0.22, 0  # room for the label above the curves\n"
+      "set offsets 0, 0, graph 0.12, 0  # room for the label above the curves\n"
       "set style textbox opaque noborder\n"
       "set label 1 {} at graph 0.01, graph 0.92 left font ',9' noenhanced front boxed\n{}",
       gnuplot_quoted(fmt::format("|model - reference| [{}]", c.unit)),
-      gnuplot_quoted(fmt::format("dynamic difference: each model's change from its own static value minus the reference's "
-                                 "(log axis, floored at {:.2g} {})",
+      gnuplot_quoted(fmt::format("dynamic difference, each from its own static value; below {:.2g} {} "
+                                 "(integration noise) drawn at that floor",
                                  floor, c.unit)),
       marker);
   script += difference_plot(c, chart_index, set, floor);

@@ -47,8 +47,9 @@ struct ChartSet {
 std::string difference_csv(const study::Comparison& comparison, const std::vector<std::string>& names);
 // Column (1-based) of chart `chart` and model `model` in differences.csv with `models` models.
 std::size_t difference_column(std::size_t chart, std::size_t model, std::size_t models);
-// The difference panels' floors: 1e-6 of the largest |d_ref| of each chart's quantity (rounding and
-// the reference's own error lie below), at least the smallest positive double.
+// The difference panels' floors: 1 % of the models' relative tolerance times the largest |d_ref| of
+// each chart's quantity — differences below are integration noise (the floor is drawn, not hidden),
+// at least the smallest positive double.
 std::vector<double> difference_floors(const study::Comparison& comparison, const std::vector<std::string>& names);
 
 // The gnuplot script of one chart.

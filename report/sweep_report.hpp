@@ -41,7 +41,9 @@ std::string sweep_verdict_sentence(const std::vector<SweepRow>& rows, const Swee
 
 // Writes the chart data and scripts and draws accuracy_speed.png and mode_count.png.
 void draw_sweep_charts(const StagedDirectory& out, const std::vector<SweepRow>& rows, const SweepFacts& facts);
-// The Pareto points the accuracy–speed chart labels, each "MODEL, SETTINGS" (pareto.dat's third column).
+// The label of a Pareto point on the chart: "#12 k=2+s cvode 1e-06" (id, model, integrator).
+std::string pareto_label(const SweepRow& row);
+// The Pareto points the accuracy–speed chart labels (pareto.dat: wall, worst, "label", id).
 std::string pareto_data(const std::vector<SweepRow>& rows);
 
 // report.md: `preamble` (scene, grid, reference and its convergence table), counts, the verdict, the
