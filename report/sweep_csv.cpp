@@ -54,9 +54,9 @@ std::string sweep_csv_line(const study::SweepResult& r) {
       r.stable_step > 0.0 ? number(r.stable_step) : "");
   const bool ok = r.status == study::RunStatus::ok;
   for (const auto& e : r.errors.channels) line += "," + (ok ? number(e.normalized_rms) : std::string());
-  for (std::size_t c = 0; c < coupling::all_channels.size(); ++c) {
-    const double unit = display_scale(coupling::all_channels[c]);
-    line += "," + (ok ? number(r.errors.channels[c].max_abs * unit) : std::string());
+  for (std::size_t channel = 0; channel < coupling::all_channels.size(); ++channel) {
+    const double unit = display_scale(coupling::all_channels[channel]);
+    line += "," + (ok ? number(r.errors.channels[channel].max_abs * unit) : std::string());
   }
   line += "," + (ok ? number(r.errors.daf_error) : std::string());
   line += "," + (ok ? number(r.worst.error) : std::string());

@@ -2,6 +2,7 @@
 #include "report/sweep_report.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "report/json.hpp"
 #include "report/reference_report.hpp"
 #include "report/sweep_csv.hpp"
 #include "report/verdict_report.hpp"
@@ -199,6 +201,40 @@ SweepFacts context_facts(const std::string& context) {
   return facts;
 }
 
+std::string sweep_json(const std::vector<SweepRow>& rows, const SweepFacts& facts) {
+  const study::Verdict verdict = sweep_verdict(rows, facts);
+  const std::vector<study::MeasuredModel> measured = measured_rows(rows);
+  Json json;
+  json["command"] = "sweep";
+  json["duration_s"] = facts.duration;
+  json["reference"] = Json{{"label", facts.reference},
+                           {"wall_s", facts.reference_wall_seconds},
+                           {"work", facts.reference_work},
+                           {"last_change", facts.reference_change}};
+  std::size_t ok = 0, failed = 0, skipped = 0;
+  for (const SweepRow& row : rows) {
+    ok += row.ok() ? 1 : 0;
+    failed += row.status == "failed" ? 1 : 0;
+    skipped += row.status == "skipped" ? 1 : 0;
+  }
+  json["configurations"] = Json{{"total", rows.size()}, {"ok", ok}, {"failed", failed}, {"skipped", skipped}};
+  json["verdict"] = verdict_json(verdict, measured, sweep_verdict_sentence(rows, facts));
+  json["pareto"] = Json::array();
+  for (const std::size_t i : pareto_front(rows)) {
+    const SweepRow& row = rows[i];
+    json["pareto"].push_back(Json{{"id", row.id},
+                                  {"model", row.model},
+                                  {"integrator", row.settings()},
+                                  {"worst_normalized_rms", *row.worst},
+                                  {"wall_s", *row.wall},
+                                  {"work", row.work()},
+                                  {"wall_speedup", verdict.models[i].wall_speedup},
+                                  {"work_speedup", verdict.models[i].work_speedup},
+                                  {"passed", verdict.models[i].passed}});
+  }
+  return json_text(json);
+}
+
 std::string pareto_text(const std::vector<SweepRow>& rows, const SweepFacts& facts) {
   const study::Verdict verdict = sweep_verdict(rows, facts);
   std::string t = fmt::format("{:>4}  {:<26} {:<28} {:>11} {:>10} {:>7} {:>7}\n", "id", "model", "integrator", "worst error",
@@ -217,6 +253,7 @@ void write_sweep_outputs(const std::string& dir, std::vector<SweepRow>& rows, co
   out.write("sweep.csv", sweep_csv(rows));
   out.write(sweep_context_file, context);
   draw_sweep_charts(out, rows, facts);
+  out.write("summary.json", sweep_json(rows, facts));
   out.write("report.md", sweep_markdown(rows, context));
   out.commit();
 }

@@ -58,10 +58,14 @@ std::string sweep_context(const std::string& scene_file, const scene::Scene& sce
 SweepFacts context_facts(const std::string& context);
 inline constexpr const char* sweep_context_file = "sweep_context.md";
 
+// summary.json: the facts, the counts, the verdict (report/verdict_report.hpp) and the Pareto-optimal
+// configurations with their speed-ups.
+std::string sweep_json(const std::vector<SweepRow>& rows, const SweepFacts& facts);
+
 // The Pareto table and the verdict as text (stdout).
 std::string pareto_text(const std::vector<SweepRow>& rows, const SweepFacts& facts);
 
-// Writes sweep.csv, the charts, the context and report.md (the completeness marker) into `dir`,
+// Writes sweep.csv, the charts, the context, summary.json and report.md (the completeness marker) into `dir`,
 // completely or not at all; throws std::runtime_error (a duplicate id: overlapping shards).
 void write_sweep_outputs(const std::string& dir, std::vector<SweepRow>& rows, const std::string& context);
 

@@ -146,6 +146,14 @@ TEST(CliSweep, ShardsCoverTheGridMergeEqualsUnshardedFailuresAreRows) {
       EXPECT_NE(report.find(part), std::string::npos) << out << ": " << part;
     }
   }
+  // summary.json: the verdict with its tolerance, the counts, the Pareto configurations.
+  for (const fs::path& out : {whole, merged}) {
+    const Json summary = JsonParser(read_text(out / "summary.json")).parse();
+    EXPECT_EQ(summary["verdict"]["tolerance"].number, 0.01) << out;
+    EXPECT_EQ(summary["configurations"]["total"].number, static_cast<double>(all.rows.size())) << out;
+    EXPECT_GE(summary["pareto"].items.size(), 1u) << out;
+    EXPECT_NE(summary["verdict"]["sentence"].text.find("reproduces the reference"), std::string::npos) << out;
+  }
   // Work = steps × state size, for the verdict's speed-ups.
   const std::size_t steps = all.column("steps"), state = all.column("state_size"), work = all.column("work");
   for (const auto& row : all.rows) {
