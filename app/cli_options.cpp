@@ -160,6 +160,34 @@ coupling::IntegratorSettings integrator_settings(const DynamicsOptions& options,
   }
 }
 
+// "1%" → 0.01, "0.01" → 0.01; throws BadOption when not a number in (0, 1).
+double parse_tolerance(std::string text) {
+  const std::string given = text;
+  double scale = 1.0;
+  if (!text.empty() && text.back() == '%') {
+    text.pop_back();
+    scale = 0.01;
+  }
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  value *= scale;
+  if (used == 0 || used != text.size() || !(value > 0.0 && value < 1.0)) {
+    throw BadOption(fmt::format("--tolerance {}: not a tolerance (valid range (0, 1), or a percentage like 1%)", given));
+  }
+  return value;
+}
+
+void add_tolerance_option(CLI::App& sub, std::string& tolerance, const std::string& what) {
+  sub.add_option("--tolerance", tolerance,
+                 "Tolerance of the verdict: " + what + ", in (0, 1) or as a percentage (default 1%)")
+      ->capture_default_str();
+}
+
 std::optional<scene::Stiffening> stiffening_option(const std::string& stiffening) {
   if (stiffening.empty()) return std::nullopt;
   const auto parsed = scene::parse_stiffening(stiffening);

@@ -60,6 +60,11 @@ scene::BoomChoice boom_choice(const ModelOptions& options, scene::BoomChoice bas
 
 // The integrator settings for a scene (progress on a terminal); throws BadOption.
 coupling::IntegratorSettings integrator_settings(const DynamicsOptions& options, const scene::Scene& scene);
+// "1%" → 0.01, "0.01" → 0.01 (--tolerance of compare, sweep, recommend); throws BadOption when not a
+// number in (0, 1).
+double parse_tolerance(std::string text);
+// --tolerance (default "1%"); `what` says what it bounds.
+void add_tolerance_option(CLI::App& sub, std::string& tolerance, const std::string& what);
 // --stiffening as given (empty: not given); throws BadOption for an unknown name.
 std::optional<scene::Stiffening> stiffening_option(const std::string& stiffening);
 // The option a study setting comes from ("--rtol").

@@ -1,6 +1,6 @@
 // `ffrf compare SCENE`: the converged reference, then the boom models of study::compared_models()
 // on one scene, each from the scene's initial state, with their errors against the reference
-// (study::compare): a text summary (or --json) and, with --out DIR, each model's time series,
+// (study::compare) and the verdict against --tolerance (default 1 %): a text summary (or --json) and, with --out DIR, each model's time series,
 // overlaid charts, summary.json and report.md, written completely or not at all. Exit 2 for bad
 // input, 3 when a solver fails.
 #include <fmt/format.h>
@@ -25,24 +25,32 @@ struct CompareOptions {
   DynamicsOptions dynamics;
   study::ReferenceOptions reference;
   std::string stiffening;
+  std::string tolerance = "1%";
   bool json = false;
   std::string out;
 };
 
 void write_outputs(report::StagedDirectory& out, const report::RunContext& context, const study::Comparison& comparison) {
-  std::vector<report::ChartSource> sources;
+  const scene::Scene& scene = *context.scene;
+  report::ChartSet charts;
   for (std::size_t m = 0; m < comparison.runs.size(); ++m) {
     const study::ModelRun& run = comparison.runs[m];
     out.write(report::timeseries_name(run), report::timeseries_csv(run));
-    if (comparison.plotted[m]) sources.push_back({report::timeseries_name(run), run.choice.label()});
+    if (comparison.plotted[m]) {
+      charts.sources.push_back({report::timeseries_name(run), run.choice.label(), run.choice.kind != scene::BoomKind::rigid, false});
+    }
   }
   out.write(report::reference_timeseries_name, report::timeseries_csv(comparison.reference.run));
-  sources.push_back({report::reference_timeseries_name, report::reference_label(comparison.reference)});
-  const scene::Scene& scene = *context.scene;
-  report::draw_crane_charts(out, sources,
-                            fmt::format("{}, {} (rtol {:g})", scene.name.empty() ? context.scene_file : scene.name,
-                                        coupling::to_string(context.settings.kind), context.settings.relative_tolerance),
-                            "ffrf compare --out");
+  charts.sources.push_back({report::reference_timeseries_name, report::reference_label(comparison.reference), true, true});
+  charts.names = report::crane_chart_names(scene);
+  charts.subtitle = fmt::format("{}, {} (rtol {:g})", scene.name.empty() ? context.scene_file : scene.name,
+                                coupling::to_string(context.settings.kind), context.settings.relative_tolerance);
+  charts.command = "ffrf compare --out";
+  charts.window_start = comparison.window_start;
+  charts.differences_csv = "differences.csv";
+  charts.difference_floors = report::difference_floors(comparison, charts.names);
+  out.write(charts.differences_csv, report::difference_csv(comparison, charts.names));
+  report::draw_crane_charts(out, charts);
   out.write("report.md", report::compare_markdown(context, comparison));
   out.write("summary.json", report::compare_json(context, comparison));
   out.commit();
@@ -54,6 +62,7 @@ int run_compare(const CompareOptions& options) {
   study::CompareRequest request;
   try {
     request.stiffening = stiffening_option(options.stiffening);
+    request.tolerance = parse_tolerance(options.tolerance);
     request.settings = integrator_settings(options.dynamics, *scene);
     request.reference = options.reference;
     study::validate(request.reference);
@@ -98,6 +107,8 @@ Command add_compare_command(CLI::App& parent) {
   add_dynamics_options(*sub, options->dynamics);
   add_reference_options(*sub, options->reference);
   add_stiffening_option(*sub, options->stiffening);
+  add_tolerance_option(*sub, options->tolerance,
+                       "a model passes when its worst normalized RMS error over the judged outputs is within it");
   sub->add_flag("--json", options->json, "Print the JSON summary on stdout instead of the text summary");
   sub->add_option("--out", options->out,
                   "Write report.md, summary.json, each model's timeseries_MODEL.csv and the overlaid PNG charts (with "

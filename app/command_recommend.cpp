@@ -31,28 +31,6 @@ struct RecommendOptions {
   std::string out;
 };
 
-// "1%" → 0.01, "0.01" → 0.01; throws BadOption when not a number in (0, 1).
-double parse_tolerance(std::string text) {
-  const std::string given = text;
-  double scale = 1.0;
-  if (!text.empty() && text.back() == '%') {
-    text.pop_back();
-    scale = 0.01;
-  }
-  std::size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  value *= scale;
-  if (used == 0 || used != text.size() || !(value > 0.0 && value < 1.0)) {
-    throw BadOption(fmt::format("--tolerance {}: not a tolerance (valid range (0, 1), or a percentage like 1%)", given));
-  }
-  return value;
-}
-
 // "cargo_heave,wire_tension" → the channels; throws BadOption naming an unknown one.
 std::vector<coupling::OutputChannel> parse_outputs(const std::string& text) {
   std::string names;

@@ -33,11 +33,13 @@ struct RunOptions {
 
 void write_outputs(report::StagedDirectory& out, const report::RunContext& context, const study::ModelRun& run) {
   out.write("timeseries.csv", report::timeseries_csv(run));
-  report::draw_crane_charts(out, {{"timeseries.csv", run.choice.label()}},
-                            fmt::format("{}, {}, {} (rtol {:g})", context.scene->name.empty() ? context.scene_file : context.scene->name,
-                                        run.choice.label(), coupling::to_string(context.settings.kind),
-                                        context.settings.relative_tolerance),
-                            "ffrf run --out");
+  report::ChartSet charts;
+  charts.sources = {{"timeseries.csv", run.choice.label(), run.choice.kind != scene::BoomKind::rigid, false}};
+  charts.names = report::crane_chart_names(*context.scene);
+  charts.subtitle = fmt::format("{}, {}, {} (rtol {:g})", context.scene->name.empty() ? context.scene_file : context.scene->name,
+                                run.choice.label(), coupling::to_string(context.settings.kind), context.settings.relative_tolerance);
+  charts.command = "ffrf run --out";
+  report::draw_crane_charts(out, charts);
   out.write("summary.json", report::run_json(context, run));
   out.commit();
 }

@@ -1,9 +1,9 @@
 // `ffrf sweep SCENE`: the accuracy–speed study (study::sweep). The converged reference first, then
 // every configuration of the grid (--quick by default, --medium, --full), or the slice --shard
 // i/n, over --jobs threads; one CSV row per run, the accuracy–speed and mode-count charts and
-// report.md naming the Pareto-optimal configurations. `--merge A.csv B.csv ... --out DIR` joins
-// shard CSVs into the same outputs. Exit 2 for bad input, 3 when the reference fails; a failing
-// configuration is a row, not an error.
+// report.md naming the Pareto-optimal configurations and the verdict against --tolerance (default
+// 1 %). `--merge A.csv B.csv ... --out DIR` joins shard CSVs into the same outputs. Exit 2 for bad
+// input, 3 when the reference fails; a failing configuration is a row, not an error.
 #include <fmt/format.h>
 
 #include <charconv>
@@ -36,6 +36,7 @@ struct SweepOptions {
   bool quick = false, medium = false, full = false;
   study::ReferenceOptions reference;
   std::string stiffening;
+  std::string tolerance = "1%";
 };
 
 constexpr double quick_duration = 40.0;
@@ -80,13 +81,13 @@ int merge(const SweepOptions& options) {
                                   : std::string("# Sweep (merged)\n\nThe shards' context file was not found.\n");
   report::png_terminal();
   try {
-    report::write_sweep_outputs(options.out, rows, context, report::context_duration(context));
+    report::write_sweep_outputs(options.out, rows, context);
   } catch (const std::runtime_error& error) {
     if (std::string(error.what()).find("appears twice") != std::string::npos) return bad_input("sweep", error.what());
     throw;
   }
   fmt::print("merged {} rows from {} files\n{}\nwrote {} (report.md)\n", rows.size(), options.merge.size(),
-             report::pareto_text(rows), options.out);
+             report::pareto_text(rows, report::context_facts(context)), options.out);
   return exit_ok;
 }
 
@@ -112,6 +113,7 @@ int run_sweep(const SweepOptions& options) {
   if (!scene) return exit_bad_input;
   try {
     request.stiffening = stiffening_option(options.stiffening);
+    request.tolerance = parse_tolerance(options.tolerance);
     study::validate(request.reference);
     DynamicsOptions dynamics;  // checks the duration against the scene
     dynamics.duration = options.duration.value_or(request.grid == study::SweepGrid::quick ? quick_duration : scene->simulation.duration);
@@ -143,14 +145,14 @@ int run_sweep(const SweepOptions& options) {
   for (const study::SweepResult& r : result.results) csv += report::sweep_csv_line(r);
   std::vector<report::SweepRow> rows = report::read_sweep_csv(csv, "sweep.csv");
   const std::string context = report::sweep_context(options.scene, *scene, request.grid, request.duration, result);
-  if (!options.out.empty()) report::write_sweep_outputs(options.out, rows, context, request.duration);
+  if (!options.out.empty()) report::write_sweep_outputs(options.out, rows, context);
   std::size_t failed = 0;
   for (const report::SweepRow& row : rows) failed += row.ok() ? 0 : 1;
   fmt::print("{} configurations{} of the {} grid, {} s simulated, {} threads: {} ok, {} failed or skipped\n"
              "reference: {}\n{}\nPareto-optimal (worst normalized RMS error vs wall time):\n{}",
              rows.size(), options.shard.empty() ? "" : " (shard " + options.shard + ")", study::to_string(request.grid),
              request.duration, request.jobs, rows.size() - failed, failed, report::reference_label(result.reference),
-             report::reference_levels_text(result.reference), report::pareto_text(rows));
+             report::reference_levels_text(result.reference), report::pareto_text(rows, report::context_facts(context)));
   if (!options.out.empty()) fmt::print("\nwrote {} (report.md)\n", options.out);
   return exit_ok;
 }
@@ -181,6 +183,8 @@ Command add_sweep_command(CLI::App& parent) {
                 "generalized-alpha at 3 steps, explicit RK at 0.5x and 2x its stability limit");
   add_reference_options(*sub, options->reference);
   add_stiffening_option(*sub, options->stiffening);
+  add_tolerance_option(*sub, options->tolerance,
+                       "a configuration passes when its worst normalized RMS error over the judged outputs is within it");
   return {sub, [options] { return run_sweep(*options); }};
 }
 

@@ -227,10 +227,10 @@ std::string campbell_csv(const study::CampbellResult& r) {
 std::string campbell_script(const study::CampbellResult& r, const std::string& terminal) {
   std::string script = fmt::format(
       "# Drawn by `ffrf modes --spin-range --out`; restyle and rerun with `gnuplot campbell.gp` in this directory.\n"
-      "set terminal {} size 1000,650 font ',11'\n"
+      "set terminal {} size 1000,720 font ',11'\n"
       "set output 'campbell.png'\n"
       "set datafile separator ','\n"
-      "set key outside right\n"
+      "set key below horizontal Left reverse maxcols 4\n"
       "set grid\n"
       "set title 'Campbell diagram, {} elements, {}, hub radius {:g} m' noenhanced\n"
       "set xlabel 'spin Omega [rad/s]'\n"

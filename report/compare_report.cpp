@@ -4,10 +4,12 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <numbers>
+#include <cmath>
 #include <stdexcept>
 
+#include "report/compare_tables.hpp"
 #include "report/crane_charts.hpp"
+#include "report/verdict_report.hpp"
 #include "report/reference_report.hpp"
 
 namespace ffrf::report {
@@ -17,11 +19,7 @@ using coupling::all_channels;
 using study::Comparison;
 using study::ModelRun;
 using coupling::channel_name;
-using coupling::channel_unit;
 
-constexpr double degrees = 180.0 / std::numbers::pi;
-
-std::string md(double value) { return format_value(value); }
 std::string sci(double value) { return std::isfinite(value) ? fmt::format("{:.2e}", value) : "-"; }
 
 std::string window_text(double start) {
@@ -35,68 +33,26 @@ std::string settings_text(const RunContext& c) {
                      c.settings.output_interval);
 }
 
-// Every run of the report, the reference last, with its label.
-std::vector<std::pair<const ModelRun*, std::string>> all_runs(const Comparison& c) {
-  std::vector<std::pair<const ModelRun*, std::string>> rows;
-  for (const ModelRun& run : c.runs) rows.emplace_back(&run, run.choice.label());
-  rows.emplace_back(&c.reference.run, reference_label(c.reference));
-  return rows;
+// The verdict in words: the headline and what failed.
+std::string verdict_sentence(const Comparison& c) {
+  const std::vector<study::MeasuredModel> measured = study::measured_models(c);
+  const std::string failed = failed_list(c.verdict, measured);
+  return verdict_headline(c.verdict, measured, reference_label(c.reference), "models") + (failed.empty() ? "" : " " + failed);
 }
 
-std::string static_table(const scene::Scene& scene, const Comparison& c) {
-  std::string t =
-      "| model | elastic DOFs | draft at mid-length [m] | trim [deg] | tip transverse [m] | tip axial [m] | wire stretch [m] | "
-      "wire tension [N] | joint moment at B [N m] |\n|---|--:|--:|--:|--:|--:|--:|--:|--:|\n";
-  for (const auto& [run, label] : all_runs(c)) {
-    const coupling::CraneOutputs& o = run->static_outputs();
-    t += fmt::format("| {} | {} | {:.4f} | {:+.4f} | {:+.5f} | {:+.5f} | {:.5f} | {} | {} |\n", label, run->elastic_dof,
-                     study::draft_at_mid_length(scene, o), o.hull.z() * degrees, o.tip_deflection.y(), o.tip_deflection.x(),
-                     scene.wire ? o.wire_length - scene.wire->unstretched_length : 0.0, md(o.wire_tension), md(o.joint_reaction.z()));
-  }
-  return t;
-}
-
-std::string error_table(const Comparison& c, bool normalized) {
-  std::string t = "| model |", rule = "|---|";
-  for (const auto channel : all_channels) {
-    t += normalized ? fmt::format(" {} |", channel_name(channel))
-                    : fmt::format(" {} [{}] |", channel_name(channel), channel_unit(channel));
-    rule += "--:|";
-  }
-  t += normalized ? " DAF error | worst |\n" + rule + "--:|--:|\n" : "\n" + rule + "\n";
-  for (std::size_t m = 0; m < c.runs.size(); ++m) {
-    t += fmt::format("| {} |", c.runs[m].choice.label());
-    for (const auto channel : all_channels) {
-      const coupling::ChannelError& e = c.errors[m][channel];
-      t += fmt::format(" {} |", sci(normalized ? e.normalized_rms : e.max_abs));
-    }
-    if (normalized) t += fmt::format(" {} | {} |", sci(c.errors[m].daf_error), sci(c.worst[m].error));
-    t += "\n";
-  }
-  return t;
-}
-
-std::string wire_table(const Comparison& c) {
-  std::string t = "| model | static tension [N] | max tension [N] | dynamic amplification factor | slack events |\n"
-                  "|---|--:|--:|--:|--:|\n";
-  for (const auto& [run, label] : all_runs(c)) {
-    t += fmt::format("| {} | {} | {} | {:.4f} | {} |\n", label, md(run->static_outputs().wire_tension),
-                     md(run->amplification * run->static_outputs().wire_tension), run->amplification, run->slack_events());
-  }
-  return t;
-}
-
-std::string cost_table(const Comparison& c) {
-  std::string t = "| model | wall time [s] | real-time factor | steps | function evaluations | Jacobian evaluations | "
-                  "Newton iterations | error-test failures | max constraint residual [m] |\n"
-                  "|---|--:|--:|--:|--:|--:|--:|--:|--:|\n";
-  for (const auto& [run, label] : all_runs(c)) {
-    const coupling::SolverStats& s = run->result.stats;
-    t += fmt::format("| {} | {:.3g} | {:.4g} | {} | {} | {} | {} | {} | {:.2g} |\n", label, s.wall_seconds,
-                     run->real_time_factor, s.steps, s.function_evaluations, s.jacobian_evaluations, s.newton_iterations,
-                     s.error_test_failures, run->max_constraint_residual);
-  }
-  return t;
+// Why the verdict judges the total error, and what the two parts are.
+std::string measure_text(const Comparison& c) {
+  return fmt::format(
+      "The verdict judges each model's **worst total error** over the judged outputs ({}): the normalized RMS error "
+      "RMS(x − x_ref) / S, S = RMS(x_ref − mean x_ref), {} — the error of `ffrf sweep` and `ffrf recommend` too. It has "
+      "two parts, reported per output below: the **static error** |x_s − x_ref_s| / S (the model's static equilibrium "
+      "against the reference's: the static table) and the **dynamic error** RMS(d − d_ref) / S (the displacement d from "
+      "each model's own equilibrium against the reference's: what the charts draw, their lower panels the difference); "
+      "total ≤ static + dynamic. The verdict uses the total because a design reads absolute positions and loads: an "
+      "equilibrium that is off counts as much as a motion that is off. Errors below the reference's own last change "
+      "({}) are not resolved.",
+      study::output_list(c.judged), window_text(c.window_start),
+      c.reference.levels.size() > 1 ? fmt::format("{:.2g}", c.reference.levels.back().change) : std::string("not measured"));
 }
 
 }  // namespace
@@ -142,32 +98,53 @@ std::string compare_markdown(const RunContext& ctx, const Comparison& c) {
                    scene.simulation.cargo_lift > 0.0
                        ? fmt::format(" (its static equilibrium, the cargo raised {:g} m)", scene.simulation.cargo_lift)
                        : std::string(" (its own static equilibrium)"));
-  r += fmt::format("- errors against: {}\n", reference_label(c.reference));
+  r += fmt::format("- errors against: {}, {}\n", reference_label(c.reference), window_text(c.window_start));
+  r += fmt::format("- tolerance of the verdict: τ = {:g} on the worst total error over {}\n", c.verdict.tolerance,
+                   study::output_list(c.judged));
   r += fmt::format("- ffrf {}, {}\n\n", ffrf_version(), ctx.date);
   r += stiffening_sentence(c) + "\n\n";
+  // The marks let scripts/regenerate-docs.sh quote this section (the README does).
+  r += "## Verdict\n\n<!-- verdict:begin -->\n**" + verdict_sentence(c) + "**\n\n";
+  r += verdict_table(c) + "<!-- verdict:end -->\n\n";
+  r += "Speed-ups: the reference's wall time (integration) and solver work (steps × state size, the cost measure of "
+       "`ffrf recommend`: independent of the machine's load) over the model's. Static and dynamic error: the two parts of "
+       "the worst output's error.\n\n";
+  r += measure_text(c) + "\n\n";
   r += "## Converged reference\n\n";
   r += fmt::format("Nodal model refined level by level (elements doubled, CVODE tolerance tightened 10×) until the worst "
                    "normalized RMS change of the outputs between two levels, {}, falls below the bound. ",
                    window_text(c.window_start));
   r += reference_verdict(c.reference) + "\n\n" + reference_levels_markdown(c.reference) + "\n";
   r += "## Static equilibrium\n\n" + static_table(scene, c) + "\n";
-  r += fmt::format("## Time histories\n\nDrawn: {}and the reference (every model is in the tables and has its CSV). Motions "
-                   "are displacements from each model's static equilibrium.\n\n", plotted);
-  for (const std::string& name : crane_chart_names()) r += fmt::format("![{0}]({0}.png)\n\n", name);
-  r += fmt::format("## Errors against the reference\n\nPer output channel, {}: normalized RMS error = RMS(x − x_ref) / "
-                   "RMS(x_ref − mean x_ref); DAF error = |DAF − DAF_ref| / DAF_ref of the wire tension's dynamic "
-                   "amplification factor (max tension / static tension) in that window; worst = the largest normalized "
-                   "RMS error over the judged outputs ({}: docs/validation.md says why). Pitch channels in rad.\n\n",
-                   window_text(c.window_start), study::output_list(c.judged));
-  r += "### Normalized RMS error\n\n" + error_table(c, true) + "\n";
-  r += "### Maximum absolute error\n\n" + error_table(c, false) + "\n";
+  r += fmt::format(
+      "## Time histories\n\nDrawn: {}and the reference (dashed black, drawn last; every model is in the tables and has its "
+      "CSV). Upper panels: motions are displacements from each model's own static equilibrium; the wire tension and the tip "
+      "deflection are absolute (a rigid boom has no tip deflection and is left off those charts). Lower panels: "
+      "|d − d_ref|, the difference of each model's displacement from its own static value against the reference's, on a "
+      "log axis (`differences.csv`) — what the dynamic error measures; the static offsets are in the tables. The dotted "
+      "line marks the start of the error window. Pitch in degrees.\n\n",
+      plotted);
+  for (const std::string& name : crane_chart_names(scene)) r += fmt::format("![{0}]({0}.png)\n\n", name);
+  r += fmt::format("## Errors against the reference, per output\n\nPer output channel, {}. Pitch channels in degrees "
+                   "where absolute. The tip deflection is reported, not judged (docs/validation.md says why).\n\n",
+                   window_text(c.window_start));
+  r += "### Total error (normalized RMS): what the verdict judges\n\nRMS(x − x_ref) / S; DAF error = |DAF − DAF_ref| / "
+       "DAF_ref of the wire tension's dynamic amplification factor (max tension / static tension) in the window; worst = "
+       "the largest over the judged outputs.\n\n" +
+       error_table(c, ErrorKind::total) + "\n";
+  r += "### Static error (normalized): |x_s − x_ref_s| / S\n\n" + error_table(c, ErrorKind::static_part) + "\n";
+  r += "### Dynamic error (normalized RMS): RMS(d − d_ref) / S\n\n" + error_table(c, ErrorKind::dynamic_part) + "\n";
+  r += "### Static offset x_s − x_ref_s\n\n" + error_table(c, ErrorKind::static_offset) + "\n";
+  r += "### Largest dynamic difference max |d − d_ref|\n\n" + error_table(c, ErrorKind::dynamic_max) + "\n";
+  r += "### Largest total difference max |x − x_ref|\n\n" + error_table(c, ErrorKind::total_max) + "\n";
   r += "## Wire rope\n\nDynamic amplification factor here: the maximum tension over the whole run divided by the static "
        "tension.\n\n" + wire_table(c) + "\n";
-  r += "## Solver costs\n\nWall time of the integration alone; real-time factor = simulated time / wall time.\n\n" +
-       cost_table(c) + "\n";
+  r += "## Solver costs\n\nWall time of the integration alone; real-time factor = simulated time / wall time; work = steps × "
+       "state size.\n\n" + cost_table(c) + "\n";
   r += "Files: ";
   for (const ModelRun& run : c.runs) r += fmt::format("`{}`, ", timeseries_name(run));
-  r += fmt::format("`{}`, `summary.json`; every chart with its gnuplot script (`NAME.gp`).\n", reference_timeseries_name);
+  r += fmt::format("`{}`, `differences.csv`, `summary.json`; every chart with its gnuplot script (`NAME.gp`).\n",
+                   reference_timeseries_name);
   return r;
 }
 
@@ -177,8 +154,13 @@ std::string compare_json(const RunContext& ctx, const Comparison& c) {
   json["provenance"] = settings_json(ctx);
   json["geometric_stiffening"] = scene::to_string(c.stiffening);
   json["stiffening_from_physics"] = c.stiffening_from_physics;
+  json["verdict"] = verdict_json(c.verdict, study::measured_models(c), verdict_sentence(c));
   json["reference"] = reference_json(c.reference);
   json["reference"]["timeseries"] = reference_timeseries_name;
+  json["reference"]["steps"] = c.reference.run.result.stats.steps;
+  json["reference"]["state_size"] = c.reference.run.state_size;
+  json["reference"]["work"] = c.reference.run.work();
+  json["reference"]["wall_s"] = c.reference.run.result.stats.wall_seconds;
   json["error_window_start_s"] = c.window_start;
   json["judged_outputs"] = Json::array();
   for (const auto channel : c.judged) json["judged_outputs"].push_back(channel_name(channel));
@@ -186,40 +168,79 @@ std::string compare_json(const RunContext& ctx, const Comparison& c) {
   for (std::size_t m = 0; m < c.runs.size(); ++m) {
     Json model = model_json(*ctx.scene, c.runs[m]);
     model["timeseries"] = timeseries_name(c.runs[m]);
+    model["state_size"] = c.runs[m].state_size;
+    model["work"] = c.runs[m].work();
     Json errors = Json::object();
     for (const auto channel : all_channels) {
       const coupling::ChannelError& e = c.errors[m][channel];
-      errors[std::string(channel_name(channel))] =
-          Json{{"normalized_rms", e.normalized_rms}, {"max_abs", e.max_abs}, {"normalized_max", e.normalized_max}};
+      const study::SplitError& s = c.split[m][static_cast<std::size_t>(channel)];
+      const double unit = display_scale(channel);
+      errors[std::string(channel_name(channel))] = Json{{"normalized_rms", e.normalized_rms},
+                                                        {"static_error", s.static_error},
+                                                        {"dynamic_error", s.dynamic_error},
+                                                        {"unit", display_unit(channel)},
+                                                        {"max_abs", e.max_abs * unit},
+                                                        {"normalized_max", e.normalized_max},
+                                                        {"static_offset", s.static_offset * unit},
+                                                        {"dynamic_max_abs", s.dynamic_max * unit},
+                                                        {"scale", s.scale * unit}};
     }
     errors["daf_error"] = c.errors[m].daf_error;
     errors["worst_normalized_rms"] = c.worst[m].error;
     errors["worst_output"] = channel_name(c.worst[m].channel);
     model["errors_to_reference"] = std::move(errors);
+    model["verdict"] = Json{{"passed", c.verdict.models[m].passed},
+                            {"wall_speedup", c.verdict.models[m].wall_speedup},
+                            {"work_speedup", c.verdict.models[m].work_speedup}};
     json["models"].push_back(std::move(model));
   }
   return json_text(json);
 }
 
+namespace {
+
+// `text` wrapped at `width` columns, every line after the first indented by `indent` spaces.
+std::string wrapped(const std::string& text, std::size_t width, std::size_t indent) {
+  std::string out, line;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      out += line + "\n" + std::string(indent, ' ');
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+    start = end + 1;
+  }
+  return out + line;
+}
+
+}  // namespace
+
 std::string compare_text(const RunContext& ctx, const Comparison& c) {
-  std::string t = fmt::format("scene       {}\nsettings    {}, stiffening {}\nerrors      {} against {}\n\n", ctx.scene_file,
-                              settings_text(ctx), scene::to_string(c.stiffening), window_text(c.window_start),
-                              reference_label(c.reference));
+  std::string t = fmt::format("scene       {}\nsettings    {}, stiffening {}\nerrors      {} against {}\n"
+                              "tolerance   {:g} on the worst total error over {}\n\n",
+                              ctx.scene_file, settings_text(ctx), scene::to_string(c.stiffening), window_text(c.window_start),
+                              reference_label(c.reference), c.verdict.tolerance, study::output_list(c.judged));
   t += "converged reference\n" + reference_levels_text(c.reference) + "\n";
-  t += fmt::format("{:<24} {:>5} {:>11} {:>10} {:>10} {:>10} {:>10} {:>9} {:>11}\n", "model", "DOFs", "tip v [m]",
-                   "cargo hv", "wire T", "DAF err", "worst", "wall [s]", "x real time");
-  auto row = [&](const std::string& label, const ModelRun& run, const coupling::RunErrors* e, const study::WorstError* w) {
-    t += fmt::format("{:<24} {:>5} {:>+11.5f} {:>10} {:>10} {:>10} {:>10} {:>9.3g} {:>11.4g}\n", label, run.elastic_dof,
-                     run.static_outputs().tip_deflection.y(),
-                     e ? sci((*e)[coupling::OutputChannel::cargo_heave].normalized_rms) : "-",
-                     e ? sci((*e)[coupling::OutputChannel::wire_tension].normalized_rms) : "-",
-                     e ? sci(e->daf_error) : "-", w ? sci(w->error) : "-", run.result.stats.wall_seconds,
-                     run.real_time_factor);
-  };
-  for (std::size_t m = 0; m < c.runs.size(); ++m) row(c.runs[m].choice.label(), c.runs[m], &c.errors[m], &c.worst[m]);
-  row("(reference)", c.reference.run, nullptr, nullptr);
-  t += fmt::format("(cargo hv, wire T: normalized RMS error of cargo heave and wire tension; worst: over {})\n",
-                   study::output_list(c.judged));
+  const std::vector<study::MeasuredModel> measured = study::measured_models(c);
+  t += fmt::format("{:<24} {:>4} {:>9} {:<13} {:>9} {:>9} {:>7} {:>9} {:>7} {:>7}\n", "model", "DOFs", "worst", "worst output",
+                   "static", "dynamic", "verdict", "wall [s]", "x wall", "x work");
+  for (std::size_t m = 0; m < c.runs.size(); ++m) {
+    const study::SplitError& s = c.split[m][static_cast<std::size_t>(c.worst[m].channel)];
+    t += fmt::format("{:<24} {:>4} {:>9} {:<13} {:>9} {:>9} {:>7} {:>9.3g} {:>7} {:>7}\n", c.runs[m].choice.label(),
+                     c.runs[m].elastic_dof, sci(c.worst[m].error), channel_name(c.worst[m].channel), sci(s.static_error),
+                     sci(s.dynamic_error), pass_cell(c.verdict, measured, m), c.runs[m].result.stats.wall_seconds,
+                     speedup_cell(c.verdict.models[m].wall_speedup), speedup_cell(c.verdict.models[m].work_speedup));
+  }
+  t += fmt::format("{:<24} {:>4} {:>9} {:<13} {:>9} {:>9} {:>7} {:>9.3g} {:>7} {:>7}\n", "(reference)",
+                   c.reference.run.elastic_dof, "-", "-", "-", "-", "-", c.reference.run.result.stats.wall_seconds, "1×", "1×");
+  t += "(worst: the largest total normalized RMS error over the judged outputs, what the verdict judges; static, dynamic: "
+       "its two parts for that output — the equilibrium offset, and the motion about each model's own equilibrium; x wall, "
+       "x work: the reference's wall time and solver work (steps x state size) over the model's)\n\n";
+  t += "verdict     " + wrapped(verdict_sentence(c), 100, 12) + "\n";
   return t;
 }
 

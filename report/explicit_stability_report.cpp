@@ -30,7 +30,7 @@ std::string script_header(const std::string& name, const std::string& terminal, 
       "set terminal {1} size 1000,{3} font ',11'\n"
       "set output '{0}.png'\n"
       "set datafile separator ','\n"
-      "set key outside right\n"
+      "set key below horizontal Left reverse\n"
       "set grid\n"
       "set title {2} noenhanced\n",
       name, terminal, gnuplot_quoted(title), height);

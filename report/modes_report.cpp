@@ -27,7 +27,7 @@ std::string header(const std::string& terminal, const std::string& output, const
       "set terminal {1} size 1000,650 font ',11'\n"
       "set output '{0}.png'\n"
       "set datafile separator ','\n"
-      "set key outside right\n"
+      "set key below horizontal Left reverse\n"
       "set grid\n"
       "set title '{2}' noenhanced\n",
       output, terminal, title);
@@ -200,7 +200,7 @@ std::string convergence_script(const study::ModesResult& r, const std::string& t
       "set format y '10^{%L}'\n"
       "set xlabel 'elements N'\n"
       "set ylabel '|f_{FE} - f_{analytic}| / f_{analytic}'\n"
-      "set xtics (2, 4, 8, 16, 32, 64, 128)\n"
+      "set xtics (2, 4, 8, 16, 32, 64, 128)\nset xrange [1.6:160]\n"
       "plot for [k=1:4] 'frequency_convergence.csv' skip 1 using 1:(column(k+2) > 0 ? column(k+2) : NaN) \\\n"
       "       with linespoints pt 7 title sprintf('f%d', k), \\\n"
       "     'frequency_convergence.csv' skip 1 using 1:(column(3) > 0 ? 1e-3 * (4.0 / $1)**4 : NaN) \\\n"

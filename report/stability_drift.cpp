@@ -10,19 +10,29 @@
 namespace ffrf::report {
 namespace {
 
-std::string chart_script(const study::DriftStudy& study, const std::string& title) {
+// |C| below 1e-14 of the boom length is rounding of coordinates of that size (double precision
+// resolves ~2e-16 of a number): the chart draws it at that floor instead of spanning 60 decades.
+constexpr double rounding_floor = 1e-14;
+
+std::string chart_script(const study::DriftStudy& study, const std::string& title, double length) {
+  const double floor = rounding_floor * length;
   std::string gp = fmt::format(
-      "set terminal {} size 900,560\nset output 'constraint_drift.png'\nset datafile separator ','\n"
-      "set title {}\nset xlabel 'time [s]'\nset ylabel '|C| [m]'\nset logscale y\nset format y '10^{{%L}}'\n"
-      "set key below\nset grid\n",
-      png_terminal(), gnuplot_quoted(title));
+      "set terminal {} size 1000,600 font ',11'\nset output 'constraint_drift.png'\nset datafile separator ','\n"
+      "set title {} noenhanced\nset xlabel 'time [s]'\n"
+      "set ylabel {} noenhanced\nset logscale y\nset format y '10^{{%L}}'\n"
+      "# rounding noise: |C| below 1e-14 of the boom length L = {:g} m is drawn at that floor\n"
+      "floor = {:.3g}\nfloored(x) = x < floor ? floor : x\nset yrange [floor / 3:*]\n"
+      "set key below horizontal Left reverse\nset grid\n",
+      png_terminal(), gnuplot_quoted(title),
+      gnuplot_quoted(fmt::format("|C| [m]  (below {:.1e} m = 1e-14 L: rounding, drawn at that floor)", floor)), length,
+      floor);
   gp += "plot ";
   int column = 2;
   for (const study::DriftRun& run : study.runs) {
-    gp += fmt::format("'constraint_drift.csv' using 1:{} with lines lw 2 title {}, ", column++,
+    gp += fmt::format("'constraint_drift.csv' using 1:(floored(${})) with lines lw 2 title {}, ", column++,
                       gnuplot_quoted(std::string(coupling::to_string(run.formulation))));
   }
-  gp += fmt::format("{} with lines dt 2 lc rgb 'red' title 'drift bound {} m'\n", study.limit, shown(study.limit));
+  gp += fmt::format("{} with lines dt 2 lw 2 lc rgb 'red' title 'drift bound {} m'\n", study.limit, shown(study.limit));
   return gp;
 }
 
@@ -85,7 +95,8 @@ StabilitySection constraint_drift_section(const scene::Scene& scene, const study
   section.table = markdown_table({"formulation", "max \\|C\\| [m]", "final \\|C\\| [m]", "steps", "evaluations", "wall [s]"}, rows);
   out.write("constraint_drift.csv", drift_csv(study));
   out.write("constraint_drift.gp",
-            chart_script(study, fmt::format("{}: |C(t)| of the clamp, {}", scene.name, study.choice.label())));
+            chart_script(study, fmt::format("{}: |C(t)| of the clamp, {}", scene.name, study.choice.label()),
+                         scene.boom.mesh.length));
   run_gnuplot(out.staging(), "constraint_drift.gp");
   section.charts = {"constraint_drift.png"};
   using coupling::Integrator;

@@ -20,7 +20,7 @@ std::string history_script(const std::vector<const SpinRun*>& runs, const std::s
   std::string gp = fmt::format(
       "set terminal {} size 1000,600\nset output 'spin_tip_deflection.png'\nset datafile separator ','\n"
       "set title {} noenhanced\nset xlabel 'time [s]'\nset ylabel '|tip transverse deflection| [m]'\n"
-      "set logscale y\nset format y '10^{{%L}}'\nset key below\nset grid\nplot ",
+      "set logscale y\nset format y '10^{{%L}}'\nset key top right Left reverse opaque font ',10'\nset grid\nplot ",
       png_terminal(), gnuplot_quoted(title));
   for (std::size_t i = 0; i < runs.size(); ++i) {
     gp += fmt::format("{}'spin_tip_deflection.csv' using 1:(abs(column({}))) with lines lw 2 {} title {}", i == 0 ? "" : ", ",

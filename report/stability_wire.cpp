@@ -12,25 +12,29 @@
 namespace ffrf::report {
 namespace {
 
-const char* shade_colours[] = {"#f4a582", "#92c5de"};
+const char* run_colours[] = {"#d62728", "#1f77b4", "#2ca02c", "#ff7f0e"};
 
+// Each run's tension in its colour; its slack intervals as a bar of the same colour along the bottom
+// of the chart (one row per run), so that the intervals of two runs do not hide each other or the curves.
 std::string tension_script(const std::vector<study::WireRun>& runs, const std::string& title) {
   std::string gp = fmt::format(
-      "set terminal {} size 1000,560\nset output 'wire_tension.png'\nset datafile separator ','\n"
-      "set title {} noenhanced\nset xlabel 'time [s]'\nset ylabel 'wire tension [MN]'\nset key below\nset grid\n"
-      "set style fill transparent solid 0.35 noborder\n",
+      "set terminal {} size 1000,560 font ',11'\nset output 'wire_tension.png'\nset datafile separator ','\n"
+      "set title {} noenhanced\nset xlabel 'time [s]'\nset ylabel 'wire tension [MN]'\n"
+      "set key below horizontal Left reverse\nset grid\nset offsets 0, 0, 0, graph 0.12  # room for the slack bars\n",
       png_terminal(), gnuplot_quoted(title));
   for (std::size_t i = 0; i < runs.size(); ++i) {
+    const char* colour = run_colours[i % 4];
     for (const coupling::SlackInterval& slack : runs[i].slack) {
       const double end = std::isfinite(slack.end) ? slack.end : runs[i].run->result.time.back();
-      gp += fmt::format("set object rect from {}, graph 0 to {}, graph 1 fc rgb '{}' behind\n", slack.start, end,
-                        shade_colours[i % 2]);
+      gp += fmt::format("set object rect from {}, graph {:.3f} to {}, graph {:.3f} fc rgb '{}' fs solid 0.8 noborder front\n",
+                        slack.start, 0.01 + 0.045 * static_cast<double>(i), end, 0.045 + 0.045 * static_cast<double>(i),
+                        colour);
     }
   }
   gp += "plot ";
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    gp += fmt::format("{}'wire_tension.csv' using 1:(column({})/1e6) with lines lw 2 title {}", i == 0 ? "" : ", ", i + 2,
-                      gnuplot_quoted(runs[i].choice.label() + " (slack shaded)"));
+    gp += fmt::format("{}'wire_tension.csv' using 1:(column({})/1e6) with lines lw 2 lc rgb '{}' title {}", i == 0 ? "" : ", ",
+                      i + 2, run_colours[i % 4], gnuplot_quoted(runs[i].choice.label() + " (bar below: wire slack)"));
   }
   return gp + "\n";
 }

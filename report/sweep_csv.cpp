@@ -1,6 +1,8 @@
 // sweep.csv written and read back (see sweep_csv.hpp).
 #include "report/sweep_csv.hpp"
 
+#include "report/verdict_report.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -36,9 +38,9 @@ std::string sweep_csv_header() {
   std::string h = "id,model,family,elements,modes,static_modes,integrator,rtol,step,erk_stable_step";
   for (const auto channel : coupling::all_channels) h += fmt::format(",{}_nrms", coupling::channel_name(channel));
   for (const auto channel : coupling::all_channels) {
-    h += fmt::format(",{}_max_{}", coupling::channel_name(channel), unit_slug(coupling::channel_unit(channel)));
+    h += fmt::format(",{}_max_{}", coupling::channel_name(channel), unit_slug(display_unit(channel)));
   }
-  return h + ",daf_error,worst_nrms,steps,rhs_evaluations,jacobian_evaluations,newton_iterations,status,reason,wall_s\n";
+  return h + ",daf_error,worst_nrms,steps,state_size,work,rhs_evaluations,jacobian_evaluations,newton_iterations,status,reason,wall_s\n";
 }
 
 std::string sweep_csv_line(const study::SweepResult& r) {
@@ -52,14 +54,18 @@ std::string sweep_csv_line(const study::SweepResult& r) {
       r.stable_step > 0.0 ? number(r.stable_step) : "");
   const bool ok = r.status == study::RunStatus::ok;
   for (const auto& e : r.errors.channels) line += "," + (ok ? number(e.normalized_rms) : std::string());
-  for (const auto& e : r.errors.channels) line += "," + (ok ? number(e.max_abs) : std::string());
+  for (std::size_t channel = 0; channel < coupling::all_channels.size(); ++channel) {
+    const double unit = display_scale(coupling::all_channels[channel]);
+    line += "," + (ok ? number(r.errors.channels[channel].max_abs * unit) : std::string());
+  }
   line += "," + (ok ? number(r.errors.daf_error) : std::string());
   line += "," + (ok ? number(r.worst.error) : std::string());
   if (ok) {
-    line += fmt::format(",{},{},{},{}", r.stats.steps, r.stats.function_evaluations, r.stats.jacobian_evaluations,
-                        r.stats.newton_iterations);
+    line += fmt::format(",{},{},{},{},{},{}", r.stats.steps, r.state_size,
+                        number(static_cast<double>(r.stats.steps) * r.state_size), r.stats.function_evaluations,
+                        r.stats.jacobian_evaluations, r.stats.newton_iterations);
   } else {
-    line += ",,,,";
+    line += ",,,,,,";
   }
   line += fmt::format(",{},{},{}\n", study::to_string(r.status), r.reason.empty() ? std::string() : quoted(r.reason),
                       ok ? number(r.stats.wall_seconds) : std::string());
@@ -133,6 +139,7 @@ std::vector<SweepRow> read_sweep_csv(const std::string& text, const std::string&
       row.daf_error = optional_number(f[column("daf_error")]);
       row.worst = optional_number(f[column("worst_nrms")]);
       row.steps = f[column("steps")].empty() ? 0 : std::stol(f[column("steps")]);
+      row.state_size = f[column("state_size")].empty() ? 0 : std::stoi(f[column("state_size")]);
       row.status = f[column("status")];
       row.reason = f[column("reason")];
       row.wall = optional_number(f[column("wall_s")]);

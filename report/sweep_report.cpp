@@ -1,26 +1,52 @@
-// The sweep's CSV read back, Pareto front, charts and report (see sweep_report.hpp).
+// The sweep's Pareto front, verdict, report and context (see sweep_report.hpp).
 #include "report/sweep_report.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <stdexcept>
 
-#include "report/gnuplot.hpp"
+#include "report/json.hpp"
 #include "report/reference_report.hpp"
-#include "study/error_measure.hpp"
 #include "report/sweep_csv.hpp"
+#include "report/verdict_report.hpp"
+#include "study/error_measure.hpp"
 
 namespace ffrf::report {
 namespace {
 
 std::string sci(const std::optional<double>& v) { return v ? fmt::format("{:.2e}", *v) : "-"; }
 
-const std::vector<std::string> families{"rigid", "nodal", "modal", "modal+static"};
+// The value of "<!-- key: value -->" among the context's first lines (empty when absent).
+std::string context_value(const std::string& context, const std::string& key) {
+  const std::string tag = "<!-- " + key + ": ";
+  for (std::size_t start = 0; context.compare(start, 5, "<!-- ") == 0;) {
+    const std::size_t end = context.find('\n', start);
+    if (end == std::string::npos) break;
+    if (context.compare(start, tag.size(), tag) == 0) {
+      const std::size_t close = context.find(" -->", start);
+      if (close != std::string::npos && close < end) return context.substr(start + tag.size(), close - start - tag.size());
+    }
+    start = end + 1;
+  }
+  return "";
+}
 
-// The best (smallest worst-channel error) ok row of each model, in first-appearance order.
+double context_number(const std::string& context, const std::string& key, double otherwise) {
+  const std::string value = context_value(context, key);
+  try {
+    return value.empty() ? otherwise : std::stod(value);
+  } catch (const std::logic_error&) {
+    return otherwise;
+  }
+}
+
+}  // namespace
+
 std::vector<const SweepRow*> best_per_model(const std::vector<SweepRow>& rows) {
   std::vector<const SweepRow*> best;
   std::map<std::string, std::size_t> index;
@@ -32,16 +58,6 @@ std::vector<const SweepRow*> best_per_model(const std::vector<SweepRow>& rows) {
   }
   return best;
 }
-
-std::string script_header(const std::string& name, const std::string& terminal, const std::string& size) {
-  return fmt::format(
-      "# Drawn by `ffrf sweep --out`; restyle and rerun with `gnuplot {0}.gp` in this directory.\n"
-      "set terminal {1} size {2} font ',11'\nset output '{0}.png'\nset grid\nset logscale xy\n"
-      "set format y '10^{{%L}}'\n",
-      name, terminal, size);
-}
-
-}  // namespace
 
 std::vector<std::size_t> pareto_front(const std::vector<SweepRow>& rows) {
   std::vector<std::size_t> order;
@@ -58,95 +74,87 @@ std::vector<std::size_t> pareto_front(const std::vector<SweepRow>& rows) {
   return front;
 }
 
-void draw_sweep_charts(const StagedDirectory& out, const std::vector<SweepRow>& rows, const std::string& subtitle) {
-  const std::string terminal = png_terminal();
-  // accuracy_speed.dat: one gnuplot data set (index) per model family; pareto.dat: the front.
-  std::string points = "# wall_s worst_nrms id (one index per family: rigid, nodal, modal, modal+static)\n";
-  for (const std::string& family : families) {
-    points += fmt::format("# {}\n", family);
-    bool any = false;
-    for (const SweepRow& row : rows) {
-      if (row.family != family || !row.ok() || *row.worst <= 0.0) continue;
-      points += fmt::format("{} {} {}\n", *row.wall, *row.worst, row.id);
-      any = true;
+std::vector<study::MeasuredModel> measured_rows(const std::vector<SweepRow>& rows) {
+  std::vector<study::MeasuredModel> measured;
+  for (const SweepRow& row : rows) {
+    study::MeasuredModel m;
+    m.label = row.model + ", " + row.settings();
+    m.ran = row.ok();
+    m.reason = row.status;
+    if (row.ok()) {
+      m.error = *row.worst;
+      m.wall_seconds = *row.wall;
+      m.work = row.work();
     }
-    if (!any) points += "NaN NaN -1\n";
-    points += "\n\n";
+    measured.push_back(std::move(m));
   }
-  out.write("accuracy_speed.dat", points);
-  std::string front = "# wall_s worst_nrms id (Pareto front, by wall time)\n";
-  for (std::size_t i : pareto_front(rows)) front += fmt::format("{} {} {}\n", *rows[i].wall, *rows[i].worst, rows[i].id);
-  out.write("pareto.dat", front);
-  std::string script = script_header("accuracy_speed", terminal, "1000,650");
-  script += fmt::format(
-      "set title \"Accuracy vs speed: every successful sweep run\\n{}\" noenhanced\n"
-      "set xlabel 'wall time of the integration [s]'\n"
-      "set ylabel 'worst normalized RMS error over the judged outputs'\n"
-      "set key outside right\n"
-      "plot 'accuracy_speed.dat' index 0 using 1:2 with points pt 5 ps 1.4 lc rgb '#444444' title 'rigid', \\\n"
-      "     '' index 1 using 1:2 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'nodal', \\\n"
-      "     '' index 2 using 1:2 with points pt 9 ps 1.3 lc rgb '#ff7f0e' title 'modal', \\\n"
-      "     '' index 3 using 1:2 with points pt 13 ps 1.3 lc rgb '#2ca02c' title 'modal+static', \\\n"
-      "     'pareto.dat' using 1:2 with steps lw 2 lc rgb '#d62728' title 'Pareto front'\n",
-      subtitle);
-  out.write("accuracy_speed.gp", script);
-  run_gnuplot(out.staging(), "accuracy_speed.gp");
-
-  // mode_count.dat: best error per model (over its integrator settings) vs k; nodal vs N.
-  std::string modes = "# k worst_nrms cargo_heave_nrms (index 0: modal, 1: modal+static, 2: nodal vs N)\n";
-  for (const std::string family : {"modal", "modal+static", "nodal"}) {
-    std::map<int, const SweepRow*> best;
-    for (const SweepRow* row : best_per_model(rows)) {
-      if (row->family == family) best[family == "nodal" ? row->elements : row->modes] = row;
-    }
-    for (const auto& [count, row] : best) modes += fmt::format("{} {} {}\n", count, *row->worst, row->cargo_heave.value_or(NAN));
-    if (best.empty()) modes += "NaN NaN NaN\n";
-    modes += "\n\n";
-  }
-  out.write("mode_count.dat", modes);
-  script = script_header("mode_count", terminal, "1200,550");
-  script += fmt::format(
-      "set multiplot layout 1,2 title \"Error vs basis size: the best run of each model\\n{}\" noenhanced\n"
-      "set ylabel 'worst normalized RMS error'\nset key top right\n"
-      "set xlabel 'vibration modes k (N = 16 mesh)'\nset logscale x 2\n"
-      "plot 'mode_count.dat' index 0 using 1:2 with linespoints pt 9 lw 2 lc rgb '#ff7f0e' title 'modal', \\\n"
-      "     '' index 1 using 1:2 with linespoints pt 13 lw 2 lc rgb '#2ca02c' title 'modal + static modes'\n"
-      "set xlabel 'elements N'\n"
-      "plot 'mode_count.dat' index 2 using 1:2 with linespoints pt 7 lw 2 lc rgb '#1f77b4' title 'nodal'\n"
-      "unset multiplot\n",
-      subtitle);
-  out.write("mode_count.gp", script);
-  run_gnuplot(out.staging(), "mode_count.gp");
+  return measured;
 }
 
-std::string sweep_markdown(const std::vector<SweepRow>& rows, const std::string& preamble, double duration) {
+study::Verdict sweep_verdict(const std::vector<SweepRow>& rows, const SweepFacts& facts) {
+  return study::judge(measured_rows(rows), facts.reference_wall_seconds, facts.reference_work, facts.tolerance);
+}
+
+std::string sweep_verdict_sentence(const std::vector<SweepRow>& rows, const SweepFacts& facts) {
+  const study::Verdict verdict = sweep_verdict(rows, facts);
+  const std::vector<study::MeasuredModel> measured = measured_rows(rows);
+  std::string s = verdict_headline(verdict, measured, facts.reference, "configurations");
+  // The models none of whose settings passes, with their best error.
+  std::set<std::string> passing;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (verdict.models[i].passed) passing.insert(rows[i].model);
+  }
+  std::string never;
+  for (const SweepRow* best : best_per_model(rows)) {
+    if (passing.count(best->model) == 0) never += fmt::format("{}{} ({:.3g})", never.empty() ? "" : ", ", best->model, *best->worst);
+  }
+  if (!never.empty()) s += " Fail at every setting (best error): " + never + ".";
+  std::size_t not_ok = 0;
+  for (const SweepRow& row : rows) not_ok += row.ok() ? 0 : 1;
+  if (not_ok > 0) s += fmt::format(" {} run{} failed or {} skipped.", not_ok, not_ok == 1 ? "" : "s", not_ok == 1 ? "was" : "were");
+  return s;
+}
+
+std::string sweep_markdown(const std::vector<SweepRow>& rows, const std::string& preamble) {
+  const SweepFacts facts = context_facts(preamble);
   std::size_t ok = 0, failed = 0, skipped = 0;
   for (const SweepRow& row : rows) {
     ok += row.ok() ? 1 : 0;
     failed += row.status == "failed" ? 1 : 0;
     skipped += row.status == "skipped" ? 1 : 0;
   }
+  const study::Verdict verdict = sweep_verdict(rows, facts);
   std::string r = preamble;
   r += fmt::format("\n{} configurations: {} ok, {} failed, {} skipped. Every row is in `sweep.csv` (timing columns: "
                    "names ending in `_s`).\n\n",
                    rows.size(), ok, failed, skipped);
-  r += "Error measure: the **worst normalized RMS error over the judged outputs** named above (study/error_measure.hpp: "
-       "the same outputs, window and reference physics as compare and recommend) against the reference; cost: the wall "
-       "time of the integration (static equilibrium and mode shapes excluded).\n\n";
-  r += "## Pareto-optimal configurations\n\nNo other run is both faster and more accurate.\n\n"
-       "| id | model | integrator | worst error | cargo heave error | DAF error | wall time [s] | real-time factor | steps |\n"
-       "|--:|---|---|--:|--:|--:|--:|--:|--:|\n";
+  r += "Error measure: the **worst total normalized RMS error over the judged outputs** named above (study/error_measure.hpp: "
+       "the same outputs, window and reference physics as compare and recommend; static and dynamic parts together, as "
+       "`ffrf compare` splits them) against the reference; cost: the wall time of the integration (static equilibrium and "
+       "mode shapes excluded) and the solver work, steps × state size (recommend's measure, independent of the machine's "
+       "load). Speed-ups are the reference's over the run's.\n\n";
+  r += fmt::format("## Verdict (τ = {:g})\n\n**{}**\n\n", facts.tolerance, sweep_verdict_sentence(rows, facts));
+  if (std::isfinite(facts.reference_change)) {
+    r += fmt::format("Errors below the reference's own last change ({:.2g}) are not resolved.\n\n", facts.reference_change);
+  }
+  r += "## Pareto-optimal configurations\n\nNo other run is both faster and more accurate (labelled on the chart).\n\n"
+       "| id | model | integrator | worst error | cargo heave error | DAF error | wall time [s] | real-time factor | steps | "
+       "speed-up (wall) | speed-up (work) | τ |\n|--:|---|---|--:|--:|--:|--:|--:|--:|--:|--:|:-:|\n";
+  const std::vector<study::MeasuredModel> measured = measured_rows(rows);
   for (std::size_t i : pareto_front(rows)) {
     const SweepRow& row = rows[i];
-    r += fmt::format("| {} | {} | {} | {} | {} | {} | {:.3g} | {:.3g} | {} |\n", row.id, row.model, row.settings(),
-                     sci(row.worst), sci(row.cargo_heave), sci(row.daf_error), *row.wall, duration / *row.wall, row.steps);
+    r += fmt::format("| {} | {} | {} | {} | {} | {} | {:.3g} | {:.3g} | {} | {} | {} | {} |\n", row.id, row.model, row.settings(),
+                     sci(row.worst), sci(row.cargo_heave), sci(row.daf_error), *row.wall, facts.duration / *row.wall, row.steps,
+                     speedup_cell(verdict.models[i].wall_speedup), speedup_cell(verdict.models[i].work_speedup),
+                     pass_cell(verdict, measured, i));
   }
   r += "\n## Charts\n\n![accuracy vs speed](accuracy_speed.png)\n\n![error vs basis size](mode_count.png)\n\n";
-  r += "## Best run of each model\n\n| model | integrator | worst error | cargo heave error | wall time [s] |\n"
-       "|---|---|--:|--:|--:|\n";
+  r += "## Best run of each model\n\n| model | integrator | worst error | cargo heave error | wall time [s] | speed-up (work) |\n"
+       "|---|---|--:|--:|--:|--:|\n";
   for (const SweepRow* row : best_per_model(rows)) {
-    r += fmt::format("| {} | {} | {} | {} | {:.3g} |\n", row->model, row->settings(), sci(row->worst),
-                     sci(row->cargo_heave), *row->wall);
+    const std::size_t i = static_cast<std::size_t>(row - rows.data());
+    r += fmt::format("| {} | {} | {} | {} | {:.3g} | {} |\n", row->model, row->settings(), sci(row->worst), sci(row->cargo_heave),
+                     *row->wall, speedup_cell(verdict.models[i].work_speedup));
   }
   if (failed + skipped > 0) {
     r += "\n## Failed and skipped runs\n\n| id | model | integrator | status | reason |\n|--:|---|---|---|---|\n";
@@ -162,39 +170,91 @@ std::string sweep_markdown(const std::vector<SweepRow>& rows, const std::string&
 
 std::string sweep_context(const std::string& scene_file, const scene::Scene& scene, study::SweepGrid grid, double duration,
                           const study::SweepStudy& study) {
+  const study::ConvergedReference& ref = study.reference;
   return fmt::format(
-      "<!-- duration_s: {} -->\n# Accuracy–speed sweep: {}\n\n- scene: `{}`, {:g} s simulated, output every {:g} s\n- {}\n"
-      "- geometric stiffening of every run and the reference: {}{}\n- errors against {}, {}, worst over {}\n\n"
+      "<!-- duration_s: {} -->\n<!-- tolerance: {} -->\n<!-- reference: {} -->\n<!-- reference_wall_s: {} -->\n"
+      "<!-- reference_work: {} -->\n<!-- reference_change: {} -->\n"
+      "# Accuracy–speed sweep: {}\n\n- scene: `{}`, {:g} s simulated, output every {:g} s\n- {}\n"
+      "- geometric stiffening of every run and the reference: {}{}\n- errors against {}, {}, worst over {}\n"
+      "- tolerance of the verdict: τ = {:g}\n\n"
       "## Converged reference\n\n{}\n\n{}",
-      duration, scene.name.empty() ? scene_file : scene.name, scene_file, duration, scene.simulation.output_interval,
+      duration, study.tolerance, reference_label(ref), ref.run.result.stats.wall_seconds, ref.run.work(),
+      ref.levels.size() > 1 ? fmt::format("{}", ref.levels.back().change) : std::string("nan"),
+      scene.name.empty() ? scene_file : scene.name, scene_file, duration, scene.simulation.output_interval,
       study::grid_description(grid), scene::to_string(study.stiffening),
       study.stiffening_from_physics ? " (what the physics needs, as recommend decides; --stiffening sets it)" : " (--stiffening)",
-      reference_label(study.reference),
+      reference_label(ref),
       study.window_start > 0.0 ? fmt::format("for t ≥ {:g} s (after the wave ramp)", study.window_start)
                                : std::string("over the whole run"),
-      study::output_list(study.judged), reference_verdict(study.reference), reference_levels_markdown(study.reference));
+      study::output_list(study.judged), study.tolerance, reference_verdict(ref), reference_levels_markdown(ref));
 }
 
-double context_duration(const std::string& context) {
-  const std::string tag = "<!-- duration_s: ";
-  return context.rfind(tag, 0) == 0 ? std::stod(context.substr(tag.size())) : 0.0;
+SweepFacts context_facts(const std::string& context) {
+  SweepFacts facts;
+  facts.duration = context_number(context, "duration_s", 0.0);
+  facts.tolerance = context_number(context, "tolerance", 0.01);
+  facts.reference = context_value(context, "reference");
+  if (facts.reference.empty()) facts.reference = "reference";
+  facts.reference_wall_seconds = context_number(context, "reference_wall_s", 0.0);
+  facts.reference_work = context_number(context, "reference_work", 0.0);
+  facts.reference_change = context_number(context, "reference_change", NAN);
+  return facts;
 }
 
-std::string pareto_text(const std::vector<SweepRow>& rows) {
-  std::string t = fmt::format("{:>4}  {:<26} {:<28} {:>11} {:>10}\n", "id", "model", "integrator", "worst error", "wall [s]");
-  for (std::size_t i : pareto_front(rows)) {
-    t += fmt::format("{:>4}  {:<26} {:<28} {:>11.3e} {:>10.3g}\n", rows[i].id, rows[i].model, rows[i].settings(),
-                     *rows[i].worst, *rows[i].wall);
+std::string sweep_json(const std::vector<SweepRow>& rows, const SweepFacts& facts) {
+  const study::Verdict verdict = sweep_verdict(rows, facts);
+  const std::vector<study::MeasuredModel> measured = measured_rows(rows);
+  Json json;
+  json["command"] = "sweep";
+  json["duration_s"] = facts.duration;
+  json["reference"] = Json{{"label", facts.reference},
+                           {"wall_s", facts.reference_wall_seconds},
+                           {"work", facts.reference_work},
+                           {"last_change", facts.reference_change}};
+  std::size_t ok = 0, failed = 0, skipped = 0;
+  for (const SweepRow& row : rows) {
+    ok += row.ok() ? 1 : 0;
+    failed += row.status == "failed" ? 1 : 0;
+    skipped += row.status == "skipped" ? 1 : 0;
   }
-  return t;
+  json["configurations"] = Json{{"total", rows.size()}, {"ok", ok}, {"failed", failed}, {"skipped", skipped}};
+  json["verdict"] = verdict_json(verdict, measured, sweep_verdict_sentence(rows, facts));
+  json["pareto"] = Json::array();
+  for (const std::size_t i : pareto_front(rows)) {
+    const SweepRow& row = rows[i];
+    json["pareto"].push_back(Json{{"id", row.id},
+                                  {"model", row.model},
+                                  {"integrator", row.settings()},
+                                  {"worst_normalized_rms", *row.worst},
+                                  {"wall_s", *row.wall},
+                                  {"work", row.work()},
+                                  {"wall_speedup", verdict.models[i].wall_speedup},
+                                  {"work_speedup", verdict.models[i].work_speedup},
+                                  {"passed", verdict.models[i].passed}});
+  }
+  return json_text(json);
 }
 
-void write_sweep_outputs(const std::string& dir, std::vector<SweepRow>& rows, const std::string& context, double duration) {
+std::string pareto_text(const std::vector<SweepRow>& rows, const SweepFacts& facts) {
+  const study::Verdict verdict = sweep_verdict(rows, facts);
+  std::string t = fmt::format("{:>4}  {:<26} {:<28} {:>11} {:>10} {:>7} {:>7}\n", "id", "model", "integrator", "worst error",
+                              "wall [s]", "x wall", "x work");
+  for (std::size_t i : pareto_front(rows)) {
+    t += fmt::format("{:>4}  {:<26} {:<28} {:>11.3e} {:>10.3g} {:>7} {:>7}\n", rows[i].id, rows[i].model, rows[i].settings(),
+                     *rows[i].worst, *rows[i].wall, speedup_cell(verdict.models[i].wall_speedup),
+                     speedup_cell(verdict.models[i].work_speedup));
+  }
+  return t + fmt::format("\nverdict (tolerance {:g}): {}\n", facts.tolerance, sweep_verdict_sentence(rows, facts));
+}
+
+void write_sweep_outputs(const std::string& dir, std::vector<SweepRow>& rows, const std::string& context) {
+  const SweepFacts facts = context_facts(context);
   StagedDirectory out(dir, "report.md");
   out.write("sweep.csv", sweep_csv(rows));
   out.write(sweep_context_file, context);
-  draw_sweep_charts(out, rows, fmt::format("{:g} s simulated", duration));
-  out.write("report.md", sweep_markdown(rows, context, duration));
+  draw_sweep_charts(out, rows, facts);
+  out.write("summary.json", sweep_json(rows, facts));
+  out.write("report.md", sweep_markdown(rows, context));
   out.commit();
 }
 

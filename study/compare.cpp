@@ -27,6 +27,7 @@ Comparison compare(const scene::Scene& scene, const CompareRequest& request,
   };
   modal::ModeCache own;
   modal::ModeCache& cache = modes != nullptr ? *modes : own;
+  judge({}, 0.0, 0.0, request.tolerance);  // the tolerance is valid before anything runs
   Comparison c;
   c.settings = request.settings;
   c.stiffening_from_physics = !request.stiffening;
@@ -42,9 +43,27 @@ Comparison compare(const scene::Scene& scene, const CompareRequest& request,
     c.runs.push_back(run_model(modelled, model.choice, request.settings, &cache));
     c.plotted.push_back(model.plotted);
     c.errors.push_back(coupling::compare_runs(c.runs.back().result, c.reference.run.result, c.window_start));
+    c.split.push_back(split_errors(c.runs.back(), c.reference.run, c.window_start));
     c.worst.push_back(worst_error(c.errors.back(), c.judged));
   }
+  c.verdict = judge(measured_models(c), c.reference.run.result.stats.wall_seconds, c.reference.run.work(), request.tolerance);
+  // The chosen model is drawn on the charts beside the fixed set.
+  if (c.verdict.cheapest) c.plotted[*c.verdict.cheapest] = true;
   return c;
+}
+
+std::vector<MeasuredModel> measured_models(const Comparison& c) {
+  std::vector<MeasuredModel> models;
+  for (std::size_t m = 0; m < c.runs.size(); ++m) {
+    MeasuredModel model;
+    model.label = c.runs[m].choice.label();
+    model.error = c.worst[m].error;
+    model.worst_output = std::string(coupling::channel_name(c.worst[m].channel));
+    model.wall_seconds = c.runs[m].result.stats.wall_seconds;
+    model.work = c.runs[m].work();
+    models.push_back(std::move(model));
+  }
+  return models;
 }
 
 }  // namespace ffrf::study

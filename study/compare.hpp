@@ -2,7 +2,8 @@
 // the models of compared_models() (rigid, nodal N = 1 as in the paper, nodal N = 16, modal k = 1,
 // 2, 4 with and without static modes), each through the one pipeline from the scene's initial
 // state, each measured against the reference over the error window on the judged outputs
-// (study/error_measure.hpp), with a verdict against a tolerance.
+// (study/error_measure.hpp): the total error per output split into its static and dynamic parts
+// (study/error_split.hpp), and the verdict against a tolerance (study/verdict.hpp).
 #pragma once
 
 #include <functional>
@@ -12,8 +13,10 @@
 
 #include "coupling/error_metrics.hpp"
 #include "study/error_measure.hpp"
+#include "study/error_split.hpp"
 #include "study/reference.hpp"
 #include "study/run_pipeline.hpp"
+#include "study/verdict.hpp"
 
 namespace ffrf::study {
 
@@ -31,7 +34,7 @@ struct CompareRequest {
   // Geometric stiffening of every model and the reference; empty: what the physics needs at
   // `tolerance` together with the scene's (physics_stiffening: the same as recommend's reference).
   std::optional<scene::Stiffening> stiffening;
-  double tolerance = 0.01;
+  double tolerance = 0.01;  // of the verdict, in (0, 1)
 };
 
 struct Comparison {
@@ -43,11 +46,16 @@ struct Comparison {
   std::vector<coupling::OutputChannel> judged;  // the outputs the worst error is taken over
   std::vector<ModelRun> runs;                   // in compared_models() order
   std::vector<bool> plotted;                    // per run
-  std::vector<coupling::RunErrors> errors;      // per run, against the reference
+  std::vector<coupling::RunErrors> errors;      // per run, against the reference (total errors)
+  std::vector<SplitErrors> split;               // per run: the static and dynamic parts per channel
   std::vector<WorstError> worst;                // per run, over `judged`
+  Verdict verdict;                              // per run, against the request's tolerance
 };
 
-// Throws scene::SceneError, coupling::SolverFailure; `progress` is told what runs next
+// The verdict's view of the compared runs (label, worst error, wall time, work).
+std::vector<MeasuredModel> measured_models(const Comparison& comparison);
+
+// Throws scene::SceneError, coupling::SolverFailure, SettingError (the tolerance); `progress` is told what runs next
 // ("reference", or a model's label) — the name of what failed when one of them throws.
 Comparison compare(const scene::Scene& scene, const CompareRequest& request,
                    const std::function<void(const std::string&)>& progress = {}, modal::ModeCache* modes = nullptr);

@@ -61,6 +61,7 @@ SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config
     r.errors = coupling::compare_runs(run.result, setup.reference->run.result, setup.window_start);
     r.worst = worst_error(r.errors, setup.judged);
     r.stats = run.result.stats;
+    r.state_size = run.state_size;
   } catch (const coupling::SolverFailure& failure) {
     r.status = RunStatus::failed;
     r.reason = fmt::format("{}: {} (t = {:g} s)", failure.solver(), failure.cause(), failure.time());
@@ -77,8 +78,12 @@ SweepStudy sweep(const scene::Scene& scene, const SweepRequest& request,
   if (request.jobs < 1) {
     throw SettingError(Setting::jobs, fmt::format("{}", request.jobs), "not a thread count (valid range [1, inf))");
   }
+  if (!(request.tolerance > 0.0 && request.tolerance < 1.0)) {
+    throw SettingError(Setting::tolerance, fmt::format("{}", request.tolerance), "not a tolerance (valid range (0, 1))");
+  }
   modal::ModeCache modes;
   SweepStudy study;
+  study.tolerance = request.tolerance;
   study.stiffening_from_physics = !request.stiffening;
   study.stiffening = request.stiffening.value_or(physics_stiffening(scene, request.tolerance));
   scene::Scene modelled = scene;

@@ -31,6 +31,7 @@ struct SweepResult {
   coupling::RunErrors errors;   // ok rows
   WorstError worst;             // ok rows: over the judged outputs
   coupling::SolverStats stats;  // ok rows
+  int state_size = 0;           // ok rows: 2 × minimal coordinates (work = steps × state size)
 };
 
 struct SweepRequest {
@@ -42,11 +43,12 @@ struct SweepRequest {
   // Geometric stiffening of every run and the reference; empty: physics_stiffening at `tolerance`
   // (as compare and recommend).
   std::optional<scene::Stiffening> stiffening;
-  double tolerance = 0.01;
+  double tolerance = 0.01;              // of the verdict (and of the physics deciding the stiffening)
   long max_explicit_steps = 2'000'000;  // ARKODE runs needing more steps are skipped (with the reason)
 };
 
 struct SweepStudy {
+  double tolerance = 0.01;  // of the verdict
   scene::Stiffening stiffening = scene::Stiffening::none;
   bool stiffening_from_physics = false;
   ConvergedReference reference;

@@ -12,7 +12,8 @@ namespace {
 
 const std::string kScene = source_file("cases/paper_floating_crane.toml");
 constexpr double kCargoWeight = 1.3e6 * 9.81;  // [N], the reference scene's cargo
-const char* const kCharts[] = {"crane_heave", "crane_pitch", "cargo_heave", "cargo_pitch", "wire_tension", "tip_deflection"};
+const char* const kCharts[] = {"crane_heave", "crane_pitch",    "cargo_heave", "cargo_pitch",
+                               "wire_tension", "tip_transverse", "tip_axial"};
 const char* const kHeader =
     "time_s,crane_surge_m,crane_heave_m,crane_pitch_deg,cargo_surge_m,cargo_heave_m,cargo_pitch_deg,tip_axial_m,"
     "tip_transverse_m,wire_tension_N,joint_force_x_N,joint_force_y_N,joint_moment_Nm,constraint_residual_m,"
@@ -170,7 +171,44 @@ TEST(CliCompare, WritesReportWithTheModelsTheReferenceAndTheCharts) {
   EXPECT_EQ(json["models"][2]["elastic_dof"].number, 48);
   EXPECT_EQ(json["models"][4]["model"].text, "modal k=2 (N=16)");
   EXPECT_GT(json["models"][0]["errors_to_reference"]["cargo_heave"]["normalized_rms"].number, 0.0);
-  expect_mentions(r.out, {"rigid", "nodal N=1", "nodal N=16", "modal k=4+static (N=16)", "(reference)"});
+  expect_mentions(r.out, {"rigid", "nodal N=1", "nodal N=16", "modal k=4+static (N=16)", "(reference)", "verdict",
+                          "x wall", "x work", "static", "dynamic"});
+  // The verdict (default tolerance 1 %), the static and dynamic errors, the difference panels' data.
+  expect_mentions(report, {"## Verdict", "τ = 0.01", "speed-up (wall)", "speed-up (work)", "Static error", "Dynamic error",
+                           "Static offset", "differences.csv"});
+  EXPECT_EQ(json["verdict"]["tolerance"].number, 0.01);
+  EXPECT_EQ(json["verdict"]["passed"].number + static_cast<double>(json["verdict"]["failed"].items.size()), 9.0);
+  const Json& pitch = json["models"][0]["errors_to_reference"]["crane_pitch"];
+  EXPECT_EQ(pitch["unit"].text, "deg") << "angles in degrees where a human reads them";
+  EXPECT_GE(pitch["static_error"].number, 0.0);
+  EXPECT_GE(pitch["dynamic_error"].number, 0.0);
+  EXPECT_GT(fs::file_size(out / "differences.csv"), 0u);
+}
+
+TEST(CliRun, AHubSceneWithoutCargoHullOrWireGetsOnlyTheBoomCharts) {
+  // cases/spin_up_beam.toml has a [hub] and a [boom], no [hull], [cargo] or [wire].
+  TempDir dir;
+  const fs::path out = dir / "spin";
+  const RunResult r = run_ffrf("run '" + source_file("cases/spin_up_beam.toml") + "' --duration 1 --out '" + out.string() + "'",
+                               dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(is_png(out / "tip_transverse.png"));
+  EXPECT_TRUE(is_png(out / "tip_axial.png"));
+  for (const char* chart : {"crane_heave", "crane_pitch", "cargo_heave", "cargo_pitch", "wire_tension"}) {
+    EXPECT_FALSE(fs::exists(out / (std::string(chart) + ".png"))) << chart;
+    EXPECT_FALSE(fs::exists(out / (std::string(chart) + ".gp"))) << chart;
+  }
+}
+
+TEST(CliCompare, ToleranceOutOfRangeIsBadInputBeforeAnythingRuns) {
+  TempDir dir;
+  for (const std::string command : {"compare", "sweep"}) {
+    for (const std::string value : {"0", "150%", "abc", "1"}) {
+      const RunResult r = run_ffrf(command + " " + kScene + " --tolerance " + value, dir.path());
+      EXPECT_EQ(r.exit_code, 2) << command << " --tolerance " << value;
+      EXPECT_NE(r.err.find("--tolerance " + value), std::string::npos) << r.err;
+    }
+  }
 }
 
 }  // namespace

@@ -39,6 +39,12 @@ TEST(CliStability, DroppedLoadWritesTheReportAndEveryApplicableSection) {
   const std::regex not_a_number("\\b(nan|inf)\\b", std::regex::icase);
   EXPECT_FALSE(std::regex_search(read_text(out / "summary.json"), not_a_number));
   EXPECT_FALSE(std::regex_search(report, not_a_number));
+  // The drift chart floors rounding noise at 1e-14 of the boom length (120 m here: 1.2e-12 m) and says so
+  // on its axis, instead of spanning the decades of exact zeros' neighbours.
+  const std::string drift = read_text(out / "constraint_drift.gp");
+  EXPECT_NE(drift.find("floor = 1.2e-12"), std::string::npos) << drift;
+  EXPECT_NE(drift.find("1e-14 L: rounding, drawn at that floor"), std::string::npos) << drift;
+  EXPECT_NE(drift.find("floored($2)"), std::string::npos) << drift;
 }
 
 TEST(CliStability, BadInputExitsTwoNamingTheProblem) {

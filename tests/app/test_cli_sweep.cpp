@@ -141,9 +141,25 @@ TEST(CliSweep, ShardsCoverTheGridMergeEqualsUnshardedFailuresAreRows) {
     EXPECT_TRUE(is_png(out / "mode_count.png")) << out;
     const std::string report = read_text(out / "report.md");
     for (const char* part : {"Pareto-optimal configurations", "Converged reference", "| level | elements N |",
-                             "Failed and skipped runs", "unstable", "modal k=2+static (N=16)"}) {
+                             "Failed and skipped runs", "unstable", "modal k=2+static (N=16)", "## Verdict (τ = 0.01)",
+                             "reproduces the reference (nodal N=16, rtol 1e-07)", "less solver work", "speed-up (work)"}) {
       EXPECT_NE(report.find(part), std::string::npos) << out << ": " << part;
     }
+  }
+  // summary.json: the verdict with its tolerance, the counts, the Pareto configurations.
+  for (const fs::path& out : {whole, merged}) {
+    const Json summary = JsonParser(read_text(out / "summary.json")).parse();
+    EXPECT_EQ(summary["verdict"]["tolerance"].number, 0.01) << out;
+    EXPECT_EQ(summary["configurations"]["total"].number, static_cast<double>(all.rows.size())) << out;
+    EXPECT_GE(summary["pareto"].items.size(), 1u) << out;
+    EXPECT_NE(summary["verdict"]["sentence"].text.find("reproduces the reference"), std::string::npos) << out;
+  }
+  // Work = steps × state size, for the verdict's speed-ups.
+  const std::size_t steps = all.column("steps"), state = all.column("state_size"), work = all.column("work");
+  for (const auto& row : all.rows) {
+    if (row[status] != "ok") continue;
+    EXPECT_EQ(std::stod(row[work]), std::stod(row[steps]) * std::stod(row[state])) << row[0];
+    EXPECT_GE(std::stoi(row[state]), 12) << "hull and cargo: 6 coordinates, 12 states at least";
   }
 }
 
@@ -166,7 +182,7 @@ TEST(CliCompareGrown, ReportHasTheReferenceConvergenceTableAndModalRows) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string report = read_text(out / "report.md");
   for (const char* part : {"## Converged reference", "| level | elements N | CVODE rtol | change vs previous level",
-                           "| 1 | 16 | 1e-07 |", "Errors against the reference", "Normalized RMS error",
+                           "| 1 | 16 | 1e-07 |", "Errors against the reference", "Total error (normalized RMS)",
                            "| modal k=1 (N=16) |", "| modal k=2 (N=16) |", "| modal k=4 (N=16) |",
                            "| modal k=1+static (N=16) |", "| modal k=2+static (N=16) |", "| modal k=4+static (N=16) |",
                            "reference (nodal N=16, rtol 1e-07)", "DAF error"}) {

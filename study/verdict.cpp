@@ -1,0 +1,45 @@
+// The verdict of a comparison against a tolerance (see verdict.hpp).
+#include "study/verdict.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "study/run_pipeline.hpp"
+
+namespace ffrf::study {
+
+Verdict judge(const std::vector<MeasuredModel>& models, double reference_wall_seconds, double reference_work,
+              double tolerance) {
+  if (!(tolerance > 0.0 && tolerance < 1.0)) {
+    throw SettingError(Setting::tolerance, fmt::format("{}", tolerance), "not a tolerance (valid range (0, 1))");
+  }
+  const auto ratio = [](double reference, double model) {
+    return reference > 0.0 && model > 0.0 ? reference / model : std::numeric_limits<double>::quiet_NaN();
+  };
+  Verdict v;
+  v.tolerance = tolerance;
+  v.reference_wall_seconds = reference_wall_seconds;
+  v.reference_work = reference_work;
+  for (std::size_t i = 0; i < models.size(); ++i) {
+    const MeasuredModel& m = models[i];
+    ModelVerdict mv;
+    if (m.ran) {
+      mv.passed = std::isfinite(m.error) && m.error <= tolerance;
+      mv.wall_speedup = ratio(reference_wall_seconds, m.wall_seconds);
+      mv.work_speedup = ratio(reference_work, m.work);
+      if (std::isfinite(m.error) && (!v.most_accurate || m.error < models[*v.most_accurate].error)) v.most_accurate = i;
+    }
+    if (mv.passed) {
+      const bool cheaper = !v.cheapest || m.work < models[*v.cheapest].work ||
+                           (m.work == models[*v.cheapest].work && m.wall_seconds < models[*v.cheapest].wall_seconds);
+      if (cheaper) v.cheapest = i;
+    } else {
+      v.failed.push_back(i);
+    }
+    v.models.push_back(mv);
+  }
+  return v;
+}
+
+}  // namespace ffrf::study
