@@ -56,7 +56,7 @@ void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q
   const HullModel& hull = m_.hull;
   hull_force_ = Eigen::Vector3d(0.0, -hull.mass * g, 0.0);
   if (hull.hydrostatics) {
-    const AiryWave* wave = (with_wave && m_.wave) ? &*m_.wave : nullptr;
+    const WaveField* wave = (with_wave && m_.wave) ? &*m_.wave : nullptr;
     const HullLoad load = hull_pressure_load(hull.section, wave, m_.water_density, g, hull_q.head<2>(), hull_q(2), t);
     hull_force_.head<2>() += load.force;
     hull_force_(2) += load.moment;
