@@ -17,7 +17,8 @@ CraneSystem<Coords>::CraneSystem(CraneModel<Coords> model)
       cargo_at_(m_.hull.fixed ? 0 : 3),
       elastic_at_(cargo_at_ + (m_.cargo.present ? 3 : 0)),
       boom_q_(3 + n_), boom_v_(3 + n_), boom_force_(3 + n_), elastic_rhs_(n_), schur_rhs_column_(n_),
-      boom_coupling_(3, n_), hull_elastic_mass_(3, n_), schur_columns_(n_, 3), schur_rhs_(n_) {
+      boom_coupling_(3, n_), hull_elastic_mass_(3, n_), schur_columns_(n_, 3), schur_rhs_(n_),
+      boom_a_(3 + n_), wire_boom_force_(3 + n_) {
   // Typical size of each elastic coordinate: the η_i that moves some nodal DOF by 1 cm (1 cm or
   // 0.01 rad for nodal coordinates; 0.01 / max|Φ e_i| for mass-normalized modal ones, whose units
   // are m·√kg), so tolerances mean the same physical displacement in every coordinate set.
@@ -33,6 +34,7 @@ CraneSystem<Coords>::CraneSystem(CraneModel<Coords> model)
       throw std::runtime_error("the boom's elastic mass matrix is not positive definite: check the section's mass per length");
     }
   }
+  find_structures();
 }
 
 template <fem::ElasticCoordinates Coords>
@@ -64,7 +66,13 @@ void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q
   hull_force_ -= hull.radiation_damping.cwiseProduct(hull_v);
   hull_force_(0) -= hull.mooring_stiffness * hull_q(0);
   hull_force_ -= hull.support_stiffness.cwiseProduct(hull_q - hull.support_pose);
+  boom_and_wire_loads(cargo_q, cargo_v, !with_wave);
+}
 
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::boom_and_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v,
+                                              bool bilateral_wire) {
+  const double g = m_.gravity;
   m_.boom.quadratic_velocity(boom_q_, boom_v_, boom_force_);
   m_.boom.add_gravity(boom_q_, Eigen::Vector2d(0.0, -g), boom_force_);
   m_.boom.add_elastic_force(boom_q_, boom_v_, boom_force_);
@@ -74,17 +82,35 @@ void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q
     return;
   }
   cargo_force_ = Eigen::Vector3d(0.0, -m_.cargo.mass * g, 0.0);
+  add_wire_loads(cargo_q, cargo_v, bilateral_wire, boom_force_, cargo_force_);
+}
 
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::add_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool bilateral,
+                                         Ref boom, Eigen::Vector3d& cargo) {
   const Eigen::Vector2d tip = m_.boom.position(boom_q_, m_.boom_tip);
   const Eigen::Vector2d tip_v = m_.boom.velocity(boom_q_, boom_v_, m_.boom_tip);
   const Eigen::Vector2d hook_arm = rotation(cargo_q(2)) * m_.cargo.hook;
   const Eigen::Vector2d hook = cargo_q.head<2>() + hook_arm;
   const Eigen::Vector2d hook_v = cargo_v.head<2>() + cargo_v(2) * perp(hook_arm);
-  wire_ = wire_state(m_.wire, tip, tip_v, hook, hook_v, !with_wave);
+  wire_ = wire_state(m_.wire, tip, tip_v, hook, hook_v, bilateral);
   const Eigen::Vector2d pull = wire_.tension * wire_.direction;  // on the tip, towards the hook
-  m_.boom.add_point_force(boom_q_, m_.boom_tip, pull, boom_force_);
-  cargo_force_.head<2>() -= pull;
-  cargo_force_(2) -= cross(hook_arm, pull);
+  m_.boom.add_point_force(boom_q_, m_.boom_tip, pull, boom);
+  cargo.head<2>() -= pull;
+  cargo(2) -= cross(hook_arm, pull);
+}
+
+template <fem::ElasticCoordinates Coords>
+Eigen::Vector3d CraneSystem<Coords>::frame_known_acceleration(double t, const Eigen::Vector3d& hull_v) const {
+  Eigen::Vector3d known;
+  known.head<2>() = -hull_v(2) * hull_v(2) * mount_offset_;
+  known(2) = 0.0;
+  if (m_.hull.prescribed) {
+    const Eigen::Vector3d base_a = base_acceleration(t);
+    known.head<2>() += base_a.head<2>() + base_a(2) * perp(mount_offset_);
+    known(2) = base_a(2);
+  }
+  return known;
 }
 
 template <fem::ElasticCoordinates Coords>
@@ -110,13 +136,7 @@ void CraneSystem<Coords>::minimal_forces(double t, ConstRef z, ConstRef z_dot, b
   evaluate_loads(t, hull_q, hull_v, has_cargo() ? Eigen::Vector3d(z.segment<3>(cargo_at_)) : no_cargo,
                  has_cargo() ? Eigen::Vector3d(z_dot.segment<3>(cargo_at_)) : no_cargo, with_wave);
   m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_);
-  frame_known_acc_.head<2>() = -hull_v(2) * hull_v(2) * mount_offset_;
-  frame_known_acc_(2) = 0.0;
-  if (m_.hull.prescribed) {
-    const Eigen::Vector3d base_a = base_acceleration(t);
-    frame_known_acc_.head<2>() += base_a.head<2>() + base_a(2) * perp(mount_offset_);
-    frame_known_acc_(2) = base_a(2);
-  }
+  frame_known_acc_ = frame_known_acceleration(t, hull_v);
   const Eigen::Vector3d boom_reference_rhs = boom_force_.head<3>() - boom_reference_mass_ * frame_known_acc_;
   elastic_rhs_.noalias() = boom_force_.tail(n_) - boom_coupling_.transpose() * frame_known_acc_;
   Eigen::Matrix3d jr = Eigen::Matrix3d::Identity();

@@ -1,0 +1,198 @@
+// The structured linearizations the Newton solvers use (analytic elastic blocks, the wire's columns
+// and the dense hull/cargo/frame columns by differences) against an independent second method:
+// central differences of the equations' own right-hand side (minimal coordinates: −M⁻¹K = ∂z̈/∂z,
+// −M⁻¹D = ∂z̈/∂ż) and of the full-coordinate residual Q − M a, on the reference crane (rigid, nodal
+// N = 4 and 16 with static stiffening, modal k = 2 + static) at a moving, deformed state in the wave,
+// and on the spinning hub with centrifugal stiffening. Also the bordered band LU against Eigen's dense
+// LU, and the structure: nodal booms banded, modal ones dense.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <string>
+
+#include "cases/crane_builder.hpp"
+#include "cases/scene_loader.hpp"
+#include "coupling/bordered_band_matrix.hpp"
+#include "coupling/crane_equations.hpp"
+#include "coupling/static_equilibrium.hpp"
+
+namespace {
+
+using namespace ffrf;
+using coupling::CraneEquations;
+using coupling::SecondOrderJacobian;
+
+struct Case {
+  std::string scene;
+  cases::BoomChoice choice;
+  double t;
+};
+
+std::unique_ptr<CraneEquations> build(const Case& c) {
+  cases::Scene scene = cases::load_scene(std::string(FFRF_SOURCE_DIR "/cases/") + c.scene);
+  return cases::build_crane(scene, c.choice);
+}
+
+// A moving, deformed state: the static equilibrium plus deterministic offsets of a few percent of
+// each coordinate's typical size, velocities of the same order per second.
+void moving_state(CraneEquations& eq, Eigen::VectorXd& z, Eigen::VectorXd& z_dot) {
+  const Eigen::VectorXd scale = eq.coordinate_scale();
+  z = eq.minimal_size() > 0 ? coupling::solve_static_equilibrium(eq, eq.initial_guess()).z : Eigen::VectorXd(0);
+  z_dot.resize(z.size());
+  for (int i = 0; i < z.size(); ++i) {
+    z(i) += 0.3 * scale(i) * std::sin(1.7 * i + 0.4);
+    z_dot(i) = 0.5 * scale(i) * std::cos(2.3 * i + 0.1);
+  }
+}
+
+// The Newton matrix S(γ) = M + γD + γ²K these blocks build, against the reference's: the largest
+// |ΔS_ij| / √(|S_ii S_jj|) over γ = 10⁻³, 10⁻², 10⁻¹ (the steps' range), i.e. the error relative to
+// the diagonal scaling that makes S's diagonal 1.
+double newton_matrix_error(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& damping, const Eigen::MatrixXd& stiffness,
+                           const Eigen::MatrixXd& ref_damping, const Eigen::MatrixXd& ref_stiffness) {
+  double worst = 0.0;
+  for (const double gamma : {1e-3, 1e-2, 1e-1}) {
+    const Eigen::MatrixXd s = mass + gamma * damping + gamma * gamma * stiffness;
+    const Eigen::MatrixXd ref = mass + gamma * ref_damping + gamma * gamma * ref_stiffness;
+    const Eigen::VectorXd diagonal = ref.diagonal().cwiseAbs().cwiseSqrt();
+    for (int j = 0; j < s.cols(); ++j) {
+      for (int i = 0; i < s.rows(); ++i) {
+        const double e = std::abs(s(i, j) - ref(i, j)) / (diagonal(i) * diagonal(j));
+        if (e > worst && std::getenv("FFRF_DEBUG_JACOBIAN")) {
+          std::printf("  gamma %g (%d, %d): %.6e vs %.6e\n", gamma, i, j, s(i, j), ref(i, j));
+        }
+        worst = std::max(worst, e);
+      }
+    }
+  }
+  return worst;
+}
+
+class NewtonJacobians : public ::testing::TestWithParam<Case> {};
+
+TEST_P(NewtonJacobians, MinimalBlocksMatchDifferencesOfTheRightHandSide) {
+  const Case c = GetParam();
+  auto eq = build(c);
+  const int n = eq->minimal_size();
+  Eigen::VectorXd z, z_dot, z_ddot(n);
+  moving_state(*eq, z, z_dot);
+  eq->minimal_accelerations(c.t, z, z_dot, z_ddot);
+  SecondOrderJacobian blocks(eq->minimal_structure());
+  eq->minimal_jacobian(c.t, z, z_dot, z_ddot, blocks);
+  const Eigen::MatrixXd mass = blocks.mass.dense();
+  // Second method: central differences of z̈(z, ż), times M: K_ref = −M ∂z̈/∂z, D_ref = −M ∂z̈/∂ż
+  // (steps 1e-4 of each coordinate's size, as below).
+  const Eigen::VectorXd scale = eq->coordinate_scale();
+  Eigen::MatrixXd ref_z(n, n), ref_v(n, n);
+  Eigen::VectorXd plus(n), minus(n);
+  for (int j = 0; j < n; ++j) {
+    Eigen::VectorXd x = z, v = z_dot;
+    const double h = 1e-4 * std::max(std::abs(z(j)), scale(j)), h_v = 1e-4 * std::max(std::abs(z_dot(j)), scale(j));
+    x(j) += h;
+    eq->minimal_accelerations(c.t, x, v, plus);
+    x(j) -= 2 * h;
+    eq->minimal_accelerations(c.t, x, v, minus);
+    ref_z.col(j) = -mass * (plus - minus) / (2 * h);
+    x(j) = z(j);
+    v(j) += h_v;
+    eq->minimal_accelerations(c.t, x, v, plus);
+    v(j) -= 2 * h_v;
+    eq->minimal_accelerations(c.t, x, v, minus);
+    ref_v.col(j) = -mass * (plus - minus) / (2 * h_v);
+  }
+  const double error = newton_matrix_error(mass, blocks.damping.dense(), blocks.stiffness.dense(), ref_v, ref_z);
+  std::printf("%s %s: Newton matrix error %.2e (n = %d, border %d, band %d ± %d)\n", c.scene.c_str(), c.choice.label().c_str(),
+              error, n, blocks.structure().border, blocks.structure().band_size, blocks.structure().lower);
+  EXPECT_LT(error, 1e-6);
+}
+
+TEST_P(NewtonJacobians, FullBlocksMatchDifferencesOfTheResidual) {
+  const Case c = GetParam();
+  auto eq = build(c);
+  const int n = eq->full_size();
+  Eigen::VectorXd z, z_dot;
+  moving_state(*eq, z, z_dot);
+  Eigen::VectorXd q(n), v(n), a(n);
+  eq->full_from_minimal(c.t, z, z_dot, q, v);
+  for (int i = 0; i < n; ++i) a(i) = 0.2 * std::sin(0.9 * i + 0.3);  // any acceleration: the blocks hold it fixed
+  SecondOrderJacobian blocks(eq->full_structure());
+  eq->full_jacobian(c.t, q, v, a, blocks);
+  const auto residual = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& x_dot) {
+    Eigen::VectorXd forces(n), inertia(n);
+    eq->full_forces(c.t, x, x_dot, forces);
+    eq->full_mass_times(x, a, inertia);
+    return Eigen::VectorXd(forces - inertia);
+  };
+  Eigen::MatrixXd ref_k(n, n), ref_d(n, n);
+  for (int j = 0; j < n; ++j) {
+    // Steps of 1e-4 of each coordinate's size: the residual is nearly linear (central differences'
+    // h² error is below 1e-10), and smaller steps only add round-off (1e-6 gives 1e-6 of noise).
+    const double h = 1e-4 * std::max(std::abs(q(j)), 1e-2), h_v = 1e-4 * std::max(std::abs(v(j)), 1e-2);
+    Eigen::VectorXd x = q, x_dot = v;
+    x(j) += h;
+    const Eigen::VectorXd plus = residual(x, x_dot);
+    x(j) -= 2 * h;
+    ref_k.col(j) = -(plus - residual(x, x_dot)) / (2 * h);
+    x(j) = q(j);
+    x_dot(j) += h_v;
+    const Eigen::VectorXd plus_v = residual(x, x_dot);
+    x_dot(j) -= 2 * h_v;
+    ref_d.col(j) = -(plus_v - residual(x, x_dot)) / (2 * h_v);
+  }
+  const Eigen::MatrixXd mass = eq->full_mass_matrix(q);
+  EXPECT_LT((blocks.mass.dense() - mass).cwiseAbs().maxCoeff(), 1e-12 * mass.cwiseAbs().maxCoeff());
+  const double error = newton_matrix_error(mass, blocks.damping.dense(), blocks.stiffness.dense(), ref_d, ref_k);
+  std::printf("%s %s: full Newton matrix error %.2e\n", c.scene.c_str(), c.choice.label().c_str(), error);
+  EXPECT_LT(error, 1e-6);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Crane, NewtonJacobians,
+    ::testing::Values(Case{"paper_floating_crane.toml", {.kind = cases::BoomKind::rigid}, 31.0},
+                      Case{"paper_floating_crane.toml", {.kind = cases::BoomKind::nodal, .elements = 4}, 31.0},
+                      Case{"paper_floating_crane.toml",
+                           {.kind = cases::BoomKind::nodal, .elements = 16, .stiffening = cases::Stiffening::static_load}, 7.0},
+                      Case{"paper_floating_crane.toml", {.kind = cases::BoomKind::modal, .elements = 16, .modes = 2, .static_modes = true}, 31.0},
+                      Case{"spin_up_beam.toml", {.kind = cases::BoomKind::nodal, .elements = 10, .stiffening = cases::Stiffening::centrifugal}, 9.0}));
+
+TEST(NewtonJacobians, NodalBoomsAreBandedModalOnesDense) {
+  cases::Scene scene = cases::load_scene(FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml");
+  const auto nodal = cases::build_crane(scene, {.kind = cases::BoomKind::nodal, .elements = 32});
+  EXPECT_EQ(nodal->minimal_structure().border, 6);
+  EXPECT_EQ(nodal->minimal_structure().band_size, 96);
+  EXPECT_LE(nodal->minimal_structure().lower, 5);  // element couples two nodes of 3 DOFs
+  EXPECT_EQ(nodal->full_structure().border, 9);
+  const auto modal = cases::build_crane(scene, {.kind = cases::BoomKind::modal, .elements = 16, .modes = 2, .static_modes = true});
+  EXPECT_EQ(modal->minimal_structure().band_size, 0);
+  EXPECT_EQ(modal->minimal_structure().border, modal->minimal_size());
+}
+
+TEST(BorderedBandLU, SolvesLikeDenseLU) {
+  for (const coupling::BandStructure s : {coupling::BandStructure{6, 40, 5, 5}, coupling::BandStructure{0, 30, 2, 3},
+                                          coupling::BandStructure{9, 0, 0, 0}, coupling::BandStructure{15, 25, 4, 4}}) {
+    coupling::BorderedBandMatrix m(s);
+    for (int i = 0; i < m.size(); ++i) {
+      for (int j = 0; j < m.size(); ++j) {
+        if (m.in_structure(i, j)) m.at(i, j) = std::sin(1.3 * i + 0.7 * j * j) + (i == j ? 6.0 : 0.0);
+      }
+    }
+    Eigen::VectorXd b(m.size()), x(m.size()), product(m.size());
+    for (int i = 0; i < b.size(); ++i) b(i) = std::cos(0.37 * i);
+    const Eigen::MatrixXd dense = m.dense();
+    x = b;
+    coupling::BorderedBandLU lu(s);
+    ASSERT_TRUE(lu.factorize(m));
+    lu.solve(x);
+    const Eigen::VectorXd reference = dense.partialPivLu().solve(b);
+    EXPECT_LT((x - reference).cwiseAbs().maxCoeff(), 1e-12 * reference.cwiseAbs().maxCoeff());
+    m.multiply(reference, product);
+    EXPECT_LT((product - dense * reference).cwiseAbs().maxCoeff(), 1e-12 * b.cwiseAbs().maxCoeff());
+  }
+  coupling::BorderedBandMatrix singular(coupling::BandStructure{2, 5, 1, 1});
+  coupling::BorderedBandLU lu(singular.structure());
+  EXPECT_FALSE(lu.factorize(singular));
+}
+
+}  // namespace
