@@ -3,7 +3,9 @@
 // border.
 #include "coupling/bordered_band_matrix.hpp"
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <cstddef>
 
 extern "C" {
@@ -86,12 +88,27 @@ BorderedBandLU::BorderedBandLU(const BandStructure& structure)
       pivots_(static_cast<std::size_t>(structure.band_size)),
       band_inverse_columns_(structure.band_size, structure.border),
       border_rows_(structure.border, structure.band_size),
+      border_row_scale_(structure.border),
+      border_column_scale_(structure.border),
       schur_(structure.border, structure.border),
       schur_lu_(structure.border),
       border_work_(structure.border) {}
 
 bool BorderedBandLU::factorize(const BorderedBandMatrix& matrix) {
   const int b = structure_.border, n = structure_.band_size, kl = structure_.lower, ku = structure_.upper;
+  // Equilibrate the border (rows, then columns, to unit largest entry; LAPACK dgeequ's idea): its
+  // rows mix hull inertias of 1e10 with constraint rows of 1, and partial pivoting on the unscaled
+  // Schur complement would lose the small rows to round-off.
+  for (int i = 0; i < b; ++i) {
+    double largest = matrix.corner_.row(i).cwiseAbs().maxCoeff();
+    if (n > 0) largest = std::max(largest, matrix.border_rows_.row(i).cwiseAbs().maxCoeff());
+    border_row_scale_(i) = largest > 0.0 && std::isfinite(largest) ? 1.0 / largest : 1.0;
+  }
+  for (int j = 0; j < b; ++j) {
+    double largest = (border_row_scale_.asDiagonal() * matrix.corner_.col(j)).cwiseAbs().maxCoeff();
+    if (n > 0) largest = std::max(largest, matrix.border_columns_.col(j).cwiseAbs().maxCoeff());
+    border_column_scale_(j) = largest > 0.0 && std::isfinite(largest) ? 1.0 / largest : 1.0;
+  }
   if (n > 0) {
     // dgbtrf wants E in rows kl … 2kl + ku of its (2 kl + ku + 1) × n array (the top kl rows take the fill).
     factored_band_.topRows(kl).setZero();
@@ -102,7 +119,7 @@ bool BorderedBandLU::factorize(const BorderedBandMatrix& matrix) {
     dgbtrf_(&n, &n, &kl, &ku, factored_band_.data(), &ldab, pivots_.data(), &info);
     if (info != 0) return false;
     if (b > 0) {
-      band_inverse_columns_ = matrix.border_columns_;
+      band_inverse_columns_ = matrix.border_columns_ * border_column_scale_.asDiagonal();
       const char trans = 'N';
       dgbtrs_(&trans, &n, &kl, &ku, &b, factored_band_.data(), &ldab, pivots_.data(), band_inverse_columns_.data(), &n,
               &info, 1);
@@ -110,8 +127,8 @@ bool BorderedBandLU::factorize(const BorderedBandMatrix& matrix) {
     }
   }
   if (b > 0) {
-    border_rows_ = matrix.border_rows_;
-    schur_ = matrix.corner_;
+    border_rows_ = border_row_scale_.asDiagonal() * matrix.border_rows_;
+    schur_ = border_row_scale_.asDiagonal() * matrix.corner_ * border_column_scale_.asDiagonal();
     if (n > 0) schur_.noalias() -= border_rows_ * band_inverse_columns_;
     if (!schur_.allFinite()) return false;
     schur_lu_.compute(schur_);
@@ -131,10 +148,11 @@ void BorderedBandLU::solve(Eigen::Ref<Eigen::VectorXd> x) {
     dgbtrs_(&trans, &n, &kl, &ku, &one, factored_band_.data(), &ldab, pivots_.data(), x.tail(n).data(), &n, &info, 1);
   }
   if (b == 0) return;
-  border_work_ = x.head(b);
-  if (n > 0) border_work_.noalias() -= border_rows_ * x.tail(n);  // x_b − B y
-  x.head(b) = schur_lu_.solve(border_work_);                     // the border unknowns
+  border_work_ = border_row_scale_.cwiseProduct(x.head(b));
+  if (n > 0) border_work_.noalias() -= border_rows_ * x.tail(n);  // R (x_b − B y)
+  x.head(b) = schur_lu_.solve(border_work_);                     // the scaled border unknowns C⁻¹ x_b
   if (n > 0) x.tail(n).noalias() -= band_inverse_columns_ * x.head(b);  // y − E⁻¹C x_b
+  x.head(b) = border_column_scale_.cwiseProduct(x.head(b));
 }
 
 }  // namespace ffrf::coupling

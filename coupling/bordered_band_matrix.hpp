@@ -45,6 +45,9 @@ class BorderedBandMatrix {
   // E(i, j) for band indices i, j (0-based inside E), |i − j| within the band.
   double& band(int i, int j) { return band_(structure_.upper + i - j, j); }
   double band(int i, int j) const { return band_(structure_.upper + i - j, j); }
+  // E in LAPACK band storage ((ku + kl + 1) × n, column j holds E(j − ku … j + kl, j)).
+  Eigen::MatrixXd& band_storage() { return band_; }
+  const Eigen::MatrixXd& band_storage() const { return band_; }
 
   // this = a x + b y + c z for matrices of the same structure.
   void assign_combination(double a, const BorderedBandMatrix& x, double b, const BorderedBandMatrix& y, double c,
@@ -73,9 +76,10 @@ class BorderedBandLU {
   BandStructure structure_;
   Eigen::MatrixXd factored_band_;      // (2 kl + ku + 1) × n: dgbtrf's layout with room for fill
   std::vector<int> pivots_;
-  Eigen::MatrixXd band_inverse_columns_;  // E⁻¹ C (n × border)
-  Eigen::MatrixXd border_rows_;           // B
-  Eigen::MatrixXd schur_;
+  Eigen::MatrixXd band_inverse_columns_;  // E⁻¹ C_border (n × border), C_border's columns scaled
+  Eigen::MatrixXd border_rows_;           // R B (R, C: the border's row and column equilibration)
+  Eigen::VectorXd border_row_scale_, border_column_scale_;
+  Eigen::MatrixXd schur_;                 // R (A − B E⁻¹ C) C
   Eigen::PartialPivLU<Eigen::MatrixXd> schur_lu_;
   Eigen::VectorXd border_work_;
 };

@@ -117,6 +117,12 @@ class CraneSystem final : public CraneEquations {
   Eigen::Vector3d hull_rhs_ = Eigen::Vector3d::Zero();
   Eigen::VectorXd elastic_rhs_;
   Eigen::VectorXd schur_rhs_column_;
+  // M_ff⁻¹ S̄ᵀ and M_ff⁻¹ cᵀ (constant; c = u0_cross_shape), the two-column solve's workspace, and
+  // M_ff⁻¹ M_fR (n × 3) before the clamp's J_r.
+  Eigen::Matrix<double, Eigen::Dynamic, 2> mass_inverse_shape_;
+  Eigen::VectorXd mass_inverse_cross_;
+  Eigen::Matrix<double, Eigen::Dynamic, 2> pair_rhs_, pair_solution_;
+  Eigen::Matrix<double, Eigen::Dynamic, 3> frame_columns_;
   Eigen::Matrix3d boom_reference_mass_ = Eigen::Matrix3d::Zero();
   Eigen::Matrix<double, 3, Eigen::Dynamic> boom_coupling_;
   Eigen::Matrix<double, 3, Eigen::Dynamic> hull_elastic_mass_;

@@ -9,9 +9,11 @@
 //    of the wire's loads alone;
 //  * the dense columns (hull, cargo and, in full coordinates, the boom frame) by forward differences
 //    of the whole residual: 12 (minimal) or 18 (full) evaluations whatever the element count.
-// Increments δ_j = 10⁻⁷·max(|x_j|, s_j) with s_j the coordinate's typical size (coordinate_scale(),
-// e.g. 1 m, 0.01 rad), for positions and velocities alike: quadratic velocity terms make the
-// forward difference's error δ·∂²Q/∂ẋ², which must stay small against the damping it measures.
+// Increments: δ = 10⁻⁶·s_j for positions and 10⁻⁶·max(|ẋ_j|, s_j) for velocities, s_j the
+// coordinate's typical size (coordinate_scale(): 1 m, 0.01 rad, the elastic ones' 1 cm). Smaller
+// increments lose to round-off (the hull's loads are ~10⁸ N), larger ones to the curvature of the
+// wire's direction and of the quadratic velocity terms; this choice keeps the Newton matrix within
+// ~10⁻⁶ of central differences (tests/coupling/test_newton_jacobians.cpp).
 #pragma once
 
 #include <algorithm>
@@ -50,10 +52,12 @@ void CraneSystem<Coords>::find_structures() {
   }
   full_inertia_.resize(full_size());
   minimal_scale_ = coordinate_scale();
+  // Full coordinates: hull and cargo as in minimal coordinates, the boom frame like the hull (1 m,
+  // 0.01 rad), then the elastic coordinates.
   full_scale_.resize(full_size());
-  Eigen::VectorXd ignore(full_size());
-  full_from_minimal(0.0, minimal_scale_, minimal_scale_, full_scale_, ignore);  // the boom frame: hull-like sizes
-  full_scale_ = full_scale_.cwiseAbs().cwiseMax(Eigen::VectorXd::Constant(full_size(), 1e-2));
+  full_scale_.head(elastic_at_) = minimal_scale_.head(elastic_at_);
+  full_scale_.segment<3>(elastic_at_) = Eigen::Vector3d(1.0, 1.0, 0.01);
+  full_scale_.tail(n_) = minimal_scale_.tail(n_);
 }
 
 template <fem::ElasticCoordinates Coords>
@@ -123,7 +127,11 @@ template <class Residual, class Wire>
 void difference_columns(int size, int dense_columns, int elastic_offset, const std::vector<int>& tip_columns, bool wire_present,
                         const Eigen::VectorXd& scale, Eigen::VectorXd& x, Eigen::VectorXd& x_dot, Eigen::VectorXd& base,
                         Eigen::VectorXd& shifted, Residual residual, Wire wire, SecondOrderJacobian& out) {
-  const auto increment = [&scale](int j, double value) { return 1e-7 * std::max(std::abs(value), scale(j)); };
+  // Positions: a fraction of the coordinate's typical size, not of its value (the loads depend on
+  // differences of positions ~100 m from the origin; an increment ∝ |x| would be 100× too coarse for
+  // the 20 m wire). Velocities: of their value or typical size.
+  const auto position_increment = [&scale](int j) { return 1e-6 * scale(j); };
+  const auto rate_increment = [&scale](int j, double value) { return 1e-6 * std::max(std::abs(value), scale(j)); };
   const auto column = [&](BorderedBandMatrix& target, int col, double delta, bool assign) {
     for (int i = 0; i < size; ++i) {
       const double value = -(shifted(i) - base(i)) / delta;
@@ -139,7 +147,7 @@ void difference_columns(int size, int dense_columns, int elastic_offset, const s
     for (const int j : tip_columns) {
       const int col = elastic_offset + j;
       const double saved = x(col), saved_rate = x_dot(col);
-      const double dz = increment(col, saved), dv = increment(col, saved_rate);
+      const double dz = position_increment(col), dv = rate_increment(col, saved_rate);
       x(col) = saved + dz;
       wire(x, x_dot, shifted);
       x(col) = saved;
@@ -153,7 +161,7 @@ void difference_columns(int size, int dense_columns, int elastic_offset, const s
   residual(x, x_dot, base);
   for (int col = 0; col < dense_columns; ++col) {
     const double saved = x(col), saved_rate = x_dot(col);
-    const double dz = increment(col, saved), dv = increment(col, saved_rate);
+    const double dz = position_increment(col), dv = rate_increment(col, saved_rate);
     x(col) = saved + dz;
     residual(x, x_dot, shifted);
     x(col) = saved;

@@ -19,6 +19,9 @@ CraneSystem<Coords>::CraneSystem(CraneModel<Coords> model)
       boom_q_(3 + n_), boom_v_(3 + n_), boom_force_(3 + n_), elastic_rhs_(n_), schur_rhs_column_(n_),
       boom_coupling_(3, n_), hull_elastic_mass_(3, n_), schur_columns_(n_, 3), schur_rhs_(n_),
       boom_a_(3 + n_), wire_boom_force_(3 + n_) {
+  pair_rhs_.resize(n_, 2);
+  pair_solution_.resize(n_, 2);
+  frame_columns_.resize(n_, 3);
   // Typical size of each elastic coordinate: the η_i that moves some nodal DOF by 1 cm (1 cm or
   // 0.01 rad for nodal coordinates; 0.01 / max|Φ e_i| for mass-normalized modal ones, whose units
   // are m·√kg), so tolerances mean the same physical displacement in every coordinate set.
@@ -33,6 +36,11 @@ CraneSystem<Coords>::CraneSystem(CraneModel<Coords> model)
     if (elastic_mass_factor_.info() != Eigen::Success) {
       throw std::runtime_error("the boom's elastic mass matrix is not positive definite: check the section's mass per length");
     }
+    // The constant parts of M_ff⁻¹ M_fR (see minimal_accelerations): M_ff⁻¹ S̄ᵀ and M_ff⁻¹ cᵀ.
+    const Eigen::MatrixXd shape_t = m_.boom.coords().shape_integral().transpose();
+    mass_inverse_shape_ = elastic_mass_factor_.solve(shape_t);
+    const Eigen::VectorXd cross_t = m_.boom.coords().u0_cross_shape().transpose();
+    mass_inverse_cross_ = elastic_mass_factor_.solve(cross_t);
   }
   find_structures();
 }
@@ -151,18 +159,23 @@ void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z
   minimal_forces(t, z, z_dot, true);
   if (has_cargo()) z_ddot.segment<3>(cargo_at_) = cargo_force_.cwiseQuotient(cargo_inertia());
   Eigen::Vector3d hull_a = Eigen::Vector3d::Zero();
-  if (n_ > 0) schur_rhs_ = elastic_mass_factor_.solve(elastic_rhs_);
+  if (n_ > 0 && !hull_free()) schur_rhs_ = elastic_mass_factor_.solve(elastic_rhs_);
   if (hull_free()) {
-    Eigen::Matrix3d jr = Eigen::Matrix3d::Identity();
-    jr(0, 2) = -mount_offset_.y();
-    jr(1, 2) = mount_offset_.x();
+    const Eigen::Matrix3d jr = mount_jacobian();
     Eigen::Matrix3d schur = Eigen::Matrix3d(hull_rigid_inertia().asDiagonal()) + jr.transpose() * boom_reference_mass_ * jr;
     Eigen::Vector3d rhs = hull_rhs_;
     if (n_ > 0) {
-      for (int c = 0; c < 3; ++c) {  // column by column: vector solves allocate nothing
-        schur_rhs_column_ = hull_elastic_mass_.row(c).transpose();
-        schur_columns_.col(c) = elastic_mass_factor_.solve(schur_rhs_column_);
-      }
+      // M_ff⁻¹ M_fR = M_ff⁻¹ [S̄ᵀAᵀ, −(cᵀ + S̃ᵀη)] = [(M_ff⁻¹S̄ᵀ) Aᵀ, −(M_ff⁻¹cᵀ + M_ff⁻¹S̃ᵀη)]: the first
+      // two columns and M_ff⁻¹cᵀ are constant, so one two-column solve (the right-hand side and S̃ᵀη)
+      // does what four did.
+      pair_rhs_.col(0) = elastic_rhs_;
+      pair_rhs_.col(1).noalias() = m_.boom.coords().skew_ff().transpose() * boom_q_.tail(n_);
+      pair_solution_ = elastic_mass_factor_.solve(pair_rhs_);
+      schur_rhs_ = pair_solution_.col(0);
+      const Eigen::Matrix2d frame_rotation = rotation(boom_q_(2));
+      frame_columns_.leftCols<2>().noalias() = mass_inverse_shape_ * frame_rotation.transpose();
+      frame_columns_.col(2) = -(mass_inverse_cross_ + pair_solution_.col(1));
+      schur_columns_.noalias() = frame_columns_ * jr;
       schur -= hull_elastic_mass_ * schur_columns_;
       rhs -= hull_elastic_mass_ * schur_rhs_;
     }

@@ -9,7 +9,10 @@ namespace ffrf::coupling {
 
 namespace {
 
-constexpr double root_tolerance = 1e-15;  // in s ∈ [0, 1]
+// Newton stops once its step is below 1e-9 in s ∈ [0, 1]: convergence is quadratic there, so the
+// returned iterate is good to round-off (the step it would take next is ~1e-18).
+constexpr double root_tolerance = 1e-9;
+constexpr double bracket_tolerance = 1e-15;  // bisection alone (Newton left the bracket) stops here
 constexpr double smallest_interval = 1e-13;
 constexpr int max_newton_iterations = 100;
 
@@ -45,8 +48,9 @@ double polish_root(const SurfaceGap& gap, double lo, double hi, double g_lo, dou
     if (g == 0.0) return s;
     ((g < 0.0) == lo_wet ? lo : hi) = s;
     double next = slope != 0.0 ? s - g / slope : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // the step left the bracket: bisect
-    if (std::abs(next - s) <= root_tolerance || hi - lo <= root_tolerance) return next;
+    const bool newton = next > lo && next < hi;
+    if (!newton) next = 0.5 * (lo + hi);  // the step left the bracket: bisect
+    if ((newton && std::abs(next - s) <= root_tolerance) || hi - lo <= bracket_tolerance) return next;
     s = next;
   }
   return s;

@@ -4,7 +4,7 @@
 // intervals on which g is monotone (|g'(mid)| > half-width · max|g''|) or provably root-free
 // (|g(l)| + |g(r)| > width · max|g'| with one sign); each monotone interval with a sign change holds
 // exactly one root, found by Newton's method kept inside the bracket (bisection when a step leaves
-// it) to |Δs| ≤ 1e-15. Cost per evaluation of g or g': one sine and cosine per wave component.
+// it) until its step is below 1e-9 (quadratic convergence: the root is then good to round-off). Cost per evaluation of g or g': one sine and cosine per wave component.
 #pragma once
 
 #include <Eigen/Dense>
