@@ -57,4 +57,34 @@ void ConstraintCurvature::evaluate(CraneEquations& equations, const Eigen::Ref<c
   }
 }
 
+void consistent_accelerations(CraneEquations& equations, double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                              const Eigen::Ref<const Eigen::VectorXd>& v, Eigen::Ref<Eigen::VectorXd> v_dot,
+                              Eigen::Ref<Eigen::Vector3d> lambda) {
+  constexpr int constraints = CraneEquations::constraint_count;
+  const int n = equations.full_size();
+  const BandStructure structure = equations.full_structure();
+  SecondOrderJacobian blocks(structure);
+  equations.full_jacobian(t, q, v, Eigen::VectorXd::Zero(n), blocks);  // only its mass matrix is used
+  ConstrainedNewtonMatrix augmented(structure, constraints);
+  augmented.assign_coordinate_block(1.0, blocks.mass, 0.0, blocks.damping, 0.0, blocks.stiffness);
+  Eigen::MatrixXd cq;
+  equations.constraint_jacobian(q, cq);
+  for (int k = 0; k < constraints; ++k) {
+    for (int j = 0; j < structure.border; ++j) {
+      augmented.at(augmented.reduced(j), augmented.reduced_extra(k)) = cq(k, j);
+      augmented.at(augmented.reduced_extra(k), augmented.reduced(j)) = cq(k, j);
+    }
+  }
+  Eigen::VectorXd forces(n), solution(n + constraints);
+  equations.full_forces(t, q, v, forces);
+  Eigen::Vector3d gamma;
+  equations.constraint_rate_terms(t, q, v, gamma);
+  augmented.pack(forces, gamma, solution);
+  if (!augmented.factorize()) throw MassMatrixError(0.0);
+  augmented.solve(solution);
+  Eigen::Vector3d multipliers;
+  augmented.unpack(solution, v_dot, multipliers);
+  lambda = multipliers;
+}
+
 }  // namespace ffrf::coupling

@@ -66,4 +66,11 @@ struct ConstraintCurvature {
   }
 };
 
+// Consistent accelerations and multipliers at (t, q, v): [M C_qᵀ; C_q 0][v̇; λ] = [Q; γ] with
+// γ = −(C_q v)_q v − C_tt (CraneEquations::constraint_rate_terms), solved with the structure above.
+// Throws MassMatrixError when the augmented matrix is singular.
+void consistent_accelerations(CraneEquations& equations, double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                              const Eigen::Ref<const Eigen::VectorXd>& v, Eigen::Ref<Eigen::VectorXd> v_dot,
+                              Eigen::Ref<Eigen::Vector3d> lambda);
+
 }  // namespace ffrf::coupling

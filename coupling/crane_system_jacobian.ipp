@@ -9,11 +9,12 @@
 //    of the wire's loads alone;
 //  * the dense columns (hull, cargo and, in full coordinates, the boom frame) by forward differences
 //    of the whole residual: 12 (minimal) or 18 (full) evaluations whatever the element count.
-// Increments: δ = 10⁻⁶·s_j for positions and 10⁻⁶·max(|ẋ_j|, s_j) for velocities, s_j the
-// coordinate's typical size (coordinate_scale(): 1 m, 0.01 rad, the elastic ones' 1 cm). Smaller
-// increments lose to round-off (the hull's loads are ~10⁸ N), larger ones to the curvature of the
-// wire's direction and of the quadratic velocity terms; this choice keeps the Newton matrix within
-// ~10⁻⁶ of central differences (tests/coupling/test_newton_jacobians.cpp).
+// Increments: δ = f·s_j for positions and f·max(|ẋ_j|, s_j) for velocities, s_j the coordinate's
+// typical size (coordinate_scale(): 1 m, 0.01 rad, the elastic ones' 1 cm), f = 10⁻⁷ for the whole
+// residual and 10⁻⁶ for the wire's loads alone (fewer large terms, so less round-off). These keep the
+// Newton matrix within ~10⁻⁶ of central differences (tests/coupling/test_newton_jacobians.cpp); larger
+// increments for the whole residual made IDA's step-size control wander (twice the error-test
+// failures at N = 64).
 #pragma once
 
 #include <algorithm>
@@ -123,6 +124,9 @@ void CraneSystem<Coords>::full_wire_residual(ConstRef q, ConstRef v, Ref out) {
 // The shared steps of both Jacobians: difference the wire's share over the tip columns (added) and
 // the whole residual over the dense leading columns (assigned). `residual(x, x_dot, out)` and
 // `wire(x, x_dot, out)` evaluate at the given state; `x`, `x_dot` are the state (restored on return).
+constexpr double dense_increment = 1e-7;  // × size: the whole residual (hull loads ~1e8 N)
+constexpr double wire_increment = 1e-6;   // × size: the wire's loads alone
+
 template <class Residual, class Wire>
 void difference_columns(int size, int dense_columns, int elastic_offset, const std::vector<int>& tip_columns, bool wire_present,
                         const Eigen::VectorXd& scale, Eigen::VectorXd& x, Eigen::VectorXd& x_dot, Eigen::VectorXd& base,
@@ -130,8 +134,8 @@ void difference_columns(int size, int dense_columns, int elastic_offset, const s
   // Positions: a fraction of the coordinate's typical size, not of its value (the loads depend on
   // differences of positions ~100 m from the origin; an increment ∝ |x| would be 100× too coarse for
   // the 20 m wire). Velocities: of their value or typical size.
-  const auto position_increment = [&scale](int j) { return 1e-6 * scale(j); };
-  const auto rate_increment = [&scale](int j, double value) { return 1e-6 * std::max(std::abs(value), scale(j)); };
+  const auto position_increment = [&scale](int j, double factor) { return factor * scale(j); };
+  const auto rate_increment = [&scale](int j, double value, double factor) { return factor * std::max(std::abs(value), scale(j)); };
   const auto column = [&](BorderedBandMatrix& target, int col, double delta, bool assign) {
     for (int i = 0; i < size; ++i) {
       const double value = -(shifted(i) - base(i)) / delta;
@@ -147,7 +151,7 @@ void difference_columns(int size, int dense_columns, int elastic_offset, const s
     for (const int j : tip_columns) {
       const int col = elastic_offset + j;
       const double saved = x(col), saved_rate = x_dot(col);
-      const double dz = position_increment(col), dv = rate_increment(col, saved_rate);
+      const double dz = position_increment(col, wire_increment), dv = rate_increment(col, saved_rate, wire_increment);
       x(col) = saved + dz;
       wire(x, x_dot, shifted);
       x(col) = saved;
@@ -161,7 +165,7 @@ void difference_columns(int size, int dense_columns, int elastic_offset, const s
   residual(x, x_dot, base);
   for (int col = 0; col < dense_columns; ++col) {
     const double saved = x(col), saved_rate = x_dot(col);
-    const double dz = position_increment(col), dv = rate_increment(col, saved_rate);
+    const double dz = position_increment(col, dense_increment), dv = rate_increment(col, saved_rate, dense_increment);
     x(col) = saved + dz;
     residual(x, x_dot, shifted);
     x(col) = saved;

@@ -66,34 +66,6 @@ int wire_root(sunrealtype, N_Vector y, N_Vector, sunrealtype* g, void* user) {
   return 0;
 }
 
-// v̇ and λ from the augmented system [M C_qᵀ; C_q 0][v̇; λ] = [Q; γ] at (t, q, v), structured.
-void consistent_accelerations(CraneEquations& equations, DaeData& d, double t, CraneEquations::ConstRef q,
-                              CraneEquations::ConstRef v, CraneEquations::Ref v_dot, CraneEquations::Ref lambda) {
-  const int n = d.size;
-  const BandStructure structure = equations.full_structure();
-  SecondOrderJacobian blocks(structure);
-  equations.full_jacobian(t, q, v, Eigen::VectorXd::Zero(n), blocks);  // only its mass matrix is used
-  ConstrainedNewtonMatrix augmented(structure, constraints);
-  augmented.assign_coordinate_block(1.0, blocks.mass, 0.0, blocks.damping, 0.0, blocks.stiffness);
-  equations.constraint_jacobian(q, d.jacobian);
-  for (int k = 0; k < constraints; ++k) {
-    for (int j = 0; j < structure.border; ++j) {
-      augmented.at(augmented.reduced(j), augmented.reduced_extra(k)) = d.jacobian(k, j);
-      augmented.at(augmented.reduced_extra(k), augmented.reduced(j)) = d.jacobian(k, j);
-    }
-  }
-  equations.full_forces(t, q, v, d.forces);
-  Eigen::Vector3d gamma;
-  equations.constraint_rate_terms(t, q, v, gamma);
-  Eigen::VectorXd solution(n + constraints);
-  augmented.pack(d.forces, gamma, solution);
-  if (!augmented.factorize()) throw MassMatrixError(0.0);
-  augmented.solve(solution);
-  Eigen::Vector3d multipliers;
-  augmented.unpack(solution, v_dot, multipliers);
-  lambda = multipliers;
-}
-
 // λ at (t, q, v) with v̇ known (IDA's interpolant): least squares on C_qᵀλ = Q − M v̇.
 void multipliers_from_accelerations(CraneEquations& equations, DaeData& d, double t, CraneEquations::ConstRef q,
                                     CraneEquations::ConstRef v, CraneEquations::ConstRef v_dot, Eigen::Vector3d& lambda) {
@@ -131,7 +103,7 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
   s.setZero();
   s_dot.setZero();
   equations.full_from_minimal(0.0, z0, Eigen::VectorXd::Zero(z0.size()), s.head(n), s.segment(n, n));
-  consistent_accelerations(equations, data, 0.0, s.head(n), s.segment(n, n), s_dot.segment(n, n), s.segment(2 * n, constraints));
+  consistent_accelerations(equations, 0.0, s.head(n), s.segment(n, n), s_dot.segment(n, n), s.segment<constraints>(2 * n));
   s_dot.head(n) = s.segment(n, n);
 
   // Tolerances and the differential/algebraic split.
