@@ -74,7 +74,7 @@ class CraneSystem final : public CraneEquations {
   void evaluate_loads(double t, const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v,
                       const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool with_wave);
   // The boom's own loads (quadratic velocity, gravity, elastic) and the wire's into boom_force_ and
-  // cargo_force_: evaluate_loads without the hull.
+  // cargo_force_, and the boom's mass blocks: evaluate_loads without the hull.
   void boom_and_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool bilateral_wire);
   // The wire's pull added to `boom` (3 + n) and `cargo`; sets wire_.
   void add_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool bilateral, Ref boom,

@@ -281,8 +281,7 @@ CraneOutputs CraneSystem<Coords>::minimal_outputs_with_accelerations(double t, C
   const Eigen::Vector3d no_cargo = Eigen::Vector3d::Zero();
   const Eigen::Vector3d cargo_q = has_cargo() ? Eigen::Vector3d(z.segment<3>(cargo_at_)) : no_cargo;
   const Eigen::Vector3d cargo_v = has_cargo() ? Eigen::Vector3d(z_dot.segment<3>(cargo_at_)) : no_cargo;
-  boom_and_wire_loads(cargo_q, cargo_v, false);
-  m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_);
+  boom_and_wire_loads(cargo_q, cargo_v, false);  // and the mass blocks
   Eigen::Vector3d frame_a = frame_known_acceleration(t, hull_v);
   if (hull_free()) frame_a += mount_jacobian() * z_ddot.head<3>();
   // Joint reaction on the boom at B: M_B q̈_B − Q_B over the frame rows, with q̈ from the caller.

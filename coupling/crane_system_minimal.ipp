@@ -81,9 +81,7 @@ template <fem::ElasticCoordinates Coords>
 void CraneSystem<Coords>::boom_and_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v,
                                               bool bilateral_wire) {
   const double g = m_.gravity;
-  m_.boom.quadratic_velocity(boom_q_, boom_v_, boom_force_);
-  m_.boom.add_gravity(boom_q_, Eigen::Vector2d(0.0, -g), boom_force_);
-  m_.boom.add_elastic_force(boom_q_, boom_v_, boom_force_);
+  m_.boom.loads_and_mass_blocks(boom_q_, boom_v_, Eigen::Vector2d(0.0, -g), boom_force_, boom_reference_mass_, boom_coupling_);
   if (!has_cargo()) {
     cargo_force_.setZero();
     wire_ = WireState{};
@@ -143,8 +141,7 @@ void CraneSystem<Coords>::minimal_forces(double t, ConstRef z, ConstRef z_dot, b
   const Eigen::Vector3d no_cargo = Eigen::Vector3d::Zero();
   evaluate_loads(t, hull_q, hull_v, has_cargo() ? Eigen::Vector3d(z.segment<3>(cargo_at_)) : no_cargo,
                  has_cargo() ? Eigen::Vector3d(z_dot.segment<3>(cargo_at_)) : no_cargo, with_wave);
-  m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_);
-  frame_known_acc_ = frame_known_acceleration(t, hull_v);
+  frame_known_acc_ = frame_known_acceleration(t, hull_v);  // (the mass blocks came with the loads)
   const Eigen::Vector3d boom_reference_rhs = boom_force_.head<3>() - boom_reference_mass_ * frame_known_acc_;
   elastic_rhs_.noalias() = boom_force_.tail(n_) - boom_coupling_.transpose() * frame_known_acc_;
   Eigen::Matrix3d jr = Eigen::Matrix3d::Identity();
@@ -169,7 +166,7 @@ void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z
       // two columns and M_ff⁻¹cᵀ are constant, so one two-column solve (the right-hand side and S̃ᵀη)
       // does what four did.
       pair_rhs_.col(0) = elastic_rhs_;
-      pair_rhs_.col(1).noalias() = m_.boom.coords().skew_ff().transpose() * boom_q_.tail(n_);
+      pair_rhs_.col(1) = -(boom_coupling_.row(2) + m_.boom.coords().u0_cross_shape()).transpose();  // S̃ᵀη
       pair_solution_ = elastic_mass_factor_.solve(pair_rhs_);
       schur_rhs_ = pair_solution_.col(0);
       const Eigen::Matrix2d frame_rotation = rotation(boom_q_(2));
@@ -298,7 +295,7 @@ CraneOutputs CraneSystem<Coords>::common_outputs(const Eigen::Vector3d& hull_q, 
   const double cargo_on = has_cargo() ? 1.0 : 0.0;
   out.kinetic_energy = 0.5 * hull_v.dot(hull_rigid_inertia().cwiseProduct(hull_v)) * (hull_free() ? 1.0 : 0.0) +
                        cargo_on * 0.5 * cargo_v.dot(cargo_inertia().cwiseProduct(cargo_v)) +
-                       m_.boom.kinetic_energy(boom_q_, boom_v_);
+                       m_.boom.kinetic_energy(boom_v_, boom_reference_mass_, boom_coupling_);
   out.gravity_energy = (hull_free() ? m_.hull.mass * g * hull_q(1) : 0.0) + cargo_on * m_.cargo.mass * g * cargo_q(1) +
                        m_.boom.gravity_potential(boom_q_, Eigen::Vector2d(0.0, -g));
   out.strain_energy = m_.boom.strain_energy(boom_q_);

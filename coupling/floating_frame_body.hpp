@@ -153,6 +153,50 @@ class FloatingFrameBody {
     }
   }
 
+  // The body's own loads Q_v + Q_gravity + Q_elastic (assigned to `force`) and its mass blocks at
+  // (q, v) in one pass, the products M_ff η, S̄η, S̄η̇, S̃ᵀη and A computed once: the hot path of the
+  // equations of motion. The same as quadratic_velocity + add_gravity + add_elastic_force + mass_blocks.
+  void loads_and_mass_blocks(ConstRef q, ConstRef v, const Eigen::Vector2d& gravity, Ref force, Eigen::Matrix3d& reference,
+                             Eigen::Matrix<double, 3, Eigen::Dynamic>& coupling) const {
+    const auto eta = q.tail(n_);
+    const auto eta_dot = v.tail(n_);
+    const double w = v(2);
+    const Eigen::Matrix2d a = rotation(q(2));
+    const Eigen::Vector2d centroid = coords_.first_moment() + coords_.shape_integral() * eta;  // ∫ρū
+    const Eigen::Vector2d centroid_rate = coords_.shape_integral() * eta_dot;
+    work_a_.noalias() = coords_.mass_ff() * eta;      // M_ff η
+    work_b_.noalias() = coords_.skew_ff() * eta_dot;  // S̃ η̇
+    const Eigen::Vector2d a_centroid = a * centroid;
+    force.template head<2>() = w * w * a_centroid - 2.0 * w * (a * perp(centroid_rate)) + coords_.mass() * gravity;
+    force(2) = -2.0 * w * (coords_.u0_dot_shape().dot(eta_dot) + work_a_.dot(eta_dot)) + gravity.dot(perp(a_centroid));
+    force.tail(n_) = w * w * (coords_.u0_dot_shape().transpose() + work_a_) - 2.0 * w * work_b_;
+    force.tail(n_).noalias() += coords_.shape_integral().transpose() * (a.transpose() * gravity);
+    reference.setZero();
+    reference(0, 0) = reference(1, 1) = coords_.mass();
+    reference.block<2, 1>(0, 2) = perp(a_centroid);
+    reference.block<1, 2>(2, 0) = reference.block<2, 1>(0, 2).transpose();
+    reference(2, 2) = coords_.second_moment() + 2.0 * coords_.u0_dot_shape().dot(eta) + eta.dot(work_a_);
+    coupling.resize(3, n_);
+    coupling.template topRows<2>().noalias() = a * coords_.shape_integral();
+    work_b_.noalias() = coords_.skew_ff().transpose() * eta;  // (ηᵀS̃)ᵀ
+    coupling.row(2) = -(coords_.u0_cross_shape() + work_b_.transpose());
+    work_a_ = eta + beta_ * eta_dot;
+    force.tail(n_).noalias() -= coords_.stiffness() * work_a_;
+    if (has_prestress()) force.tail(n_).noalias() -= prestress_ * eta;
+    if (has_centrifugal_stiffening()) {
+      work_b_.noalias() = centrifugal_ * eta;
+      force.tail(n_) -= (w * w) * work_b_;
+    }
+  }
+
+  // Kinetic energy ½ vᵀ M v from mass blocks already at hand (as loads_and_mass_blocks fills them).
+  double kinetic_energy(ConstRef v, const Eigen::Matrix3d& reference, const Eigen::Matrix<double, 3, Eigen::Dynamic>& coupling) const {
+    const auto eta_dot = v.tail(n_);
+    const Eigen::Vector3d vr = v.head<3>();
+    work_a_.noalias() = coords_.mass_ff() * eta_dot;
+    return 0.5 * vr.dot(reference * vr) + vr.dot(coupling * eta_dot) + 0.5 * eta_dot.dot(work_a_);
+  }
+
   // Elastic columns of the body's linearization: with F = Q_v + Q_gravity + Q_elastic − M(q) a (the
   // body's own forces and inertia; point forces excluded) at (q, v) and accelerations a (3 + n),
   // fills the reference rows K_ref = −∂F_ref/∂η, D_ref = −∂F_ref/∂η̇ (3 × n) and adds the elastic
