@@ -94,14 +94,13 @@ void CraneSystem<Coords>::boom_and_wire_loads(const Eigen::Vector3d& cargo_q, co
 template <fem::ElasticCoordinates Coords>
 void CraneSystem<Coords>::add_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool bilateral,
                                          Ref boom, Eigen::Vector3d& cargo) {
-  const Eigen::Vector2d tip = m_.boom.position(boom_q_, m_.boom_tip);
-  const Eigen::Vector2d tip_v = m_.boom.velocity(boom_q_, boom_v_, m_.boom_tip);
+  const auto tip = m_.boom.point_motion(boom_q_, boom_v_, m_.boom_tip);
   const Eigen::Vector2d hook_arm = rotation(cargo_q(2)) * m_.cargo.hook;
   const Eigen::Vector2d hook = cargo_q.head<2>() + hook_arm;
   const Eigen::Vector2d hook_v = cargo_v.head<2>() + cargo_v(2) * perp(hook_arm);
-  wire_ = wire_state(m_.wire, tip, tip_v, hook, hook_v, bilateral);
+  wire_ = wire_state(m_.wire, tip.position, tip.velocity, hook, hook_v, bilateral);
   const Eigen::Vector2d pull = wire_.tension * wire_.direction;  // on the tip, towards the hook
-  m_.boom.add_point_force(boom_q_, m_.boom_tip, pull, boom);
+  m_.boom.add_point_force(tip, m_.boom_tip, pull, boom);
   cargo.head<2>() -= pull;
   cargo(2) -= cross(hook_arm, pull);
 }

@@ -69,6 +69,27 @@ class FloatingFrameBody {
     return v.head<2>() + v(2) * (a * perp(local_position(q, p))) + a * (p.shape * v.tail(n_));
   }
 
+  // A point's motion with A(θ) and its deformed local position computed once (the wire's hot path):
+  // lever = A(ū0 + Sη) from R, position = R + lever, velocity = Ṙ + θ̇ Ĩ lever + A S η̇.
+  struct PointMotion {
+    Eigen::Matrix2d rotation;
+    Eigen::Vector2d lever, position, velocity;
+  };
+  PointMotion point_motion(ConstRef q, ConstRef v, const BodyPoint& p) const {
+    PointMotion m;
+    m.rotation = rotation(q(2));
+    m.lever = m.rotation * local_position(q, p);
+    m.position = q.head<2>() + m.lever;
+    m.velocity = v.head<2>() + v(2) * perp(m.lever) + m.rotation * (p.shape * v.tail(n_));
+    return m;
+  }
+  // add_point_force with the point's motion at hand.
+  void add_point_force(const PointMotion& m, const BodyPoint& p, const Eigen::Vector2d& force, Ref generalized) const {
+    generalized.head<2>() += force;
+    generalized(2) += force.dot(perp(m.lever));
+    generalized.tail(n_).noalias() += p.shape.transpose() * (m.rotation.transpose() * force);
+  }
+
   // Mass matrix blocks: reference (3×3 over R, θ) and reference–elastic coupling (3×n);
   // the elastic block is the constant coords().mass_ff().
   void mass_blocks(ConstRef q, Eigen::Matrix3d& reference, Eigen::Matrix<double, 3, Eigen::Dynamic>& coupling) const {

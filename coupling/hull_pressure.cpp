@@ -40,8 +40,9 @@ constexpr std::array<double, series_terms> inverse_factorial = inverse_factorial
 void exponential_moments(Complex z, Complex& phi1, Complex& psi) {
   const double size = std::norm(z);  // |z|²
   if (size < series_radius * series_radius) {  // φ1 = Σ zⁿ/(n+1)!, ψ = Σ zⁿ/(n! (n+2)), by Horner
-    // Terms up to |z|ⁿ/n! < 1e-18 relative: 8 for |z| < 0.01, 12 for |z| < 0.1, else all.
-    const int terms = size < 1e-4 ? 8 : size < 1e-2 ? 12 : series_terms;
+    // Enough terms that the first one left out, |z|ⁿ/n!, is below 1e-17: 8 for |z| < 0.01, 12 for
+    // |z| < 0.1, 14 for |z| < 0.25, else all (|z| < ½).
+    const int terms = size < 1e-4 ? 8 : size < 1e-2 ? 12 : size < 0.0625 ? 14 : series_terms;
     phi1 = 0.0;
     psi = 0.0;
     for (int n = terms - 2; n >= 0; --n) {
