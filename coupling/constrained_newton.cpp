@@ -87,4 +87,17 @@ void consistent_accelerations(CraneEquations& equations, double t, const Eigen::
   lambda = multipliers;
 }
 
+void multipliers_from_accelerations(CraneEquations& equations, double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                                    const Eigen::Ref<const Eigen::VectorXd>& v, const Eigen::Ref<const Eigen::VectorXd>& v_dot,
+                                    Eigen::Vector3d& lambda) {
+  const int n = equations.full_size();
+  Eigen::VectorXd forces(n), inertia(n);
+  Eigen::MatrixXd cq;
+  equations.full_forces(t, q, v, forces);
+  equations.full_mass_times(q, v_dot, inertia);
+  equations.constraint_jacobian(q, cq);
+  const Eigen::Matrix3d normal = cq * cq.transpose();
+  lambda = normal.ldlt().solve(cq * (forces - inertia));
+}
+
 }  // namespace ffrf::coupling

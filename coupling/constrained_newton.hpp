@@ -73,4 +73,9 @@ void consistent_accelerations(CraneEquations& equations, double t, const Eigen::
                               const Eigen::Ref<const Eigen::VectorXd>& v, Eigen::Ref<Eigen::VectorXd> v_dot,
                               Eigen::Ref<Eigen::Vector3d> lambda);
 
+// λ at (t, q, v) with v̇ known (an integrator's interpolant): least squares on C_qᵀλ = Q − M v̇.
+void multipliers_from_accelerations(CraneEquations& equations, double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                                    const Eigen::Ref<const Eigen::VectorXd>& v, const Eigen::Ref<const Eigen::VectorXd>& v_dot,
+                                    Eigen::Vector3d& lambda);
+
 }  // namespace ffrf::coupling

@@ -66,17 +66,6 @@ int wire_root(sunrealtype, N_Vector y, N_Vector, sunrealtype* g, void* user) {
   return 0;
 }
 
-// λ at (t, q, v) with v̇ known (IDA's interpolant): least squares on C_qᵀλ = Q − M v̇.
-void multipliers_from_accelerations(CraneEquations& equations, DaeData& d, double t, CraneEquations::ConstRef q,
-                                    CraneEquations::ConstRef v, CraneEquations::ConstRef v_dot, Eigen::Vector3d& lambda) {
-  equations.full_forces(t, q, v, d.forces);
-  equations.full_mass_times(q, v_dot, d.mass_times);
-  equations.constraint_jacobian(q, d.jacobian);
-  const Eigen::Matrix3d normal = d.jacobian * d.jacobian.transpose();
-  const Eigen::Vector3d projected = d.jacobian * (d.forces - d.mass_times);
-  lambda = normal.ldlt().solve(projected);
-}
-
 std::string remedy_for(int flag) {
   switch (flag) {
     case IDA_TOO_MUCH_WORK: return "raise the step limit or loosen --rtol/--atol";
@@ -142,7 +131,7 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
     // at a constant rate) IDA's steps grow long while the reaction still turns with the hub. v̇ is the
     // derivative of IDA's interpolant of v (a differential variable under error control).
     if (t > 0.0 && IDAGetDky(ida, t, 1, derivative.v) == IDA_SUCCESS) {
-      multipliers_from_accelerations(equations, data, t, state.head(n), state.segment(n, n), derivative.map().segment(n, n), lambda);
+      multipliers_from_accelerations(equations, t, state.head(n), state.segment(n, n), derivative.map().segment(n, n), lambda);
     }
     result.time.push_back(t);
     result.samples.push_back(equations.full_outputs(t, state.head(n), state.segment(n, n), lambda));
