@@ -97,15 +97,7 @@ class FloatingFrameBody {
     const Eigen::Matrix2d a = rotation(q(2));
     const Eigen::Vector2d centroid = coords_.first_moment() + coords_.shape_integral() * eta;  // ∫ρū
     work_a_.noalias() = coords_.mass_ff() * eta;
-    reference.setZero();
-    reference(0, 0) = reference(1, 1) = coords_.mass();
-    reference.block<2, 1>(0, 2) = a * perp(centroid);
-    reference.block<1, 2>(2, 0) = reference.block<2, 1>(0, 2).transpose();
-    reference(2, 2) = coords_.second_moment() + 2.0 * coords_.u0_dot_shape().dot(eta) + eta.dot(work_a_);
-    coupling.resize(3, n_);
-    coupling.template topRows<2>().noalias() = a * coords_.shape_integral();
-    work_b_.noalias() = coords_.skew_ff().transpose() * eta;  // (ηᵀS̃)ᵀ
-    coupling.row(2) = -(coords_.u0_cross_shape() + work_b_.transpose());
+    assemble_mass_blocks(eta, a, a * perp(centroid), reference, coupling);
   }
 
   // Dense full mass matrix (3 + n)² — for tests, energy and small systems.
@@ -192,15 +184,7 @@ class FloatingFrameBody {
     force(2) = -2.0 * w * (coords_.u0_dot_shape().dot(eta_dot) + work_a_.dot(eta_dot)) + gravity.dot(perp(a_centroid));
     force.tail(n_) = w * w * (coords_.u0_dot_shape().transpose() + work_a_) - 2.0 * w * work_b_;
     force.tail(n_).noalias() += coords_.shape_integral().transpose() * (a.transpose() * gravity);
-    reference.setZero();
-    reference(0, 0) = reference(1, 1) = coords_.mass();
-    reference.block<2, 1>(0, 2) = perp(a_centroid);
-    reference.block<1, 2>(2, 0) = reference.block<2, 1>(0, 2).transpose();
-    reference(2, 2) = coords_.second_moment() + 2.0 * coords_.u0_dot_shape().dot(eta) + eta.dot(work_a_);
-    coupling.resize(3, n_);
-    coupling.template topRows<2>().noalias() = a * coords_.shape_integral();
-    work_b_.noalias() = coords_.skew_ff().transpose() * eta;  // (ηᵀS̃)ᵀ
-    coupling.row(2) = -(coords_.u0_cross_shape() + work_b_.transpose());
+    assemble_mass_blocks(eta, a, perp(a_centroid), reference, coupling);
     work_a_ = eta + beta_ * eta_dot;
     force.tail(n_).noalias() -= coords_.stiffness() * work_a_;
     if (has_prestress()) force.tail(n_).noalias() -= prestress_ * eta;
@@ -297,6 +281,20 @@ class FloatingFrameBody {
   }
 
  private:
+  // The mass blocks from A(θ), M_Rθ = A Ĩ ∫ρū and work_a_ = M_ff η (uses work_b_).
+  void assemble_mass_blocks(ConstRef eta, const Eigen::Matrix2d& a, const Eigen::Vector2d& rotation_column,
+                            Eigen::Matrix3d& reference, Eigen::Matrix<double, 3, Eigen::Dynamic>& coupling) const {
+    reference.setZero();
+    reference(0, 0) = reference(1, 1) = coords_.mass();
+    reference.block<2, 1>(0, 2) = rotation_column;
+    reference.block<1, 2>(2, 0) = reference.block<2, 1>(0, 2).transpose();
+    reference(2, 2) = coords_.second_moment() + 2.0 * coords_.u0_dot_shape().dot(eta) + eta.dot(work_a_);
+    coupling.resize(3, n_);
+    coupling.template topRows<2>().noalias() = a * coords_.shape_integral();
+    work_b_.noalias() = coords_.skew_ff().transpose() * eta;  // (ηᵀS̃)ᵀ
+    coupling.row(2) = -(coords_.u0_cross_shape() + work_b_.transpose());
+  }
+
   Coords coords_;
   double beta_;
   ElasticMatrix prestress_;    // empty: no static stiffening

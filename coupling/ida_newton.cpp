@@ -3,8 +3,6 @@
 
 #include <nvector/nvector_serial.h>
 
-#include <stdexcept>
-
 namespace ffrf::coupling::sundials {
 
 namespace {
@@ -15,42 +13,14 @@ Eigen::Map<Eigen::VectorXd> view(N_Vector v) {
   return {N_VGetArrayPointer(v), static_cast<Eigen::Index>(N_VGetLength(v))};
 }
 
-SUNMatrix_ID matrix_id(SUNMatrix) { return SUNMATRIX_CUSTOM; }
-int matrix_zero(SUNMatrix) { return 0; }  // the Jacobian function overwrites every block
-void matrix_destroy(SUNMatrix A) { SUNMatFreeEmpty(A); }
-SUNLinearSolver_Type solver_type(SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; }
-SUNLinearSolver_ID solver_id(SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; }
-int solver_free(SUNLinearSolver S) {
-  SUNLinSolFreeEmpty(S);
-  return SUNLS_SUCCESS;
-}
-
 }  // namespace
 
 IndexTwoNewton::IndexTwoNewton(CraneEquations& equations, SUNContext context, Eigen::VectorXd coordinate_scale)
     : equations_(equations), nq_(equations.full_size()), border_(equations.full_structure().border),
       scale_(std::move(coordinate_scale)), blocks_(equations.full_structure()),
       reduced_(equations.full_structure(), 2 * constraints), velocity_(nq_), column_(nq_),
-      reduced_rhs_(nq_ + 2 * constraints), product_(nq_), delta_q_(nq_), mu_curvature_(border_, border_) {
-  matrix_ = SUNMatNewEmpty(context);
-  solver_ = SUNLinSolNewEmpty(context);
-  if (!matrix_ || !solver_) throw std::runtime_error("SUNDIALS custom Newton matrix/solver allocation failed");
-  matrix_->content = this;
-  matrix_->ops->getid = matrix_id;
-  matrix_->ops->zero = matrix_zero;
-  matrix_->ops->destroy = matrix_destroy;
-  solver_->content = this;
-  solver_->ops->gettype = solver_type;
-  solver_->ops->getid = solver_id;
-  solver_->ops->setup = setup;
-  solver_->ops->solve = solve;
-  solver_->ops->free = solver_free;
-}
-
-IndexTwoNewton::~IndexTwoNewton() {
-  SUNLinSolFree(solver_);
-  SUNMatDestroy(matrix_);
-}
+      reduced_rhs_(nq_ + 2 * constraints), product_(nq_), delta_q_(nq_), mu_curvature_(border_, border_),
+      linear_(context, this, setup, solve) {}
 
 int IndexTwoNewton::jacobian(double t, double cj, N_Vector y, N_Vector yp, N_Vector, SUNMatrix J, void*, N_Vector,
                              N_Vector, N_Vector) {

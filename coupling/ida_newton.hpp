@@ -20,6 +20,7 @@
 #include <string>
 
 #include "coupling/constrained_newton.hpp"
+#include "coupling/custom_linear_solver.hpp"
 #include "coupling/crane_equations.hpp"
 #include "coupling/failure.hpp"
 
@@ -28,12 +29,11 @@ namespace ffrf::coupling::sundials {
 class IndexTwoNewton {
  public:
   IndexTwoNewton(CraneEquations& equations, SUNContext context, Eigen::VectorXd coordinate_scale);
-  ~IndexTwoNewton();
   IndexTwoNewton(const IndexTwoNewton&) = delete;
   IndexTwoNewton& operator=(const IndexTwoNewton&) = delete;
 
-  SUNMatrix matrix() const { return matrix_; }
-  SUNLinearSolver solver() const { return solver_; }
+  SUNMatrix matrix() const { return linear_.matrix(); }
+  SUNLinearSolver solver() const { return linear_.solver(); }
   // An exception the model threw in a Jacobian evaluation (never crosses C code).
   const std::string& model_error() const { return model_error_; }
   FailureKind model_error_kind() const { return model_error_kind_; }
@@ -61,8 +61,7 @@ class IndexTwoNewton {
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic> mu_curvature_;  // H_μ over the border (b × b)
   std::string model_error_;
   FailureKind model_error_kind_ = FailureKind::model_error;
-  SUNMatrix matrix_ = nullptr;
-  SUNLinearSolver solver_ = nullptr;
+  CustomLinearSolver linear_;  // last: built on the complete object
 };
 
 }  // namespace ffrf::coupling::sundials

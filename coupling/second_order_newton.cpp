@@ -4,8 +4,6 @@
 
 #include <nvector/nvector_serial.h>
 
-#include <stdexcept>
-
 namespace ffrf::coupling::sundials {
 
 namespace {
@@ -14,38 +12,11 @@ Eigen::Map<Eigen::VectorXd> view(N_Vector v) {
   return {N_VGetArrayPointer(v), static_cast<Eigen::Index>(N_VGetLength(v))};
 }
 
-SUNMatrix_ID matrix_id(SUNMatrix) { return SUNMATRIX_CUSTOM; }
-void matrix_destroy(SUNMatrix A) { SUNMatFreeEmpty(A); }
-SUNLinearSolver_Type solver_type(SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; }
-SUNLinearSolver_ID solver_id(SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; }
-int solver_free(SUNLinearSolver S) {
-  SUNLinSolFreeEmpty(S);
-  return SUNLS_SUCCESS;
-}
-
 }  // namespace
 
 SecondOrderNewton::SecondOrderNewton(const BandStructure& structure, SUNContext context, Evaluate evaluate)
     : size_(structure.size()), evaluate_(std::move(evaluate)), blocks_(structure), effective_(structure), lu_(structure),
-      reduced_(structure.size()), stiffness_times_(structure.size()) {
-  matrix_ = SUNMatNewEmpty(context);
-  solver_ = SUNLinSolNewEmpty(context);
-  if (!matrix_ || !solver_) throw std::runtime_error("SUNDIALS custom Newton matrix/solver allocation failed");
-  matrix_->content = this;
-  matrix_->ops->getid = matrix_id;
-  matrix_->ops->destroy = matrix_destroy;
-  solver_->content = this;
-  solver_->ops->gettype = solver_type;
-  solver_->ops->getid = solver_id;
-  solver_->ops->setup = setup;
-  solver_->ops->solve = solve;
-  solver_->ops->free = solver_free;
-}
-
-SecondOrderNewton::~SecondOrderNewton() {
-  SUNLinSolFree(solver_);
-  SUNMatDestroy(matrix_);
-}
+      reduced_(structure.size()), stiffness_times_(structure.size()), linear_(context, this, setup, solve) {}
 
 int SecondOrderNewton::linear_system(double t, N_Vector y, N_Vector fy, SUNMatrix A, int jok, int* jcur, double gamma, void*,
                                      N_Vector, N_Vector, N_Vector) {

@@ -18,6 +18,7 @@
 #include <Eigen/Dense>
 #include <functional>
 
+#include "coupling/custom_linear_solver.hpp"
 #include "coupling/second_order_jacobian.hpp"
 
 namespace ffrf::coupling::sundials {
@@ -30,12 +31,11 @@ class SecondOrderNewton {
                                      const Eigen::Ref<const Eigen::VectorXd>&, SecondOrderJacobian&)>;
 
   SecondOrderNewton(const BandStructure& structure, SUNContext context, Evaluate evaluate);
-  ~SecondOrderNewton();
   SecondOrderNewton(const SecondOrderNewton&) = delete;
   SecondOrderNewton& operator=(const SecondOrderNewton&) = delete;
 
-  SUNMatrix matrix() const { return matrix_; }
-  SUNLinearSolver solver() const { return solver_; }
+  SUNMatrix matrix() const { return linear_.matrix(); }
+  SUNLinearSolver solver() const { return linear_.solver(); }
   long factorizations() const { return factorizations_; }
 
   // CVLsLinSysFn: register with CVodeSetLinSysFn (after CVodeSetLinearSolver(solver(), matrix())).
@@ -54,8 +54,7 @@ class SecondOrderNewton {
   double gamma_ = 0.0;
   Eigen::VectorXd reduced_, stiffness_times_;
   long factorizations_ = 0;
-  SUNMatrix matrix_ = nullptr;
-  SUNLinearSolver solver_ = nullptr;
+  CustomLinearSolver linear_;  // last: built on the complete object
 };
 
 }  // namespace ffrf::coupling::sundials
