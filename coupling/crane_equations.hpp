@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "coupling/second_order_jacobian.hpp"
+
 namespace ffrf::coupling {
 
 // One output sample: what a time-series row and the static report show.
@@ -88,6 +90,26 @@ class CraneEquations {
   virtual int cargo_offset() const = 0;
   // Elastic coordinate count (0 for the rigid boom).
   virtual int elastic_size() const = 0;
+
+  // --- structured linearizations for the Newton solvers (coupling/second_order_jacobian.hpp) ---
+  // Structure of the minimal-coordinate blocks (dense by default).
+  virtual BandStructure minimal_structure() const { return {minimal_size(), 0, 0, 0}; }
+  // M_z, K = −∂(Q_z − M_z a)/∂z, D = −∂(Q_z − M_z a)/∂ż at (t, z, ż), a = z̈ (out has
+  // minimal_structure()). The default differentiates minimal_accelerations (M = I, K = −∂z̈/∂z,
+  // D = −∂z̈/∂ż: 2n right-hand sides); the crane overrides it with analytic blocks.
+  virtual void minimal_jacobian(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, SecondOrderJacobian& out);
+  // Residual or right-hand-side evaluations one minimal_jacobian call costs (for the statistics).
+  virtual int minimal_jacobian_evaluations() const { return 2 * minimal_size(); }
+  // Structure of the full-coordinate blocks (dense by default). The clamp's C_q must depend only on
+  // the border coordinates.
+  virtual BandStructure full_structure() const { return {full_size(), 0, 0, 0}; }
+  // M(q), K = −∂(Q − M a)/∂q, D = −∂Q/∂v at (t, q, v), a = v̇, without constraint terms (out has
+  // full_structure()). Default: forward differences of full_forces and full_mass_times.
+  virtual void full_jacobian(double t, ConstRef q, ConstRef v, ConstRef v_dot, SecondOrderJacobian& out);
+  virtual int full_jacobian_evaluations() const { return 2 * full_size() + 1; }
+  // The outputs at a state whose accelerations z̈ are known (an integrator's interpolant): the joint
+  // reaction from them, without solving the equations of motion. Default: minimal_outputs(t, z, ż).
+  virtual CraneOutputs minimal_outputs_with_accelerations(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot);
 };
 
 }  // namespace ffrf::coupling

@@ -7,10 +7,10 @@
 #include <Eigen/Dense>
 #include <optional>
 
-#include "coupling/airy_wave.hpp"
 #include "coupling/floating_frame_body.hpp"
 #include "coupling/hull_pressure.hpp"
 #include "coupling/prescribed_motion.hpp"
+#include "coupling/wave_field.hpp"
 
 namespace ffrf::coupling {
 
@@ -59,7 +59,7 @@ struct CraneModel {
   WireModel wire;
   double gravity = 9.81;
   double water_density = 1025.0;
-  std::optional<AiryWave> wave;  // empty: calm water
+  std::optional<WaveField> wave;  // empty: calm water
 };
 
 }  // namespace ffrf::coupling

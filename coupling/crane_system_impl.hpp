@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <type_traits>
+#include <vector>
 
 #include "coupling/crane_system.hpp"
 #include "coupling/wire_rope.hpp"
@@ -44,6 +45,14 @@ class CraneSystem final : public CraneEquations {
   double wire_stretch_full(ConstRef q) override;
   int cargo_offset() const override { return has_cargo() ? cargo_at_ : -1; }
   int elastic_size() const override { return n_; }
+  BandStructure minimal_structure() const override { return minimal_structure_; }
+  void minimal_jacobian(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, SecondOrderJacobian& out) override;
+  // The hull and cargo columns by differences (twice: positions, velocities) plus the base residual.
+  int minimal_jacobian_evaluations() const override { return 2 * elastic_at_ + 1; }
+  BandStructure full_structure() const override { return full_structure_; }
+  int full_jacobian_evaluations() const override { return 2 * (elastic_at_ + 3) + 1; }
+  void full_jacobian(double t, ConstRef q, ConstRef v, ConstRef v_dot, SecondOrderJacobian& out) override;
+  CraneOutputs minimal_outputs_with_accelerations(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot) override;
 
  private:
   bool hull_free() const { return !m_.hull.fixed; }
@@ -64,6 +73,25 @@ class CraneSystem final : public CraneEquations {
   // the static problem: calm water and a bilateral wire (see wire_state).
   void evaluate_loads(double t, const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v,
                       const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool with_wave);
+  // The boom's own loads (quadratic velocity, gravity, elastic) and the wire's into boom_force_ and
+  // cargo_force_, and the boom's mass blocks: evaluate_loads without the hull.
+  void boom_and_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool bilateral_wire);
+  // The wire's pull added to `boom` (3 + n) and `cargo`; sets wire_.
+  void add_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool bilateral, Ref boom,
+                      Eigen::Vector3d& cargo);
+  // Minimal-coordinate residual Q_z − M_z a at (t, z, ż) with a given (all loads), and the wire's
+  // share of it alone (for the wire's columns of the Jacobian).
+  void minimal_residual(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, Ref out);
+  void minimal_wire_residual(double t, ConstRef z, ConstRef z_dot, Ref out);
+  // Full-coordinate residual Q − M a (no constraint terms) and the wire's share of it.
+  void full_residual(double t, ConstRef q, ConstRef v, ConstRef v_dot, Ref out);
+  void full_wire_residual(ConstRef q, ConstRef v, Ref out);
+  // Known part of the boom frame's acceleration (see frame_known_acc_) at t for the hull's velocity.
+  Eigen::Vector3d frame_known_acceleration(double t, const Eigen::Vector3d& hull_v) const;
+  // The structures of the Newton blocks and the elastic coordinates the wire's attachment moves.
+  void find_structures();
+  // J_r of the clamp (hull velocities → boom frame velocities) for the current mount_offset_.
+  Eigen::Matrix3d mount_jacobian() const;
   // Minimal-coordinate generalized forces (hull rows through Jᵀ, convective term included).
   void minimal_forces(double t, ConstRef z, ConstRef z_dot, bool with_wave);
   void split_minimal(double t, ConstRef z, ConstRef z_dot, Eigen::Vector3d& hull_q, Eigen::Vector3d& hull_v) const;
@@ -89,6 +117,12 @@ class CraneSystem final : public CraneEquations {
   Eigen::Vector3d hull_rhs_ = Eigen::Vector3d::Zero();
   Eigen::VectorXd elastic_rhs_;
   Eigen::VectorXd schur_rhs_column_;
+  // M_ff⁻¹ S̄ᵀ and M_ff⁻¹ cᵀ (constant; c = u0_cross_shape), the two-column solve's workspace, and
+  // M_ff⁻¹ M_fR (n × 3) before the clamp's J_r.
+  Eigen::Matrix<double, Eigen::Dynamic, 2> mass_inverse_shape_;
+  Eigen::VectorXd mass_inverse_cross_;
+  Eigen::Matrix<double, Eigen::Dynamic, 2> pair_rhs_, pair_solution_;
+  Eigen::Matrix<double, Eigen::Dynamic, 3> frame_columns_;
   Eigen::Matrix3d boom_reference_mass_ = Eigen::Matrix3d::Zero();
   Eigen::Matrix<double, 3, Eigen::Dynamic> boom_coupling_;
   Eigen::Matrix<double, 3, Eigen::Dynamic> hull_elastic_mass_;
@@ -99,9 +133,18 @@ class CraneSystem final : public CraneEquations {
   Eigen::Vector3d frame_known_acc_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d joint_reaction_ = Eigen::Vector3d::Zero();
   WireState wire_;
+  // Newton-matrix structure (bordered band for nodal coordinates, dense for modal ones), the elastic
+  // coordinates that move the wire's attachment (nonzero columns of the tip's shape rows), and
+  // workspace of the Jacobians (allocated once).
+  BandStructure minimal_structure_, full_structure_;
+  std::vector<int> tip_columns_;
+  Eigen::Matrix<double, 3, Eigen::Dynamic> reference_stiffness_, reference_damping_;
+  Eigen::VectorXd jacobian_base_, jacobian_shifted_, jacobian_x_, jacobian_x_dot_, boom_a_, wire_boom_force_, full_inertia_;
+  Eigen::VectorXd minimal_scale_, full_scale_;  // typical sizes: the difference increments' floor
 };
 
 }  // namespace ffrf::coupling::detail
 
 #include "coupling/crane_system_minimal.ipp"
 #include "coupling/crane_system_full.ipp"
+#include "coupling/crane_system_jacobian.ipp"

@@ -17,7 +17,11 @@ CraneSystem<Coords>::CraneSystem(CraneModel<Coords> model)
       cargo_at_(m_.hull.fixed ? 0 : 3),
       elastic_at_(cargo_at_ + (m_.cargo.present ? 3 : 0)),
       boom_q_(3 + n_), boom_v_(3 + n_), boom_force_(3 + n_), elastic_rhs_(n_), schur_rhs_column_(n_),
-      boom_coupling_(3, n_), hull_elastic_mass_(3, n_), schur_columns_(n_, 3), schur_rhs_(n_) {
+      boom_coupling_(3, n_), hull_elastic_mass_(3, n_), schur_columns_(n_, 3), schur_rhs_(n_),
+      boom_a_(3 + n_), wire_boom_force_(3 + n_) {
+  pair_rhs_.resize(n_, 2);
+  pair_solution_.resize(n_, 2);
+  frame_columns_.resize(n_, 3);
   // Typical size of each elastic coordinate: the η_i that moves some nodal DOF by 1 cm (1 cm or
   // 0.01 rad for nodal coordinates; 0.01 / max|Φ e_i| for mass-normalized modal ones, whose units
   // are m·√kg), so tolerances mean the same physical displacement in every coordinate set.
@@ -32,7 +36,13 @@ CraneSystem<Coords>::CraneSystem(CraneModel<Coords> model)
     if (elastic_mass_factor_.info() != Eigen::Success) {
       throw std::runtime_error("the boom's elastic mass matrix is not positive definite: check the section's mass per length");
     }
+    // The constant parts of M_ff⁻¹ M_fR (see minimal_accelerations): M_ff⁻¹ S̄ᵀ and M_ff⁻¹ cᵀ.
+    const Eigen::MatrixXd shape_t = m_.boom.coords().shape_integral().transpose();
+    mass_inverse_shape_ = elastic_mass_factor_.solve(shape_t);
+    const Eigen::VectorXd cross_t = m_.boom.coords().u0_cross_shape().transpose();
+    mass_inverse_cross_ = elastic_mass_factor_.solve(cross_t);
   }
+  find_structures();
 }
 
 template <fem::ElasticCoordinates Coords>
@@ -56,7 +66,7 @@ void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q
   const HullModel& hull = m_.hull;
   hull_force_ = Eigen::Vector3d(0.0, -hull.mass * g, 0.0);
   if (hull.hydrostatics) {
-    const AiryWave* wave = (with_wave && m_.wave) ? &*m_.wave : nullptr;
+    const WaveField* wave = (with_wave && m_.wave) ? &*m_.wave : nullptr;
     const HullLoad load = hull_pressure_load(hull.section, wave, m_.water_density, g, hull_q.head<2>(), hull_q(2), t);
     hull_force_.head<2>() += load.force;
     hull_force_(2) += load.moment;
@@ -64,27 +74,48 @@ void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q
   hull_force_ -= hull.radiation_damping.cwiseProduct(hull_v);
   hull_force_(0) -= hull.mooring_stiffness * hull_q(0);
   hull_force_ -= hull.support_stiffness.cwiseProduct(hull_q - hull.support_pose);
+  boom_and_wire_loads(cargo_q, cargo_v, !with_wave);
+}
 
-  m_.boom.quadratic_velocity(boom_q_, boom_v_, boom_force_);
-  m_.boom.add_gravity(boom_q_, Eigen::Vector2d(0.0, -g), boom_force_);
-  m_.boom.add_elastic_force(boom_q_, boom_v_, boom_force_);
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::boom_and_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v,
+                                              bool bilateral_wire) {
+  const double g = m_.gravity;
+  m_.boom.loads_and_mass_blocks(boom_q_, boom_v_, Eigen::Vector2d(0.0, -g), boom_force_, boom_reference_mass_, boom_coupling_);
   if (!has_cargo()) {
     cargo_force_.setZero();
     wire_ = WireState{};
     return;
   }
   cargo_force_ = Eigen::Vector3d(0.0, -m_.cargo.mass * g, 0.0);
+  add_wire_loads(cargo_q, cargo_v, bilateral_wire, boom_force_, cargo_force_);
+}
 
-  const Eigen::Vector2d tip = m_.boom.position(boom_q_, m_.boom_tip);
-  const Eigen::Vector2d tip_v = m_.boom.velocity(boom_q_, boom_v_, m_.boom_tip);
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::add_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool bilateral,
+                                         Ref boom, Eigen::Vector3d& cargo) {
+  const auto tip = m_.boom.point_motion(boom_q_, boom_v_, m_.boom_tip);
   const Eigen::Vector2d hook_arm = rotation(cargo_q(2)) * m_.cargo.hook;
   const Eigen::Vector2d hook = cargo_q.head<2>() + hook_arm;
   const Eigen::Vector2d hook_v = cargo_v.head<2>() + cargo_v(2) * perp(hook_arm);
-  wire_ = wire_state(m_.wire, tip, tip_v, hook, hook_v, !with_wave);
+  wire_ = wire_state(m_.wire, tip.position, tip.velocity, hook, hook_v, bilateral);
   const Eigen::Vector2d pull = wire_.tension * wire_.direction;  // on the tip, towards the hook
-  m_.boom.add_point_force(boom_q_, m_.boom_tip, pull, boom_force_);
-  cargo_force_.head<2>() -= pull;
-  cargo_force_(2) -= cross(hook_arm, pull);
+  m_.boom.add_point_force(tip, m_.boom_tip, pull, boom);
+  cargo.head<2>() -= pull;
+  cargo(2) -= cross(hook_arm, pull);
+}
+
+template <fem::ElasticCoordinates Coords>
+Eigen::Vector3d CraneSystem<Coords>::frame_known_acceleration(double t, const Eigen::Vector3d& hull_v) const {
+  Eigen::Vector3d known;
+  known.head<2>() = -hull_v(2) * hull_v(2) * mount_offset_;
+  known(2) = 0.0;
+  if (m_.hull.prescribed) {
+    const Eigen::Vector3d base_a = base_acceleration(t);
+    known.head<2>() += base_a.head<2>() + base_a(2) * perp(mount_offset_);
+    known(2) = base_a(2);
+  }
+  return known;
 }
 
 template <fem::ElasticCoordinates Coords>
@@ -109,14 +140,7 @@ void CraneSystem<Coords>::minimal_forces(double t, ConstRef z, ConstRef z_dot, b
   const Eigen::Vector3d no_cargo = Eigen::Vector3d::Zero();
   evaluate_loads(t, hull_q, hull_v, has_cargo() ? Eigen::Vector3d(z.segment<3>(cargo_at_)) : no_cargo,
                  has_cargo() ? Eigen::Vector3d(z_dot.segment<3>(cargo_at_)) : no_cargo, with_wave);
-  m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_);
-  frame_known_acc_.head<2>() = -hull_v(2) * hull_v(2) * mount_offset_;
-  frame_known_acc_(2) = 0.0;
-  if (m_.hull.prescribed) {
-    const Eigen::Vector3d base_a = base_acceleration(t);
-    frame_known_acc_.head<2>() += base_a.head<2>() + base_a(2) * perp(mount_offset_);
-    frame_known_acc_(2) = base_a(2);
-  }
+  frame_known_acc_ = frame_known_acceleration(t, hull_v);  // (the mass blocks came with the loads)
   const Eigen::Vector3d boom_reference_rhs = boom_force_.head<3>() - boom_reference_mass_ * frame_known_acc_;
   elastic_rhs_.noalias() = boom_force_.tail(n_) - boom_coupling_.transpose() * frame_known_acc_;
   Eigen::Matrix3d jr = Eigen::Matrix3d::Identity();
@@ -131,18 +155,23 @@ void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z
   minimal_forces(t, z, z_dot, true);
   if (has_cargo()) z_ddot.segment<3>(cargo_at_) = cargo_force_.cwiseQuotient(cargo_inertia());
   Eigen::Vector3d hull_a = Eigen::Vector3d::Zero();
-  if (n_ > 0) schur_rhs_ = elastic_mass_factor_.solve(elastic_rhs_);
+  if (n_ > 0 && !hull_free()) schur_rhs_ = elastic_mass_factor_.solve(elastic_rhs_);
   if (hull_free()) {
-    Eigen::Matrix3d jr = Eigen::Matrix3d::Identity();
-    jr(0, 2) = -mount_offset_.y();
-    jr(1, 2) = mount_offset_.x();
+    const Eigen::Matrix3d jr = mount_jacobian();
     Eigen::Matrix3d schur = Eigen::Matrix3d(hull_rigid_inertia().asDiagonal()) + jr.transpose() * boom_reference_mass_ * jr;
     Eigen::Vector3d rhs = hull_rhs_;
     if (n_ > 0) {
-      for (int c = 0; c < 3; ++c) {  // column by column: vector solves allocate nothing
-        schur_rhs_column_ = hull_elastic_mass_.row(c).transpose();
-        schur_columns_.col(c) = elastic_mass_factor_.solve(schur_rhs_column_);
-      }
+      // M_ff⁻¹ M_fR = M_ff⁻¹ [S̄ᵀAᵀ, −(cᵀ + S̃ᵀη)] = [(M_ff⁻¹S̄ᵀ) Aᵀ, −(M_ff⁻¹cᵀ + M_ff⁻¹S̃ᵀη)]: the first
+      // two columns and M_ff⁻¹cᵀ are constant, so one two-column solve (the right-hand side and S̃ᵀη)
+      // does what four did.
+      pair_rhs_.col(0) = elastic_rhs_;
+      pair_rhs_.col(1) = -(boom_coupling_.row(2) + m_.boom.coords().u0_cross_shape()).transpose();  // S̃ᵀη
+      pair_solution_ = elastic_mass_factor_.solve(pair_rhs_);
+      schur_rhs_ = pair_solution_.col(0);
+      const Eigen::Matrix2d frame_rotation = rotation(boom_q_(2));
+      frame_columns_.leftCols<2>().noalias() = mass_inverse_shape_ * frame_rotation.transpose();
+      frame_columns_.col(2) = -(mass_inverse_cross_ + pair_solution_.col(1));
+      schur_columns_.noalias() = frame_columns_ * jr;
       schur -= hull_elastic_mass_ * schur_columns_;
       rhs -= hull_elastic_mass_ * schur_rhs_;
     }
@@ -265,7 +294,7 @@ CraneOutputs CraneSystem<Coords>::common_outputs(const Eigen::Vector3d& hull_q, 
   const double cargo_on = has_cargo() ? 1.0 : 0.0;
   out.kinetic_energy = 0.5 * hull_v.dot(hull_rigid_inertia().cwiseProduct(hull_v)) * (hull_free() ? 1.0 : 0.0) +
                        cargo_on * 0.5 * cargo_v.dot(cargo_inertia().cwiseProduct(cargo_v)) +
-                       m_.boom.kinetic_energy(boom_q_, boom_v_);
+                       m_.boom.kinetic_energy(boom_v_, boom_reference_mass_, boom_coupling_);
   out.gravity_energy = (hull_free() ? m_.hull.mass * g * hull_q(1) : 0.0) + cargo_on * m_.cargo.mass * g * cargo_q(1) +
                        m_.boom.gravity_potential(boom_q_, Eigen::Vector2d(0.0, -g));
   out.strain_energy = m_.boom.strain_energy(boom_q_);

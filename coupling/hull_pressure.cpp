@@ -1,135 +1,186 @@
-// Hydrostatic + Froude–Krylov pressure integral over the wetted boundary of a box hull section
-// (see hull_pressure.hpp, docs/theory.md §6). Each of the four edges r(s) = a + s (b − a) is
-// wetted where y(s) < ζ(x(s), t); crossings are bracketed by 64 samples and refined by bisection,
-// and each wetted interval is split at y = 0 (where p changes formula) and into pieces ≤ 5 m
-// integrated by 8-point Gauss–Legendre. No heap allocation on the success path.
+// Hydrostatic + Froude–Krylov pressure integral over the wetted boundary of a box hull section in
+// closed form (see hull_pressure.hpp, docs/theory.md §6.2). On an edge r(s) = a + s d the incident
+// pressure is a sum of terms c·e^{λ s} with complex λ = κ d_y + i k d_x (κ = ±k below still water,
+// 0 for the crest extension) plus the linear hydrostatic part, so ∫p ds and ∫p s ds over a piece
+// [s0, s0 + h] are elementary: c h φ1(λh) and c h² ψ(λh) with φ1(z) = (e^z − 1)/z and
+// ψ(z) = ∫₀¹ v e^{zv} dv = (e^z (z − 1) + 1)/z² (power series for |z| < ½). Each piece is taken from
+// the end with the larger Re(λ s), so no exponential exceeds 1. Waterline crossings:
+// coupling/waterline_crossings.hpp. No heap allocation.
 #include "coupling/hull_pressure.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 #include <sstream>
 #include <stdexcept>
+
+#include "coupling/waterline_crossings.hpp"
 
 namespace ffrf::coupling {
 
 namespace {
 
-constexpr int samples_per_edge = 64;
-constexpr double bisection_tolerance = 1e-13;  // in the edge parameter s ∈ [0, 1]
-constexpr double max_piece_length = 5.0;       // [m]
+using Complex = std::complex<double>;
+constexpr double series_radius = 0.5;
+constexpr int series_terms = 18;  // |z|^18 / 18! < 1e-21 for |z| < ½
 
-// 8-point Gauss–Legendre on [−1, 1]: ± nodes and weights (exact for degree 15).
-constexpr std::array<double, 4> gauss_node = {0.18343464249564980494, 0.52553240991632898582,
-                                              0.79666647741362673959, 0.96028985649753623168};
-constexpr std::array<double, 4> gauss_weight = {0.36268378337836198297, 0.31370664587788728734,
-                                                0.22238103445337447054, 0.10122853629037625915};
-
-// What one evaluation needs: the wave (or calm water) and the reference point G1.
-struct PressureField {
-  const AiryWave* wave;
-  double density;
-  double gravity;
-  double t;
-
-  double surface(double x) const { return wave ? wave->elevation(x, t) : 0.0; }
-  double pressure(const Eigen::Vector2d& r) const {
-    if (wave) return wave->pressure(r.x(), r.y(), t, density);
-    return r.y() < 0.0 ? -density * gravity * r.y() : 0.0;
+// 1/n! for the power series below.
+constexpr std::array<double, series_terms> inverse_factorials() {
+  std::array<double, series_terms> out{};
+  double factorial = 1.0;
+  for (int n = 0; n < series_terms; ++n) {
+    if (n > 0) factorial *= n;
+    out[static_cast<std::size_t>(n)] = 1.0 / factorial;
   }
-  bool wet(const Eigen::Vector2d& r) const { return r.y() < surface(r.x()); }
-};
+  return out;
+}
+constexpr std::array<double, series_terms> inverse_factorial = inverse_factorials();
 
-// Running pressure moments of one edge: ∫ p ds and ∫ p (r − r_G1) ds.
+// φ1(z) = (e^z − 1)/z and ψ(z) = (e^z (z − 1) + 1)/z² (∫₀¹ e^{zv} dv and ∫₀¹ v e^{zv} dv).
+void exponential_moments(Complex z, Complex& phi1, Complex& psi) {
+  const double size = std::norm(z);  // |z|²
+  if (size < series_radius * series_radius) {  // φ1 = Σ zⁿ/(n+1)!, ψ = Σ zⁿ/(n! (n+2)), by Horner
+    // Enough terms that the first one left out, |z|ⁿ/n!, is below 1e-17: 8 for |z| < 0.01, 12 for
+    // |z| < 0.1, 14 for |z| < 0.25, else all (|z| < ½).
+    const int terms = size < 1e-4 ? 8 : size < 1e-2 ? 12 : size < 0.0625 ? 14 : series_terms;
+    phi1 = 0.0;
+    psi = 0.0;
+    for (int n = terms - 2; n >= 0; --n) {
+      phi1 = phi1 * z + inverse_factorial[static_cast<std::size_t>(n + 1)];
+      psi = psi * z + inverse_factorial[static_cast<std::size_t>(n)] / (n + 2);
+    }
+    return;
+  }
+  const double magnitude = std::exp(z.real());
+  const Complex ez(magnitude * std::cos(z.imag()), magnitude * std::sin(z.imag()));
+  const Complex inv = std::conj(z) / std::norm(z);
+  phi1 = (ez - 1.0) * inv;
+  psi = (ez * (z - 1.0) + 1.0) * inv * inv;
+}
+
+// Running pressure moments of one edge (over the edge parameter s, divided by ρg):
+// ∫ p ds, ∫ p (s − s_piece) ds accumulated into ∫ p ds and ∫ p (r − r_G1) ds / |d|.
 struct EdgeMoments {
   double p0 = 0.0;
   Eigen::Vector2d p1 = Eigen::Vector2d::Zero();
   double wetted_length = 0.0;
 };
 
-void integrate_piece(const PressureField& field, const Eigen::Vector2d& a, const Eigen::Vector2d& d,
-                     const Eigen::Vector2d& g1, double length, double s0, double s1, EdgeMoments& acc) {
-  const double piece = (s1 - s0) * length;
-  if (!(piece > 0.0)) return;
-  const int count = static_cast<int>(std::ceil(piece / max_piece_length));
-  const double h = (s1 - s0) / count;
-  for (int j = 0; j < count; ++j) {
-    const double mid = s0 + (j + 0.5) * h;
-    for (std::size_t i = 0; i < gauss_node.size(); ++i) {
-      for (const double sign : {-1.0, 1.0}) {
-        const Eigen::Vector2d r = a + (mid + sign * 0.5 * h * gauss_node[i]) * d;
-        const double w = gauss_weight[i] * 0.5 * h * length * field.pressure(r);
-        acc.p0 += w;
-        acc.p1 += w * (r - g1);
-      }
-    }
-  }
+struct Edge {
+  Eigen::Vector2d a, d;
+  double length;
+};
+
+struct PieceIntegrals {
+  double j0 = 0.0;  // ∫ p/(ρg) du over [0, h]
+  double j1 = 0.0;  // ∫ p/(ρg) u du
+};
+
+// Adds Re ∫₀ʰ c e^{λu} du and Re ∫₀ʰ u c e^{λu} du for c = amplitude·e^{κ y0 + offset + iθ0},
+// λ = κ d_y + i k d_x.
+void add_exponential(double amplitude, double kappa, double offset, double k, double theta0, double y0,
+                     const Eigen::Vector2d& d, double h, PieceIntegrals& out) {
+  Complex lambda(kappa * d.y(), k * d.x());
+  const bool from_end = lambda.real() > 0.0;  // integrate from the end with the larger exponent
+  const double y_ref = from_end ? y0 + h * d.y() : y0;
+  const double theta_ref = from_end ? theta0 + h * k * d.x() : theta0;
+  if (from_end) lambda = -lambda;
+  const double magnitude = amplitude * std::exp(kappa * y_ref + offset);
+  const Complex c(magnitude * std::cos(theta_ref), magnitude * std::sin(theta_ref));
+  Complex phi1, psi;
+  exponential_moments(lambda * h, phi1, psi);
+  const double i0 = h * (c * phi1).real();
+  const double i1 = h * h * (c * psi).real();
+  out.j0 += i0;
+  out.j1 += from_end ? h * i0 - i1 : i1;  // u = h − v on the reversed piece
 }
 
-// Wetted interval [s0, s1] of an edge: split where y(s) = 0 (p is only C⁰ there, the dynamic part
-// switches from the Airy decay to the hydrostatic extension), then integrate.
-void integrate_wetted(const PressureField& field, const Eigen::Vector2d& a, const Eigen::Vector2d& d,
-                      const Eigen::Vector2d& g1, double length, double s0, double s1, EdgeMoments& acc) {
-  acc.wetted_length += (s1 - s0) * length;
-  if (d.y() != 0.0) {
-    const double s_still = -a.y() / d.y();
+// ∫ p/(ρg) over the wetted piece [s0, s1] of an edge, below (airy) or above still water.
+PieceIntegrals piece_integrals(const WaveField* wave, double t, const Edge& edge, double s0, double s1, bool airy) {
+  const double h = s1 - s0;
+  const double y0 = edge.a.y() + s0 * edge.d.y();
+  PieceIntegrals out;
+  out.j0 = -(y0 * h + 0.5 * edge.d.y() * h * h);                 // hydrostatic −y
+  out.j1 = -(0.5 * y0 * h * h + edge.d.y() * h * h * h / 3.0);
+  if (wave == nullptr) return out;
+  const double ramp = wave->ramp(t);
+  if (ramp == 0.0) return out;
+  const double x0 = edge.a.x() + s0 * edge.d.x();
+  const double depth = wave->depth();
+  for (const WaveComponent& c : wave->components()) {
+    const double amplitude = ramp * c.amplitude;
+    const double k = c.wave_number;
+    const double theta0 = k * x0 - wave->direction() * c.angular_frequency * t + c.phase;
+    if (!airy) {  // crest extension: ρg ζ, no decay
+      add_exponential(amplitude, 0.0, 0.0, k, theta0, y0, edge.d, h, out);
+    } else if (wave->deep()) {  // e^{ky}
+      add_exponential(amplitude, k, 0.0, k, theta0, y0, edge.d, h, out);
+    } else {  // cosh(k(y + d))/cosh(kd) = (e^{ky} + e^{−k(y + 2d)}) / (1 + e^{−2kd})
+      const double scale = amplitude / (1.0 + std::exp(-2.0 * k * depth));
+      add_exponential(scale, k, 0.0, k, theta0, y0, edge.d, h, out);
+      add_exponential(scale, -k, -2.0 * k * depth, k, theta0, y0, edge.d, h, out);
+    }
+  }
+  return out;
+}
+
+// Wetted interval [s0, s1]: split where y(s) = 0 (p changes formula there), then integrate.
+void integrate_wetted(const WaveField* wave, double t, const Edge& edge, const Eigen::Vector2d& g1, double s0,
+                      double s1, EdgeMoments& acc) {
+  if (!(s1 > s0)) return;
+  acc.wetted_length += (s1 - s0) * edge.length;
+  std::array<double, 3> cuts = {s0, s1, s1};
+  int pieces = 1;
+  if (edge.d.y() != 0.0) {
+    const double s_still = -edge.a.y() / edge.d.y();
     if (s_still > s0 && s_still < s1) {
-      integrate_piece(field, a, d, g1, length, s0, s_still, acc);
-      integrate_piece(field, a, d, g1, length, s_still, s1, acc);
-      return;
+      cuts = {s0, s_still, s1};
+      pieces = 2;
     }
   }
-  integrate_piece(field, a, d, g1, length, s0, s1, acc);
-}
-
-// Bisection on [lo, hi] where wet(lo) == lo_wet != wet(hi).
-double crossing(const PressureField& field, const Eigen::Vector2d& a, const Eigen::Vector2d& d, double lo,
-                double hi, bool lo_wet) {
-  while (hi - lo > bisection_tolerance) {
-    const double mid = 0.5 * (lo + hi);
-    (field.wet(a + mid * d) == lo_wet ? lo : hi) = mid;
+  for (int i = 0; i < pieces; ++i) {
+    const double lo = cuts[static_cast<std::size_t>(i)], hi = cuts[static_cast<std::size_t>(i + 1)];
+    const bool airy = edge.a.y() + 0.5 * (lo + hi) * edge.d.y() <= 0.0;
+    const PieceIntegrals piece = piece_integrals(wave, t, edge, lo, hi, airy);
+    acc.p0 += piece.j0;
+    acc.p1 += piece.j0 * (edge.a + lo * edge.d - g1) + piece.j1 * edge.d;
   }
-  return 0.5 * (lo + hi);
 }
 
-EdgeMoments edge_moments(const PressureField& field, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
-                         const Eigen::Vector2d& g1) {
+EdgeMoments edge_moments(const WaveField* wave, double t, const Edge& edge, const Eigen::Vector2d& g1) {
   EdgeMoments acc;
-  const Eigen::Vector2d d = b - a;
-  const double length = d.norm();
-  if (!field.wave) {  // calm water: y(s) is linear, the waterline crossing is exact
-    const double ya = a.y(), yb = b.y();
+  const double ya = edge.a.y(), yb = edge.a.y() + edge.d.y();
+  const double bound = wave ? wave->elevation_bound(t) : 0.0;
+  if (std::max(ya, yb) < -bound) {  // wholly below the troughs: wet
+    integrate_wetted(wave, t, edge, g1, 0.0, 1.0, acc);
+    return acc;
+  }
+  if (std::min(ya, yb) > bound) return acc;  // wholly above the crests: dry
+  if (bound == 0.0) {  // calm water (or not yet ramped in): y(s) is linear, the crossing is exact
     if (ya >= 0.0 && yb >= 0.0) return acc;
     if (ya < 0.0 && yb < 0.0) {
-      integrate_wetted(field, a, d, g1, length, 0.0, 1.0, acc);
+      integrate_wetted(wave, t, edge, g1, 0.0, 1.0, acc);
     } else {
       const double s_cross = ya / (ya - yb);
-      if (ya < 0.0) integrate_wetted(field, a, d, g1, length, 0.0, s_cross, acc);
-      else integrate_wetted(field, a, d, g1, length, s_cross, 1.0, acc);
+      if (ya < 0.0) integrate_wetted(wave, t, edge, g1, 0.0, s_cross, acc);
+      else integrate_wetted(wave, t, edge, g1, s_cross, 1.0, acc);
     }
     return acc;
   }
-  // |ζ| ≤ ζ_a r(t): an edge wholly below the troughs is wet, one wholly above the crests is dry.
-  const double bound = std::abs(field.wave->amplitude * field.wave->ramp(field.t));
-  if (std::max(a.y(), b.y()) < -bound) {
-    integrate_wetted(field, a, d, g1, length, 0.0, 1.0, acc);
-    return acc;
+  const WaterlineCrossings crossings = waterline_crossings(*wave, t, edge.a, edge.d);
+  if (crossings.truncated) {
+    throw std::domain_error("hull_pressure_load: more than " + std::to_string(WaterlineCrossings::max_crossings) +
+                            " waterline crossings on one hull edge (wave components far shorter than the hull)");
   }
-  if (std::min(a.y(), b.y()) > bound) return acc;
-  double prev_s = 0.0, wet_start = 0.0;
-  bool prev_wet = field.wet(a);
-  for (int i = 1; i <= samples_per_edge; ++i) {
-    const double s = static_cast<double>(i) / samples_per_edge;
-    const bool wet = field.wet(a + s * d);
-    if (wet != prev_wet) {
-      const double root = crossing(field, a, d, prev_s, s, prev_wet);
-      if (wet) wet_start = root;
-      else integrate_wetted(field, a, d, g1, length, wet_start, root, acc);
-    }
-    prev_s = s;
-    prev_wet = wet;
+  bool wet = crossings.wet_at_start;
+  double wet_start = 0.0;
+  for (int i = 0; i < crossings.count; ++i) {
+    const double s = crossings.s[static_cast<std::size_t>(i)];
+    if (wet) integrate_wetted(wave, t, edge, g1, wet_start, s, acc);
+    else wet_start = s;
+    wet = !wet;
   }
-  if (prev_wet) integrate_wetted(field, a, d, g1, length, wet_start, 1.0, acc);
+  if (wet) integrate_wetted(wave, t, edge, g1, wet_start, 1.0, acc);
   return acc;
 }
 
@@ -142,7 +193,7 @@ void check_box(const BoxHullSection& hull) {
 
 }  // namespace
 
-HullLoad hull_pressure_load(const BoxHullSection& hull, const AiryWave* wave, double water_density,
+HullLoad hull_pressure_load(const BoxHullSection& hull, const WaveField* wave, double water_density,
                             double gravity, const Eigen::Vector2d& g1_position, double pitch, double t) {
   if (!g1_position.allFinite() || !std::isfinite(pitch) || !std::isfinite(t)) {
     std::ostringstream message;
@@ -154,25 +205,28 @@ HullLoad hull_pressure_load(const BoxHullSection& hull, const AiryWave* wave, do
   check_box(hull);
   if (!(water_density > 0.0) || !(gravity > 0.0) || !std::isfinite(water_density) || !std::isfinite(gravity))
     throw std::invalid_argument("hull_pressure_load: water density and gravity must be finite and > 0");
-  if (wave && !(std::abs(wave->gravity - gravity) <= 1e-12 * gravity))
+  if (wave && !(std::abs(wave->gravity() - gravity) <= 1e-12 * gravity))
     throw std::invalid_argument("hull_pressure_load: the wave's gravity differs from the system's");
 
-  const PressureField field{wave, water_density, gravity, t};
   const double c = std::cos(pitch), s = std::sin(pitch);
   const auto place = [&](double x, double y) { return Eigen::Vector2d(g1_position.x() + c * x - s * y, g1_position.y() + s * x + c * y); };
   // Counter-clockwise: keel aft → keel fore → deck fore → deck aft; outward normal = (d_y, −d_x)/|d|.
   const std::array<Eigen::Vector2d, 4> corner = {place(hull.aft_x, hull.keel_y), place(hull.fore_x, hull.keel_y),
                                                  place(hull.fore_x, hull.deck_y), place(hull.aft_x, hull.deck_y)};
+  const double rho_g = water_density * gravity;
   HullLoad load;
   for (std::size_t e = 0; e < corner.size(); ++e) {
     const Eigen::Vector2d& a = corner[e];
-    const Eigen::Vector2d& b = corner[(e + 1) % corner.size()];
-    const EdgeMoments m = edge_moments(field, a, b, g1_position);
+    const Eigen::Vector2d d = corner[(e + 1) % corner.size()] - a;
+    const Edge edge{a, d, d.norm()};
+    const EdgeMoments m = edge_moments(wave, t, edge, g1_position);
     if (m.wetted_length == 0.0) continue;
-    const Eigen::Vector2d d = b - a;
-    const Eigen::Vector2d n = Eigen::Vector2d(d.y(), -d.x()) / d.norm();
-    load.force -= hull.width * m.p0 * n;
-    load.moment -= hull.width * (m.p1.x() * n.y() - m.p1.y() * n.x());
+    const Eigen::Vector2d n = Eigen::Vector2d(d.y(), -d.x()) / edge.length;
+    // ∫ p dℓ = |d| ρg ∫ p/(ρg) ds, likewise for the moment arm.
+    const double p0 = rho_g * edge.length * m.p0;
+    const Eigen::Vector2d p1 = rho_g * edge.length * m.p1;
+    load.force -= hull.width * p0 * n;
+    load.moment -= hull.width * (p1.x() * n.y() - p1.y() * n.x());
     load.wetted_length += m.wetted_length;
   }
   return load;

@@ -1,8 +1,9 @@
 // Nonlinear hydrostatic + Froude–Krylov load on a box-shaped hull section: the total incident
-// pressure (coupling/airy_wave.hpp; calm water when wave == nullptr) integrated over the hull's
+// pressure (coupling/wave_field.hpp; calm water when wave == nullptr) integrated over the hull's
 // instantaneous wetted boundary below the incident wave profile. The box (in the hull frame, origin
-// at G1) is clipped by the wave surface: each edge is split where it crosses ζ(x, t) (sampling +
-// bisection) and the pressure is integrated on each wetted piece by Gauss–Legendre quadrature.
+// at G1) is clipped by the wave surface: each edge is split where it crosses ζ(x, t)
+// (coupling/waterline_crossings.hpp) and the pressure, a sum of exponentials along a straight edge,
+// is integrated on each wetted piece in closed form (linear cost in the wave component count).
 // F = −B ∮ p n ds (B the width normal to the plane, n the outward normal),
 // M = −B ∮ p (r − r_G1) × n ds about G1 (planar cross product a × b = a_x b_y − a_y b_x).
 // Carries hydrostatics and the incident-wave (Froude–Krylov) excitation only; radiation and
@@ -11,7 +12,7 @@
 
 #include <Eigen/Dense>
 
-#include "coupling/airy_wave.hpp"
+#include "coupling/wave_field.hpp"
 
 namespace ffrf::coupling {
 
@@ -30,12 +31,11 @@ struct HullLoad {
 };
 
 // pose: G1 position (x, y) in the global frame and pitch θ; t the time for the wave. Hull frame
-// point c maps to g1_position + A(θ) c. With a wave, its pressure uses wave->gravity, which must
+// point c maps to g1_position + A(θ) c. With a wave, its pressure uses wave->gravity(), which must
 // equal `gravity` (std::invalid_argument otherwise). Allocates nothing on success. Throws
-// std::domain_error (pose in the message) if the pose or t is not finite, std::invalid_argument
-// on a degenerate box. Edges are sampled 64 times: wave crests closer than ~2 × edge/64 along one
-// edge would be missed (never for the reference scene: λ = 156 m, hull 90 m).
-HullLoad hull_pressure_load(const BoxHullSection& hull, const AiryWave* wave, double water_density,
+// std::domain_error (pose in the message) if the pose or t is not finite, or if one edge crosses
+// the surface more than 64 times; std::invalid_argument on a degenerate box.
+HullLoad hull_pressure_load(const BoxHullSection& hull, const WaveField* wave, double water_density,
                             double gravity, const Eigen::Vector2d& g1_position, double pitch, double t);
 
 // Linear calm-water hydrostatic restoring coefficients of the box floating at even keel with

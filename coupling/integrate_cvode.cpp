@@ -1,12 +1,13 @@
-// CVODE (variable-order BDF, Newton iteration with a dense Jacobian) on the minimal-coordinate ODE
-// y = (z, ż), ẏ = (ż, M_z⁻¹Q_z). The wire's slack/taut transitions are located by CVODE's root
-// finding on ℓ − L0 and counted.
-// The Jacobian is a forward difference with increments δ_j = 10⁻⁷·max(|y_j|, 1), supplied here
-// rather than SUNDIALS' built-in one: that one scales its increment with |y_j| and the error
-// weights, and at rest (ż = 0) the velocity columns — which carry the stiff structural damping
-// −βKη̇ — get increments at round-off level; the resulting Jacobian made Newton fail on nearly
-// every step from N = 8 elements on (6104 steps and 3812 Jacobians for 1 s at N = 8, against 35
-// steps and 1 Jacobian with this one).
+// CVODE (variable-order BDF, Newton iteration) on the minimal-coordinate ODE y = (z, ż),
+// ẏ = (ż, M_z⁻¹Q_z). The wire's slack/taut transitions are located by CVODE's root finding on ℓ − L0
+// and counted.
+// Newton systems: the structured solve of coupling/second_order_newton.hpp — S = M + γD + γ²K from
+// the equations' own blocks (CraneEquations::minimal_jacobian: analytic elastic columns, differences
+// of the residual for the hull and cargo columns only), bordered band for a nodal boom, dense for a
+// modal one — instead of SUNDIALS' dense LU of the (2n)² I − γJ with a difference-quotient J.
+// Outputs: the state at an output time is CVODE's interpolant, and the accelerations the joint
+// reaction needs are its derivative (CVodeGetDky, k = 1), so no right-hand side is evaluated per
+// sample (docs/theory.md §8.1).
 #include <cvode/cvode.h>
 #include <cvode/cvode_ls.h>
 
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <string>
 
+#include "coupling/second_order_newton.hpp"
 #include "coupling/simulation.hpp"
 #include "coupling/sundials_support.hpp"
 
@@ -24,7 +26,6 @@ namespace {
 struct OdeData {
   CraneEquations* equations;
   int size;
-  long jacobian_rhs_evaluations = 0;
   std::string model_error;  // an exception the model threw inside a callback (never crosses C code)
   FailureKind model_error_kind = FailureKind::model_error;
 };
@@ -46,22 +47,18 @@ int ode_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
   return rate.allFinite() ? 0 : 1;
 }
 
-int ode_jacobian(sunrealtype t, N_Vector y, N_Vector f_y, SUNMatrix jacobian, void* user, N_Vector work_y, N_Vector work_f,
-                 N_Vector) {
-  auto* data = static_cast<OdeData*>(user);
+// The structured Newton blocks at a state (coupling/second_order_newton.hpp).
+int newton_blocks(OdeData& data, double t, CraneEquations::ConstRef z, CraneEquations::ConstRef z_dot,
+                  CraneEquations::ConstRef z_ddot, SecondOrderJacobian& blocks) {
+  if (!z.allFinite() || !z_dot.allFinite() || !z_ddot.allFinite()) return 1;
   try {
-    const int flag = sundials::second_order_jacobian(t, y, f_y, jacobian, work_y, work_f,
-                                                     [data](double s, auto x, auto x_dot, auto a) {
-                                                       data->equations->minimal_accelerations(s, x, x_dot, a);
-                                                       return true;
-                                                     });
-    if (flag == 0) data->jacobian_rhs_evaluations += 2 * data->size;
-    return flag;
+    data.equations->minimal_jacobian(t, z, z_dot, z_ddot, blocks);
   } catch (const std::exception& error) {
-    data->model_error = error.what();
-    data->model_error_kind = model_failure_kind(error);
+    data.model_error = error.what();
+    data.model_error_kind = model_failure_kind(error);
     return -1;
   }
+  return 0;
 }
 
 int wire_root(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
@@ -95,13 +92,16 @@ RunResult integrate_minimal(CraneEquations& equations, const Eigen::VectorXd& z0
   tolerance.map().head(n) = settings.absolute_tolerance * scale;
   tolerance.map().tail(n) = settings.absolute_tolerance * scale;
 
-  OdeData data{&equations, n, 0, {}, FailureKind::model_error};
+  OdeData data{&equations, n, {}, FailureKind::model_error};
+  sundials::SecondOrderNewton newton(equations.minimal_structure(), context.ctx,
+                                     [&data](double t, auto z, auto z_dot, auto z_ddot, SecondOrderJacobian& blocks) {
+                                       return newton_blocks(data, t, z, z_dot, z_ddot, blocks);
+                                     });
   std::unique_ptr<void, void (*)(void*)> memory(CVodeCreate(CV_BDF, context.ctx), [](void* p) { CVodeFree(&p); });
   void* cvode = memory.get();
-  sundials::DenseSolver linear(y.v, context.ctx);
   if (CVodeInit(cvode, ode_rhs, 0.0, y.v) != CV_SUCCESS || CVodeSVtolerances(cvode, settings.relative_tolerance, tolerance.v) != CV_SUCCESS ||
-      CVodeSetUserData(cvode, &data) != CV_SUCCESS || CVodeSetLinearSolver(cvode, linear.solver, linear.matrix) != CV_SUCCESS ||
-      CVodeSetJacFn(cvode, ode_jacobian) != CV_SUCCESS ||
+      CVodeSetUserData(cvode, &data) != CV_SUCCESS || CVodeSetLinearSolver(cvode, newton.solver(), newton.matrix()) != CV_SUCCESS ||
+      CVodeSetLinSysFn(cvode, sundials::SecondOrderNewton::linear_system) != CV_SUCCESS ||
       CVodeSetMaxNumSteps(cvode, settings.max_steps) != CV_SUCCESS || CVodeSetMaxOrd(cvode, settings.max_order) != CV_SUCCESS || CVodeRootInit(cvode, 1, wire_root) != CV_SUCCESS) {
     throw SolverFailure(FailureKind::setup, "CVODE", "set-up failed", 0.0, "report this as a bug");
   }
@@ -109,10 +109,17 @@ RunResult integrate_minimal(CraneEquations& equations, const Eigen::VectorXd& z0
 
   RunResult result;
   DivergenceWatch watch(settings.monitor, "CVODE");
+  sundials::Vector derivative(2 * n, context.ctx);
   const auto record = [&](double t) {
     const auto state = y.map();
     result.time.push_back(t);
-    result.samples.push_back(equations.minimal_outputs(t, state.head(n), state.tail(n)));
+    // At t = 0 CVODE has no interpolant yet: the one sample that solves for the accelerations.
+    if (t > 0.0 && CVodeGetDky(cvode, t, 1, derivative.v) == CV_SUCCESS) {
+      result.samples.push_back(
+          equations.minimal_outputs_with_accelerations(t, state.head(n), state.tail(n), derivative.map().tail(n)));
+    } else {
+      result.samples.push_back(equations.minimal_outputs(t, state.head(n), state.tail(n)));
+    }
     watch.observe(t, result.samples.back());
   };
   sundials::sample_outputs_keeping_partial(
@@ -133,7 +140,8 @@ RunResult integrate_minimal(CraneEquations& equations, const Eigen::VectorXd& z0
       record,
       result.wire_events);
 
-  sundials::cvode_statistics(cvode, data.jacobian_rhs_evaluations, result.stats);
+  sundials::cvode_statistics(cvode, 0, result.stats);
+  result.stats.function_evaluations += result.stats.jacobian_evaluations * equations.minimal_jacobian_evaluations();
   result.stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -3,14 +3,18 @@
 // step solves M(q)q̈ − Q(q, v, t) + C_qᵀλ = 0, C(q)/(βh²) = 0 at t_{n+1} for (q̈_{n+1}, λ_{n+1}) with
 //   (1−α_m) a_{n+1} + α_m a_n = (1−α_f) q̈_{n+1} + α_f q̈_n,
 //   q_{n+1} = q_n + h v_n + h²(½−β) a_n + h²β a_{n+1},   v_{n+1} = v_n + h(1−γ) a_n + hγ a_{n+1},
-// by modified Newton with a dense finite-difference iteration matrix kept across steps while
-// Newton converges in ≤ 4 iterations. The step is rounded down to divide the output interval, so
-// every output is a step (no interpolation).
+// by modified Newton with an iteration matrix kept across steps while Newton converges in ≤ 4
+// iterations. The iteration matrix ∂r/∂(q̈, λ) = [M + γ'D + β'(K + H_λ), C_qᵀ; C_q β'/(βh²), 0]
+// (β' = ∂q/∂q̈, γ' = ∂v/∂q̈, K, D, M from CraneEquations::full_jacobian, H_λ = ∂(C_qᵀλ)/∂q) keeps the
+// bordered band structure with λ in the border (coupling/constrained_newton.hpp): its cost is linear
+// in the element count. The step is rounded down to divide the output interval, so every output is a
+// step (no interpolation).
 #include <Eigen/LU>
 #include <chrono>
 #include <cmath>
 #include <limits>
 
+#include "coupling/constrained_newton.hpp"
 #include "coupling/simulation.hpp"
 #include "coupling/sundials_support.hpp"
 
@@ -36,14 +40,13 @@ class GeneralizedAlpha {
     gamma_prime_ = h * gamma_ * (1.0 - alpha_f_) / (1.0 - alpha_m_);    // ∂v_{n+1}/∂q̈_{n+1}
     const int m = n_ + constraints;
     for (Eigen::VectorXd* x : {&q_, &v_, &a_, &acc_, &q1_, &v1_, &a1_, &x_acc_, &mass_times_, &forces_, &scale_,
-                               &weight_q_, &weight_v_}) {
+                               &weight_q_, &weight_v_, &acc_step_}) {
       x->setZero(n_);
     }
     r_.setZero(m);
-    r_probe_.setZero(m);
     delta_.setZero(m);
-    matrix_.setZero(m, m);
-    lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(m);
+    matrix_ = ConstrainedNewtonMatrix(equations.full_structure(), constraints);
+    blocks_ = SecondOrderJacobian(equations.full_structure());
     jacobian_.setZero(constraints, n_);
     lambda_.setZero();
   }
@@ -55,20 +58,7 @@ class GeneralizedAlpha {
     Eigen::VectorXd ignore(n_);
     eq_.full_from_minimal(0.0, minimal_scale, minimal_scale, scale_, ignore);
     scale_ = scale_.cwiseAbs().cwiseMax(Eigen::VectorXd::Constant(n_, 1e-2));
-    Eigen::MatrixXd augmented = Eigen::MatrixXd::Zero(n_ + constraints, n_ + constraints);
-    augmented.topLeftCorner(n_, n_) = eq_.full_mass_matrix(q_);
-    eq_.constraint_jacobian(q_, jacobian_);
-    augmented.topRightCorner(n_, constraints) = jacobian_.transpose();
-    augmented.bottomLeftCorner(constraints, n_) = jacobian_;
-    Eigen::VectorXd rhs(n_ + constraints);
-    eq_.full_forces(0.0, q_, v_, forces_);
-    rhs.head(n_) = forces_;
-    Eigen::Vector3d gamma;
-    eq_.constraint_rate_terms(0.0, q_, v_, gamma);
-    rhs.tail(constraints) = gamma;
-    const Eigen::VectorXd solution = augmented.partialPivLu().solve(rhs);
-    acc_ = solution.head(n_);
-    lambda_ = solution.tail(constraints);
+    consistent_accelerations(eq_, 0.0, q_, v_, acc_, lambda_);
     a_ = acc_;
     stretch_ = eq_.wire_stretch_full(q_);
   }
@@ -91,9 +81,12 @@ class GeneralizedAlpha {
         since_refresh = 0;
         previous = std::numeric_limits<double>::infinity();
       }
-      delta_.noalias() = lu_.solve(r_);
-      x_acc_ -= delta_.head(n_);
-      x_lambda_ -= delta_.tail<constraints>();
+      matrix_.pack(r_.head(n_), r_.tail<constraints>(), delta_);
+      matrix_.solve(delta_);
+      Eigen::Vector3d lambda_step;
+      matrix_.unpack(delta_, acc_step_, lambda_step);
+      x_acc_ -= acc_step_;
+      x_lambda_ -= lambda_step;
       ++iterations;
       ++since_refresh;
       ++stats_.newton_iterations;
@@ -149,32 +142,34 @@ class GeneralizedAlpha {
     ++stats_.function_evaluations;
   }
 
-  // Dense iteration matrix: q̈ columns by forward differences of the residual (r_ holds the base
-  // residual), λ columns analytic [C_qᵀ; 0].
+  // The structured iteration matrix at the trial state (see the file comment).
   void form_matrix(double t1) {
-    const double root_eps = std::sqrt(std::numeric_limits<double>::epsilon());
-    for (int j = 0; j < n_; ++j) {
-      const double saved = x_acc_(j);
-      const double increment = root_eps * std::max(std::abs(saved), std::max(std::abs(q1_(j)), scale_(j)) / beta_prime_);
-      x_acc_(j) = saved + increment;
-      residual(t1, x_acc_, x_lambda_, r_probe_);
-      matrix_.col(j) = (r_probe_ - r_) / increment;
-      x_acc_(j) = saved;
-    }
     kinematics(x_acc_);
-    eq_.constraint_jacobian(q1_, jacobian_);
-    matrix_.topRightCorner(n_, constraints) = jacobian_.transpose();
-    matrix_.bottomRightCorner<constraints, constraints>().setZero();
-    lu_.compute(matrix_);
+    eq_.full_jacobian(t1, q1_, v1_, x_acc_, blocks_);
+    curvature_.evaluate(eq_, q1_, scale_);
+    matrix_.assign_coordinate_block(1.0, blocks_.mass, gamma_prime_, blocks_.damping, beta_prime_, blocks_.stiffness);
+    const int b = curvature_.border;
+    const double constraint_row = beta_prime_ / (beta_ * h_ * h_);
+    for (int j = 0; j < b; ++j) {
+      for (int i = 0; i < b; ++i) matrix_.at(matrix_.reduced(i), matrix_.reduced(j)) += beta_prime_ * curvature_.transpose_product(x_lambda_, i, j);
+      for (int k = 0; k < constraints; ++k) {
+        matrix_.at(matrix_.reduced(j), matrix_.reduced_extra(k)) = curvature_.jacobian(k, j);
+        matrix_.at(matrix_.reduced_extra(k), matrix_.reduced(j)) = constraint_row * curvature_.jacobian(k, j);
+      }
+    }
+    if (!matrix_.factorize()) throw SolverFailure(FailureKind::newton_divergence, solver_name, "the iteration matrix is singular",
+                                                  t1, "reduce --step (now " + std::to_string(h_) + " s)");
     ++stats_.jacobian_evaluations;
+    ++stats_.linear_setups;
+    stats_.function_evaluations += eq_.full_jacobian_evaluations();
   }
 
   // Largest WRMS norm of the position and velocity corrections the q̈ correction implies.
   double correction_norm() {
     weight_q_ = settings_.relative_tolerance * q1_.cwiseAbs() + settings_.absolute_tolerance * scale_;
     weight_v_ = settings_.relative_tolerance * v1_.cwiseAbs() + settings_.absolute_tolerance * scale_;
-    const double nq = (beta_prime_ * delta_.head(n_).cwiseQuotient(weight_q_)).norm();
-    const double nv = (gamma_prime_ * delta_.head(n_).cwiseQuotient(weight_v_)).norm();
+    const double nq = (beta_prime_ * acc_step_.cwiseQuotient(weight_q_)).norm();
+    const double nv = (gamma_prime_ * acc_step_.cwiseQuotient(weight_v_)).norm();
     return std::max(nq, nv) / std::sqrt(static_cast<double>(n_));
   }
 
@@ -192,9 +187,11 @@ class GeneralizedAlpha {
   Eigen::VectorXd q_, v_, a_, acc_;  // state at t_n (acc_ = q̈_n, a_ the auxiliary acceleration)
   Eigen::Vector3d lambda_, x_lambda_;
   Eigen::VectorXd q1_, v1_, a1_, x_acc_;  // trial values at t_{n+1}
-  Eigen::VectorXd mass_times_, forces_, scale_, weight_q_, weight_v_, r_, r_probe_, delta_;
-  Eigen::MatrixXd jacobian_, matrix_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  Eigen::VectorXd mass_times_, forces_, scale_, weight_q_, weight_v_, r_, delta_, acc_step_;
+  Eigen::MatrixXd jacobian_;
+  SecondOrderJacobian blocks_;
+  ConstraintCurvature curvature_;
+  ConstrainedNewtonMatrix matrix_;
   bool need_matrix_ = true;
   double stretch_ = 0.0;
 };

@@ -1,10 +1,12 @@
-// IDA (variable-order BDF for DAEs, dense difference-quotient Jacobian) on the crane in full
-// coordinates with the clamp at B as constraints, in the stabilized index-2 form of Gear, Gupta &
-// Leimkuhler (1985):
+// IDA (variable-order BDF for DAEs) on the crane in full coordinates with the clamp at B as
+// constraints, in the stabilized index-2 form of Gear, Gupta & Leimkuhler (1985):
 //   q̇ − v + C_qᵀμ = 0,   M(q) v̇ − Q(q, v, t) + C_qᵀλ = 0,   C(q, t) = 0,   C_q v + C_t = 0,
 // with λ, μ algebraic and excluded from the error test (IDASetSuppressAlg). μ vanishes on the
 // exact solution and keeps the position constraint from drifting. Consistent initial values come
 // from the augmented system [M C_qᵀ; C_q 0][v̇; λ] = [Q; −(C_q v)_q v].
+// Newton systems: the structured solve of coupling/ida_newton.hpp (bordered band, linear in the
+// element count). Outputs: λ at an output time from the state and IDA's interpolated v̇ (IDAGetDky),
+// by least squares on C_qᵀλ = Q − M v̇ — no solve per sample.
 #include <ida/ida.h>
 #include <ida/ida_ls.h>
 
@@ -12,6 +14,8 @@
 #include <cmath>
 #include <string>
 
+#include "coupling/constrained_newton.hpp"
+#include "coupling/ida_newton.hpp"
 #include "coupling/simulation.hpp"
 #include "coupling/sundials_support.hpp"
 
@@ -62,26 +66,6 @@ int wire_root(sunrealtype, N_Vector y, N_Vector, sunrealtype* g, void* user) {
   return 0;
 }
 
-// v̇ and λ from the augmented system [M C_qᵀ; C_q 0][v̇; λ] = [Q; γ] at (t, q, v).
-void consistent_accelerations(CraneEquations& equations, DaeData& d, double t, CraneEquations::ConstRef q,
-                              CraneEquations::ConstRef v, CraneEquations::Ref v_dot, CraneEquations::Ref lambda) {
-  const int n = d.size;
-  Eigen::MatrixXd augmented = Eigen::MatrixXd::Zero(n + constraints, n + constraints);
-  augmented.topLeftCorner(n, n) = equations.full_mass_matrix(q);
-  equations.constraint_jacobian(q, d.jacobian);
-  augmented.topRightCorner(n, constraints) = d.jacobian.transpose();
-  augmented.bottomLeftCorner(constraints, n) = d.jacobian;
-  Eigen::VectorXd rhs(n + constraints);
-  equations.full_forces(t, q, v, d.forces);
-  rhs.head(n) = d.forces;
-  Eigen::Vector3d gamma;
-  equations.constraint_rate_terms(t, q, v, gamma);
-  rhs.tail(constraints) = gamma;
-  const Eigen::VectorXd solution = augmented.partialPivLu().solve(rhs);
-  v_dot = solution.head(n);
-  lambda = solution.tail(constraints);
-}
-
 std::string remedy_for(int flag) {
   switch (flag) {
     case IDA_TOO_MUCH_WORK: return "raise the step limit or loosen --rtol/--atol";
@@ -108,7 +92,7 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
   s.setZero();
   s_dot.setZero();
   equations.full_from_minimal(0.0, z0, Eigen::VectorXd::Zero(z0.size()), s.head(n), s.segment(n, n));
-  consistent_accelerations(equations, data, 0.0, s.head(n), s.segment(n, n), s_dot.segment(n, n), s.segment(2 * n, constraints));
+  consistent_accelerations(equations, 0.0, s.head(n), s.segment(n, n), s_dot.segment(n, n), s.segment<constraints>(2 * n));
   s_dot.head(n) = s.segment(n, n);
 
   // Tolerances and the differential/algebraic split.
@@ -124,11 +108,12 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
   kind.head(2 * n).setOnes();
   kind.tail(2 * constraints).setZero();
 
+  sundials::IndexTwoNewton newton(equations, context.ctx, full_scale);
   std::unique_ptr<void, void (*)(void*)> memory(IDACreate(context.ctx), [](void* p) { IDAFree(&p); });
   void* ida = memory.get();
-  sundials::DenseSolver linear(y.v, context.ctx);
   if (IDAInit(ida, dae_residual, 0.0, y.v, y_dot.v) != IDA_SUCCESS || IDASVtolerances(ida, settings.relative_tolerance, tolerance.v) != IDA_SUCCESS ||
-      IDASetUserData(ida, &data) != IDA_SUCCESS || IDASetLinearSolver(ida, linear.solver, linear.matrix) != IDA_SUCCESS ||
+      IDASetUserData(ida, &data) != IDA_SUCCESS || IDASetLinearSolver(ida, newton.solver(), newton.matrix()) != IDA_SUCCESS ||
+      IDASetJacFn(ida, sundials::IndexTwoNewton::jacobian) != IDA_SUCCESS ||
       IDASetId(ida, id.v) != IDA_SUCCESS || IDASetSuppressAlg(ida, SUNTRUE) != IDA_SUCCESS ||
       IDASetMaxNumSteps(ida, settings.max_steps) != IDA_SUCCESS || IDASetMaxOrd(ida, settings.max_order) != IDA_SUCCESS || IDARootInit(ida, 1, wire_root) != IDA_SUCCESS) {
     throw SolverFailure(FailureKind::setup, "IDA", "set-up failed", 0.0, "report this as a bug");
@@ -137,13 +122,17 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
 
   RunResult result;
   DivergenceWatch watch(settings.monitor, "IDA");
-  Eigen::VectorXd lambda(constraints), v_dot(n);
+  Eigen::Vector3d lambda = s.segment<constraints>(2 * n);
+  sundials::Vector derivative(total, context.ctx);
   const auto record = [&](double t) {
     const auto state = y.map();
-    // λ at the output time from the state, not IDA's interpolant of the algebraic λ: λ is left out of
-    // the error test, and where the differential states are polynomials in t (a hub spinning at a
-    // constant rate) IDA's steps grow long while the reaction still turns with the hub.
-    consistent_accelerations(equations, data, t, state.head(n), state.segment(n, n), v_dot, lambda);
+    // λ at the output time from the state and v̇, not IDA's interpolant of the algebraic λ: λ is left
+    // out of the error test, and where the differential states are polynomials in t (a hub spinning
+    // at a constant rate) IDA's steps grow long while the reaction still turns with the hub. v̇ is the
+    // derivative of IDA's interpolant of v (a differential variable under error control).
+    if (t > 0.0 && IDAGetDky(ida, t, 1, derivative.v) == IDA_SUCCESS) {
+      multipliers_from_accelerations(equations, t, state.head(n), state.segment(n, n), derivative.map().segment(n, n), lambda);
+    }
     result.time.push_back(t);
     result.samples.push_back(equations.full_outputs(t, state.head(n), state.segment(n, n), lambda));
     watch.observe(t, result.samples.back());
@@ -157,8 +146,10 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
         return direction;
       },
       [&](int flag, double t) {
-        if (!data.model_error.empty()) {
-          throw SolverFailure(data.model_error_kind, "IDA", "the model failed: " + data.model_error, t,
+        if (!data.model_error.empty() || !newton.model_error().empty()) {
+          const bool in_residual = !data.model_error.empty();
+          throw SolverFailure(in_residual ? data.model_error_kind : newton.model_error_kind(), "IDA",
+                              "the model failed: " + (in_residual ? data.model_error : newton.model_error()), t,
                               "check the scene's values; tighten --rtol/--atol");
         }
         throw SolverFailure(sundials::failure_kind(flag, IDA_TOO_MUCH_WORK, IDA_ERR_FAIL, IDA_CONV_FAIL), "IDA",
@@ -171,8 +162,9 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
   IDAGetNumSteps(ida, &result.stats.steps);
   IDAGetNumResEvals(ida, &nre);
   IDAGetNumLinResEvals(ida, &nre_ls);
-  result.stats.function_evaluations = nre + nre_ls;
   IDAGetNumJacEvals(ida, &result.stats.jacobian_evaluations);
+  result.stats.function_evaluations = nre + nre_ls + result.stats.jacobian_evaluations * equations.full_jacobian_evaluations();
+  IDAGetNumLinSolvSetups(ida, &result.stats.linear_setups);
   IDAGetNumNonlinSolvIters(ida, &result.stats.newton_iterations);
   IDAGetNumErrTestFails(ida, &result.stats.error_test_failures);
   IDAGetNumNonlinSolvConvFails(ida, &result.stats.convergence_failures);

@@ -58,6 +58,7 @@ struct SolverStats {
   long convergence_failures = 0;
   double step = 0.0;               // the step actually taken by a fixed-step run [s] (0: adaptive)
   long projections = 0;            // constraint projections (CVODE's projection variant only)
+  long linear_setups = 0;          // Newton-matrix factorizations (set-ups of the linear solver)
   double wall_seconds = 0.0;
 };
 

@@ -45,8 +45,11 @@ struct Context {
 
 struct Vector {
   N_Vector v = nullptr;
+  // With SUNDIALS' fused vector operations (N_VLinearCombination etc. in one pass instead of a chain
+  // of N_VLinearSum calls); the integrators' internal vectors are clones and inherit them.
   Vector(sunindextype n, SUNContext ctx) : v(N_VNew_Serial(n, ctx)) {
     if (!v) throw std::runtime_error("SUNDIALS vector allocation failed");
+    N_VEnableFusedOps_Serial(v, SUNTRUE);
   }
   ~Vector() { N_VDestroy(v); }
   Vector(const Vector&) = delete;
@@ -172,6 +175,7 @@ inline void cvode_statistics(void* cvode, long jacobian_rhs_evaluations, SolverS
   CVodeGetNumLinRhsEvals(cvode, &linear_rhs);
   stats.function_evaluations = rhs + linear_rhs + jacobian_rhs_evaluations;
   CVodeGetNumJacEvals(cvode, &stats.jacobian_evaluations);
+  CVodeGetNumLinSolvSetups(cvode, &stats.linear_setups);
   CVodeGetNumNonlinSolvIters(cvode, &stats.newton_iterations);
   CVodeGetNumErrTestFails(cvode, &stats.error_test_failures);
   CVodeGetNumNonlinSolvConvFails(cvode, &stats.convergence_failures);
@@ -188,6 +192,9 @@ inline FailureKind failure_kind(int flag, int too_much_work, int error_test_fail
 // sample_outputs, and on a SolverFailure the samples so far attached to it as its partial result.
 template <class... Args>
 void sample_outputs_keeping_partial(RunResult& result, const IntegratorSettings& settings, Args&&... args) {
+  const auto samples = static_cast<std::size_t>(std::lround(settings.duration / settings.output_interval)) + 1;
+  result.time.reserve(samples);
+  result.samples.reserve(samples);
   try {
     sample_outputs(settings, std::forward<Args>(args)...);
   } catch (SolverFailure& failure) {

@@ -179,8 +179,8 @@ coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords
   }
   if (scene.wave && scene.is_crane()) {
     const double direction = scene.wave->direction == WaveDirection::following ? 1.0 : -1.0;
-    model.wave = coupling::AiryWave::from_height_period(scene.wave->height, scene.wave->period, direction,
-                                                        scene.wave->ramp_periods, env.water_depth, env.gravity);
+    model.wave = coupling::WaveField::regular(scene.wave->height, scene.wave->period, direction,
+                                              scene.wave->ramp_periods, env.water_depth, env.gravity);
   }
   return model;
 }

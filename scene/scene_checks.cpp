@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 #include <numbers>
 
-#include "coupling/airy_wave.hpp"
+#include "coupling/wave_field.hpp"
 
 namespace ffrf::scene {
 namespace {
@@ -171,7 +171,7 @@ void check_wave(const Scene& scene, Findings& found) {
   const double g = scene.environment.gravity, depth = scene.environment.water_depth;
   if (wave.height <= 0.0 || g <= 0.0) return;
   const double omega = 2.0 * std::numbers::pi / wave.period;
-  const double k = coupling::AiryWave::wave_number_from_dispersion(omega, depth, g);
+  const double k = coupling::WaveField::wave_number_from_dispersion(omega, depth, g);
   const double wavelength = 2.0 * std::numbers::pi / k;
   if (wave.height >= wavelength / 7.0) {
     found.error({"wave.height", "wave.period"},

@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(build-essential cmake pkg-config libeigen3-dev libarpack2-dev libspectra-dev libsundials-dev
+packages=(build-essential cmake pkg-config libeigen3-dev libarpack2-dev liblapack-dev libspectra-dev libsundials-dev
           libsuitesparse-dev libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev libgtest-dev
           libbenchmark-dev gnuplot-nox libfftw3-dev libopenmpi-dev openmpi-bin)
 missing=()

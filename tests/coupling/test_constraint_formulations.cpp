@@ -18,6 +18,8 @@
 //    minimal-coordinate run lose (within 10 %).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <cstdio>
 
 #include "coupling/constraint_drift.hpp"
@@ -134,6 +136,10 @@ TEST_F(ConstraintFormulations, AllFormulationsAgreeWithMinimalCoordinatesOnThePh
   }
 }
 
+// The drift compared is its RMS over the run, not its largest sample: the Baumgarte-damped residual
+// is the response to sporadic integration-error kicks, and its maximum over one run scatters (on
+// ddbb7c4 the max-ratio was 3.4 to 16.4 for output intervals of 0.08 to 0.12 s, the step sequences
+// differing only through CVODE's first step), while the RMS level follows the feedback gain.
 TEST(ConstraintFormulationsBaumgarte, DriftFallsAsTheStabilizationFrequencyRises) {
   const ReferenceCrane crane;
   const Eigen::VectorXd z0 = crane.equilibrium();
@@ -141,8 +147,11 @@ TEST(ConstraintFormulationsBaumgarte, DriftFallsAsTheStabilizationFrequencyRises
   for (double frequency : {0.3, 3.0}) {
     coupling::IntegratorSettings settings = drift_settings();
     settings.baumgarte_frequency = frequency;
-    drift.push_back(coupling::compare_constraint_drift(crane.factory(), z0, settings, {Integrator::baumgarte})[0].max_residual);
-    std::printf("baumgarte omega_b = %g rad/s: max |C| %.3e m\n", frequency, drift.back());
+    const auto run = coupling::compare_constraint_drift(crane.factory(), z0, settings, {Integrator::baumgarte})[0];
+    double squares = 0.0;
+    for (const double c : run.residual) squares += c * c;
+    drift.push_back(std::sqrt(squares / static_cast<double>(run.residual.size())));
+    std::printf("baumgarte omega_b = %g rad/s: RMS |C| %.3e m (max %.3e m)\n", frequency, drift.back(), run.max_residual);
   }
   EXPECT_LT(drift[1], 0.1 * drift[0]) << "ten times the frequency: at least ten times less drift";
 }

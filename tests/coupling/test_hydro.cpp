@@ -1,4 +1,4 @@
-// Airy wave and box-hull pressure load against independent references derived here: dispersion
+// Regular wave field and box-hull pressure load against independent references derived here: dispersion
 // residual and deep-water wavelength, ramp, Archimedes on clipped polygons (shoelace), hydrostatic
 // stiffness by finite differences, Froude–Krylov closed forms on submerged boxes (deep and finite
 // depth) and on a floating box whose deck is overtopped, the long-wave limit, allocation-free
@@ -18,8 +18,8 @@
 #include <utility>
 #include <vector>
 
-#include "coupling/airy_wave.hpp"
 #include "coupling/hull_pressure.hpp"
+#include "coupling/wave_field.hpp"
 
 // Global allocation counter (this executable only): hull_pressure_load must not allocate.
 namespace {
@@ -44,41 +44,46 @@ const double deep = std::numeric_limits<double>::infinity();
 const BoxHullSection hull{-32.0, 58.0, -6.0, 2.0, 40.0};
 constexpr double L = 90.0, B = 40.0, x_f = 13.0;
 
-HullLoad load(const AiryWave* wave, double x, double y, double theta, double t, const BoxHullSection& h = hull) {
+// The one component of a regular wave.
+const WaveComponent& only(const WaveField& w) { return w.components().at(0); }
+double wavelength(const WaveField& w) { return 2.0 * pi / only(w).wave_number; }
+
+HullLoad load(const WaveField* wave, double x, double y, double theta, double t, const BoxHullSection& h = hull) {
   return hull_pressure_load(h, wave, rho, g, Vector2d(x, y), theta, t);
 }
 
 // ---------------------------------------------------------------------------------- the wave ----
 
-TEST(AiryWave, DeepWaterWavelengthIsGTSquaredOverTwoPi) {
-  const auto w = AiryWave::from_height_period(1.0, 10.0, 1.0, 2.0, deep, g);
-  EXPECT_NEAR(w.wavelength(), g * 100.0 / (2.0 * pi), 1e-12 * 156.0);
-  EXPECT_NEAR(w.wavelength(), 156.13, 5e-3);
-  EXPECT_DOUBLE_EQ(w.amplitude, 0.5);
-  EXPECT_DOUBLE_EQ(w.ramp_duration, 20.0);
-  EXPECT_NEAR(w.period(), 10.0, 1e-14);
+TEST(RegularWave, DeepWaterWavelengthIsGTSquaredOverTwoPi) {
+  const auto w = WaveField::regular(1.0, 10.0, 1.0, 2.0, deep, g);
+  EXPECT_NEAR(wavelength(w), g * 100.0 / (2.0 * pi), 1e-12 * 156.0);
+  EXPECT_NEAR(wavelength(w), 156.13, 5e-3);
+  EXPECT_DOUBLE_EQ(only(w).amplitude, 0.5);
+  EXPECT_DOUBLE_EQ(w.ramp_duration(), 20.0);
+  EXPECT_NEAR(2.0 * pi / only(w).angular_frequency, 10.0, 1e-14);
+  EXPECT_EQ(only(w).phase, 0.0);
 }
 
-TEST(AiryWave, FiniteDepthDispersionToMachinePrecision) {
+TEST(RegularWave, FiniteDepthDispersionToMachinePrecision) {
   for (const double d : {0.5, 5.0, 20.0, 60.0, 400.0, 1e5}) {
     for (const double period : {2.0, 6.0, 10.0, 25.0, 200.0}) {
-      const auto w = AiryWave::from_height_period(1.0, period, -1.0, 0.0, d, g);
-      const double omega2 = w.angular_frequency * w.angular_frequency;
-      const double residual = omega2 - g * w.wave_number * std::tanh(w.wave_number * d);
+      const auto w = WaveField::regular(1.0, period, -1.0, 0.0, d, g);
+      const double omega2 = only(w).angular_frequency * only(w).angular_frequency;
+      const double residual = omega2 - g * only(w).wave_number * std::tanh(only(w).wave_number * d);
       EXPECT_LE(std::abs(residual), 1e-14 * omega2) << "d = " << d << ", T = " << period;
       // Finite depth shortens the wave: k ≥ max(ω²/g, ω/√(g d)) (tanh x < 1, tanh x ≤ x).
-      EXPECT_GE(w.wave_number, std::max(omega2 / g, w.angular_frequency / std::sqrt(g * d)) * (1 - 1e-15));
+      EXPECT_GE(only(w).wave_number, std::max(omega2 / g, only(w).angular_frequency / std::sqrt(g * d)) * (1 - 1e-15));
     }
   }
   // Deep limit and shallow limit (k d → 0: c = √(g d) to O((kd)²)).
-  EXPECT_NEAR(AiryWave::wave_number_from_dispersion(0.6, 1e4, g), 0.36 / g, 1e-16);
-  const double k_shallow = AiryWave::wave_number_from_dispersion(0.01, 1.0, g), nu = 1e-4 / g;
+  EXPECT_NEAR(WaveField::wave_number_from_dispersion(0.6, 1e4, g), 0.36 / g, 1e-16);
+  const double k_shallow = WaveField::wave_number_from_dispersion(0.01, 1.0, g), nu = 1e-4 / g;
   EXPECT_NEAR(k_shallow, std::sqrt(nu) * (1.0 + nu / 6.0), 1e-9 * k_shallow);  // x tanh x = x² − x⁴/3 + …
-  EXPECT_EQ(AiryWave::wave_number_from_dispersion(0.0, 10.0, g), 0.0);
+  EXPECT_EQ(WaveField::wave_number_from_dispersion(0.0, 10.0, g), 0.0);
 }
 
-TEST(AiryWave, RampIsC1AndElevationTravelsInItsDirection) {
-  const auto w = AiryWave::from_height_period(2.0, 8.0, 1.0, 2.0, deep, g);
+TEST(RegularWave, RampIsC1AndElevationTravelsInItsDirection) {
+  const auto w = WaveField::regular(2.0, 8.0, 1.0, 2.0, deep, g);
   EXPECT_EQ(w.ramp(0.0), 0.0);
   EXPECT_EQ(w.ramp(-3.0), 0.0);
   EXPECT_NEAR(w.ramp(8.0), 0.5, 1e-15);
@@ -90,25 +95,24 @@ TEST(AiryWave, RampIsC1AndElevationTravelsInItsDirection) {
   EXPECT_NEAR((w.ramp(8.0 + h) - w.ramp(8.0 - h)) / (2 * h), pi / 32.0, 1e-8);
   for (const double x : {-50.0, 0.0, 33.0}) EXPECT_EQ(w.elevation(x, 0.0), 0.0);
   for (const double t : {16.0, 23.7, 100.0}) {
-    EXPECT_NEAR(w.elevation(w.angular_frequency * t / w.wave_number, t), 1.0, 1e-12);  // crest moves +x
-    EXPECT_NEAR(w.elevation(12.0, t), std::cos(w.wave_number * 12.0 - w.angular_frequency * t), 1e-15);
+    EXPECT_NEAR(w.elevation(only(w).angular_frequency * t / only(w).wave_number, t), 1.0, 1e-12);  // crest moves +x
+    EXPECT_NEAR(w.elevation(12.0, t), std::cos(only(w).wave_number * 12.0 - only(w).angular_frequency * t), 1e-15);
   }
-  auto head = w;
-  head.direction = -1.0;
-  EXPECT_NEAR(head.elevation(-head.angular_frequency * 30.0 / head.wave_number, 30.0), 1.0, 1e-12);
+  const auto head = WaveField::regular(2.0, 8.0, -1.0, 2.0, deep, g);
+  EXPECT_NEAR(head.elevation(-only(head).angular_frequency * 30.0 / only(head).wave_number, 30.0), 1.0, 1e-12);
 }
 
-TEST(AiryWave, PressureBranches) {
+TEST(RegularWave, PressureBranches) {
   for (const double d : {deep, 30.0}) {
-    const auto w = AiryWave::from_height_period(2.0, 9.0, 1.0, 0.0, d, g);
-    const double k = w.wave_number, t = 4.1;
+    const auto w = WaveField::regular(2.0, 9.0, 1.0, 0.0, d, g);
+    const double k = only(w).wave_number, t = 4.1;
     const double f = std::isinf(d) ? std::exp(-12.0 * k) : std::cosh(k * (d - 12.0)) / std::cosh(k * d);
     EXPECT_NEAR(w.pressure(7.0, -12.0, t, rho), rho * g * (12.0 + w.elevation(7.0, t) * f), 1e-9);
-    EXPECT_NEAR(w.depth_attenuation(-12.0), f, 1e-15);
+    EXPECT_NEAR(w.depth_attenuation(only(w), -12.0), f, 1e-15);
     if (!std::isinf(d)) {
       EXPECT_NEAR(w.pressure(3.0, -d, t, rho), rho * g * (d + w.elevation(3.0, t) / std::cosh(k * d)), 1e-8);
     }
-    const double x_crest = w.angular_frequency * t / k;  // ζ = 1: hydrostatic extension, 0 above
+    const double x_crest = only(w).angular_frequency * t / k;  // ζ = 1: hydrostatic extension, 0 above
     EXPECT_NEAR(w.pressure(x_crest, 0.4, t, rho), rho * g * 0.6, 1e-9);
     EXPECT_EQ(w.pressure(x_crest, 1.0 + 1e-9, t, rho), 0.0);
     EXPECT_NEAR(w.pressure(x_crest, -1e-12, t, rho), w.pressure(x_crest, 0.0, t, rho), 1e-6);  // continuous at y = 0
@@ -118,13 +122,13 @@ TEST(AiryWave, PressureBranches) {
   }
 }
 
-TEST(AiryWave, RejectsBadInput) {
-  EXPECT_THROW(AiryWave::from_height_period(-1.0, 10.0, 1.0, 2.0, deep, g), std::invalid_argument);
-  EXPECT_THROW(AiryWave::from_height_period(1.0, 0.0, 1.0, 2.0, deep, g), std::invalid_argument);
-  EXPECT_THROW(AiryWave::from_height_period(1.0, 10.0, 0.5, 2.0, deep, g), std::invalid_argument);
-  EXPECT_THROW(AiryWave::from_height_period(1.0, 10.0, 1.0, -1.0, deep, g), std::invalid_argument);
-  EXPECT_THROW(AiryWave::from_height_period(1.0, 10.0, 1.0, 2.0, 0.0, g), std::invalid_argument);
-  EXPECT_THROW(AiryWave::from_height_period(1.0, 10.0, 1.0, 2.0, std::nan(""), g), std::invalid_argument);
+TEST(RegularWave, RejectsBadInput) {
+  EXPECT_THROW(WaveField::regular(-1.0, 10.0, 1.0, 2.0, deep, g), std::invalid_argument);
+  EXPECT_THROW(WaveField::regular(1.0, 0.0, 1.0, 2.0, deep, g), std::invalid_argument);
+  EXPECT_THROW(WaveField::regular(1.0, 10.0, 0.5, 2.0, deep, g), std::invalid_argument);
+  EXPECT_THROW(WaveField::regular(1.0, 10.0, 1.0, -1.0, deep, g), std::invalid_argument);
+  EXPECT_THROW(WaveField::regular(1.0, 10.0, 1.0, 2.0, 0.0, g), std::invalid_argument);
+  EXPECT_THROW(WaveField::regular(1.0, 10.0, 1.0, 2.0, std::nan(""), g), std::invalid_argument);
 }
 
 // ------------------------------------------------------------------------------ calm water ----
@@ -227,13 +231,13 @@ TEST(HullPressure, FroudeKrylovOnASubmergedBoxMatchesClosedForm) {
   // Scene wave (λ = 156 m) deep and at 60 m depth; a short wave (λ = 39 m, kL = 14) checks that
   // the quadrature resolves several wavelengths along the keel.
   for (const auto& [d, period, Y] : {std::tuple{deep, 10.0, -30.0}, {60.0, 10.0, -30.0}, {deep, 5.0, -10.0}, {40.0, 5.0, -10.0}}) {
-    const auto w = AiryWave::from_height_period(1.0, period, 1.0, 2.0, d, g);
-    const Profile pr{w.wave_number, d};
-    const double k = w.wave_number, za = w.amplitude;
+    const auto w = WaveField::regular(1.0, period, 1.0, 2.0, d, g);
+    const Profile pr{only(w).wave_number, d};
+    const double k = only(w).wave_number, za = only(w).amplitude;
     for (const double t : {25.0, 31.3, 47.9}) {
       const double X = 11.0, yb = Y + hull.keel_y, yt = Y + hull.deck_y;
       const double xi1 = hull.aft_x, xi2 = hull.fore_x, H = yt - yb;
-      const auto phase = [&](double xi) { return k * (X + xi) - w.angular_frequency * t; };
+      const auto phase = [&](double xi) { return k * (X + xi) - only(w).angular_frequency * t; };
       const double S0 = (std::sin(phase(xi2)) - std::sin(phase(xi1))) / k;  // ∫ cos φ dξ
       const auto s1 = [&](double xi) { return xi * std::sin(phase(xi)) / k + std::cos(phase(xi)) / (k * k); };
       const double S1 = s1(xi2) - s1(xi1);  // ∫ ξ cos φ dξ
@@ -255,8 +259,8 @@ TEST(HullPressure, FroudeKrylovOnASubmergedBoxMatchesClosedForm) {
 // Floating box at even keel in a deep-water wave whose crest overtops the deck (deck at y_d ≥ 0).
 // Faces and bottom: p = ρg(−y + ζ e^{ky}) below 0, ρg(ζ − y) from 0 to the crest; deck wetted
 // where ζ > y_d with p = ρg(ζ − y_d). Returns (F_x, F_y, M about G1, wetted length).
-Eigen::Vector4d overtopped_closed_form(const AiryWave& w, double X, double Y, double t) {
-  const double k = w.wave_number, za = w.amplitude, wt = w.angular_frequency * t, rg = rho * g;
+Eigen::Vector4d overtopped_closed_form(const WaveField& w, double X, double Y, double t) {
+  const double k = only(w).wave_number, za = only(w).amplitude, wt = only(w).angular_frequency * t, rg = rho * g;
   const double yb = Y + hull.keel_y, yd = Y + hull.deck_y, x1 = X + hull.aft_x, x2 = X + hull.fore_x;
   const auto zeta = [&](double x) { return za * std::cos(k * x - wt); };
   const auto face = [&](double x) {  // (∫p dy, ∫p (y − Y) dy, wetted height) on a vertical face at x
@@ -294,9 +298,9 @@ TEST(HullPressure, OvertoppedDeckAndWaveClippedFacesMatchClosedForm) {
   // Scene wave and a shorter one (λ = 56 m: several crossings per edge, two crests on deck).
   for (const auto& [period, offset] : {std::pair{10.0, -20.0}, {10.0, 40.0}, {10.0, 70.0}, {10.0, 110.0}, {10.0, -60.0},
                                        {6.0, 0.0}, {6.0, 17.0}, {6.0, 33.0}, {6.0, -41.0}}) {
-    const auto w = AiryWave::from_height_period(2.0, period, 1.0, 2.0, deep, g);
+    const auto w = WaveField::regular(2.0, period, 1.0, 2.0, deep, g);
     const double t = 30.0, Y = -1.7;  // deck 0.3 m above still water, crest 1 m
-    const double X = w.angular_frequency * t / w.wave_number - offset;  // crest `offset` forward of G1
+    const double X = only(w).angular_frequency * t / only(w).wave_number - offset;  // crest `offset` forward of G1
     const Eigen::Vector4d ref = overtopped_closed_form(w, X, Y, t);
     const HullLoad f = load(&w, X, Y, 0.0, t);
     const double scale = rho * g * B * L * 7.7;
@@ -310,23 +314,23 @@ TEST(HullPressure, OvertoppedDeckAndWaveClippedFacesMatchClosedForm) {
 }
 
 TEST(HullPressure, LongWaveHeaveForceIsQuasiStatic) {
-  const auto w = AiryWave::from_height_period(1.0, 200.0, 1.0, 0.0, deep, g);  // λ ≈ 62 km
-  ASSERT_GT(w.wavelength(), 6e4);
-  const double draft = 5.0, X = 100.0, Y = -hull.keel_y - draft, k = w.wave_number;
+  const auto w = WaveField::regular(1.0, 200.0, 1.0, 0.0, deep, g);  // λ ≈ 62 km
+  ASSERT_GT(wavelength(w), 6e4);
+  const double draft = 5.0, X = 100.0, Y = -hull.keel_y - draft, k = only(w).wave_number;
   const HullLoad calm = load(nullptr, X, Y, 0.0, 0.0);
   for (const double t : {0.0, 13.0, 50.0, 77.0, 140.0}) {
     const HullLoad f = load(&w, X, Y, 0.0, t);
     const double zeta_mid = w.elevation(X + x_f, t);
-    EXPECT_NEAR(f.force.y() - calm.force.y(), rho * g * B * L * zeta_mid, 1e-3 * rho * g * B * L * w.amplitude) << t;
-    const auto xcos = [&](double xi) { return xi * std::sin(k * (X + xi) - w.angular_frequency * t) / k +
-                                              std::cos(k * (X + xi) - w.angular_frequency * t) / (k * k); };
-    const double m_qs = rho * g * B * w.amplitude * (xcos(hull.fore_x) - xcos(hull.aft_x));  // ρgB ∫ζ ξ dξ
-    EXPECT_NEAR(f.moment - calm.moment, m_qs, 1e-3 * rho * g * B * w.amplitude * L * L / 2) << t;
+    EXPECT_NEAR(f.force.y() - calm.force.y(), rho * g * B * L * zeta_mid, 1e-3 * rho * g * B * L * only(w).amplitude) << t;
+    const auto xcos = [&](double xi) { return xi * std::sin(k * (X + xi) - only(w).angular_frequency * t) / k +
+                                              std::cos(k * (X + xi) - only(w).angular_frequency * t) / (k * k); };
+    const double m_qs = rho * g * B * only(w).amplitude * (xcos(hull.fore_x) - xcos(hull.aft_x));  // ρgB ∫ζ ξ dξ
+    EXPECT_NEAR(f.moment - calm.moment, m_qs, 1e-3 * rho * g * B * only(w).amplitude * L * L / 2) << t;
   }
 }
 
 TEST(HullPressure, RampedWaveStartsFromCalmWater) {
-  const auto w = AiryWave::from_height_period(1.0, 10.0, 1.0, 2.0, deep, g);
+  const auto w = WaveField::regular(1.0, 10.0, 1.0, 2.0, deep, g);
   const HullLoad calm = load(nullptr, 4.0, 1.0, 0.02, 0.0), start = load(&w, 4.0, 1.0, 0.02, 0.0);
   EXPECT_NEAR(start.force.y(), calm.force.y(), 1e-12 * calm.force.y());
   EXPECT_NEAR(start.force.x(), calm.force.x(), 1e-12 * calm.force.y());
@@ -336,8 +340,8 @@ TEST(HullPressure, RampedWaveStartsFromCalmWater) {
 // ------------------------------------------------------------------- robustness, hot path ----
 
 TEST(HullPressure, DryHullNonFinitePoseAndInconsistentGravity) {
-  const auto w = AiryWave::from_height_period(1.0, 10.0, 1.0, 2.0, deep, g);
-  for (const AiryWave* wave : {static_cast<const AiryWave*>(nullptr), &w}) {
+  const auto w = WaveField::regular(1.0, 10.0, 1.0, 2.0, deep, g);
+  for (const WaveField* wave : {static_cast<const WaveField*>(nullptr), &w}) {
     const HullLoad dry = load(wave, 0.0, 50.0, 0.3, 40.0);
     EXPECT_TRUE(dry.force.isZero(0.0));
     EXPECT_EQ(dry.moment, 0.0);
@@ -351,14 +355,13 @@ TEST(HullPressure, DryHullNonFinitePoseAndInconsistentGravity) {
     EXPECT_NE(std::string(e.what()).find("nan"), std::string::npos) << e.what();
   }
   EXPECT_THROW(load(nullptr, 0.0, 0.0, deep, 0.0), std::domain_error);
-  auto other = w;
-  other.gravity = 9.80665;
+  const auto other = WaveField::regular(1.0, 10.0, 1.0, 2.0, deep, 9.80665);
   EXPECT_THROW(load(&other, 0.0, 0.0, 0.0, 30.0), std::invalid_argument);
   EXPECT_THROW(load(nullptr, 0.0, 0.0, 0.0, 0.0, BoxHullSection{1.0, -1.0, -6.0, 2.0, 40.0}), std::invalid_argument);
 }
 
 TEST(HullPressure, AllocatesNothing) {
-  const auto w = AiryWave::from_height_period(2.0, 10.0, 1.0, 2.0, deep, g);
+  const auto w = WaveField::regular(2.0, 10.0, 1.0, 2.0, deep, g);
   double sink = 0.0;
   allocation_count = 0;
   counting_allocations = true;

@@ -149,11 +149,14 @@ TEST_F(CraneBaseline, StifferBoomFailsNamingEveryFrequencyAndTheChannelsThatMove
   EXPECT_FALSE(tip.passed);
   EXPECT_NEAR(tip.value / tip.baseline, 1.0 / 1.01, 1e-4);
   // The judged outputs that move with the boom's stiffness fail: their histories differ by more than
-  // the recorded run's integration error allows.
-  for (const char* channel : {"cargo_heave_m", "crane_pitch_deg", "joint_moment_Nm", "wire_tension_N"}) {
+  // the recorded run's integration error allows (10× it). The crane's pitch moves too (by more than
+  // the integration error), but by less than that margin: the hull hardly feels a 1 % stiffer boom.
+  for (const char* channel : {"cargo_heave_m", "joint_moment_Nm", "wire_tension_N"}) {
     const study::Deviation& history = find(check, channel, "history");
     EXPECT_FALSE(history.passed) << channel << ": " << history.normalized() << " against " << history.allowed / history.scale;
   }
+  const study::Deviation& pitch = find(check, "crane_pitch_deg", "history");
+  EXPECT_GT(pitch.normalized(), baseline_->integration_error->largest);
   // The cargo hangs below the tip: its static height rises with the tip (by the vertical part of the
   // tip's deflection change at the boom angle of 60°, and the hull's trim change acting on the arm).
   const study::Deviation& cargo = find(check, "cargo_heave_m", "static");
