@@ -10,7 +10,7 @@
 //   Re F̂ = [Q(0) − Q(T/2)] / 2a,   Im F̂ = −[Q(T/4) − Q(3T/4)] / 2a     (T = 2π/ω),
 // a central difference in the amplitude (Q at t + T/2 is Q of the wave −ζ), so the nonlinear hull
 // pressure's second-order part drops out. Outputs y = G δz + H δż by central differences of the
-// equations' outputs (the wire tension depends on the stretch rate). Theory: docs/theory.md §11.
+// equations' outputs (the wire tension depends on the stretch rate). Theory: docs/theory.md §12.
 #pragma once
 
 #include <Eigen/Core>
