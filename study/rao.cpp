@@ -100,12 +100,29 @@ scene::Scene with_regular_wave(const scene::Scene& scene, double height, double 
   return waved;
 }
 
-RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoRequest& request,
-                                       const std::function<void(const std::string&)>& progress, modal::ModeCache* modes) {
+namespace {
+
+void require_crane(const scene::Scene& scene) {
   if (!scene.is_crane()) {
     throw scene::SceneError({{scene.file, 0, 0, "hull", "",
                               "the frequency domain needs a floating crane: this scene has no [hull] (a hub scene has no water)"}});
   }
+}
+
+}  // namespace
+
+std::vector<NaturalMode> coupled_natural_modes(const scene::Scene& scene, const scene::BoomChoice& choice,
+                                               modal::ModeCache* modes) {
+  require_crane(scene);
+  scene::Scene calm = scene;
+  calm.wave.reset();
+  PreparedRun prepared = prepare_run(calm, choice, modes);
+  return natural_modes(coupling::linearise_crane(*prepared.equations, prepared.statics.z));
+}
+
+RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoRequest& request,
+                                       const std::function<void(const std::string&)>& progress, modal::ModeCache* modes) {
+  require_crane(scene);
   if (request.angular_frequencies.empty()) throw std::invalid_argument("no frequency to evaluate the response at");
   for (const double omega : request.angular_frequencies) {
     if (!(omega > 0.0) || !std::isfinite(omega)) {

@@ -54,6 +54,11 @@ Eigen::VectorXcd frequency_response(const Eigen::MatrixXd& mass, const Eigen::Ma
                                     const Eigen::MatrixXd& stiffness, const Eigen::VectorXcd& force,
                                     double angular_frequency);
 
+// The natural modes of the crane of `choice` linearised about its static equilibrium in calm water.
+// Throws as response_amplitude_operators().
+std::vector<NaturalMode> coupled_natural_modes(const scene::Scene& scene, const scene::BoomChoice& choice,
+                                               modal::ModeCache* modes = nullptr);
+
 struct RaoRequest {
   std::vector<scene::BoomChoice> models;  // empty: rao_models()
   std::vector<double> angular_frequencies;  // [rad/s], each > 0
