@@ -82,6 +82,8 @@ example "$guide" run-newton "run heavy_cargo.toml --out out" "grep -v 'warning:\
 example "$guide" compare-example "compare cases/paper_floating_crane.toml --out cmp"
 example "$guide" sweep-example "sweep cases/paper_floating_crane.toml --quick --out sw"
 example "$guide" recommend-example "recommend cases/paper_floating_crane.toml --tolerance 1%"
+example "$guide" rao-example "rao cases/paper_floating_crane.toml --check-time-domain --out rao" \
+  "awk 'NR <= 11 { print; next } NR == 12 { print \"...\" } /^time-domain check/'"
 
 if $figures; then
   cp cmp/cargo_heave.png "$root/docs/figures/compare_cargo_heave.png"
