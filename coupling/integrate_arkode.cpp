@@ -54,7 +54,7 @@ int erk_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
 
 int wire_root(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
   auto* data = static_cast<ErkData*>(user);
-  g[0] = data->equations->wire_stretch_minimal(t, sundials::Vector::view(y).head(data->size));
+  g[0] = sundials::wire_event(data->equations->wire_stretch_minimal(t, sundials::Vector::view(y).head(data->size)));
   return 0;
 }
 

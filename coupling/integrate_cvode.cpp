@@ -63,7 +63,7 @@ int newton_blocks(OdeData& data, double t, CraneEquations::ConstRef z, CraneEqua
 
 int wire_root(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
   auto* data = static_cast<OdeData*>(user);
-  g[0] = data->equations->wire_stretch_minimal(t, sundials::Vector::view(y).head(data->size));
+  g[0] = sundials::wire_event(data->equations->wire_stretch_minimal(t, sundials::Vector::view(y).head(data->size)));
   return 0;
 }
 

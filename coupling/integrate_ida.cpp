@@ -62,7 +62,7 @@ int dae_residual(sunrealtype t, N_Vector y, N_Vector y_dot, N_Vector r, void* us
 
 int wire_root(sunrealtype, N_Vector y, N_Vector, sunrealtype* g, void* user) {
   auto* d = static_cast<DaeData*>(user);
-  g[0] = d->equations->wire_stretch_full(sundials::Vector::view(y).head(d->size));
+  g[0] = sundials::wire_event(d->equations->wire_stretch_full(sundials::Vector::view(y).head(d->size)));
   return 0;
 }
 

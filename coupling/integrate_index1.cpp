@@ -200,7 +200,7 @@ int index1_projection(sunrealtype t, N_Vector ycur, N_Vector corr, sunrealtype e
 
 int wire_root(sunrealtype, N_Vector y, sunrealtype* g, void* user) {
   auto* d = static_cast<Index1Data*>(user);
-  g[0] = d->equations->wire_stretch_full(sundials::Vector::view(y).head(d->size));
+  g[0] = sundials::wire_event(d->equations->wire_stretch_full(sundials::Vector::view(y).head(d->size)));
   return 0;
 }
 

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -31,6 +32,17 @@ inline std::string flag_name(char* name) {
   std::string text = name != nullptr ? name : "unknown flag";
   std::free(name);
   return text;
+}
+
+// The wire's slack/taut event function for the root finders: g = ℓ − L0 where the wire is taut
+// (ℓ > L0) and negative where it is slack (ℓ ≤ L0, the tension law's slack branch, coupling/wire_rope.hpp),
+// never exactly zero. ℓ − L0 is the difference of positions ~100 m from the origin, so it is quantized
+// in steps of ~1e-14 m, while the root finders restart after an event by checking g at the root and
+// 100·ε·(|t| + |h|) ≈ 2e-14 s later (CVODE's cvRcheck2, IDA's and ARKODE's alike): with the cargo
+// moving at ~1 m/s both can round to exactly 0, which SUNDIALS rejects as "Root found at and very
+// near t" (an illegal-input failure). An exact 0 belongs to the slack side, where the force law puts it.
+inline double wire_event(double stretch) {
+  return stretch > 0.0 ? stretch : std::min(stretch, -std::numeric_limits<double>::min());
 }
 
 struct Context {
