@@ -201,13 +201,13 @@ RunResult integrate_index1(CraneEquations& equations, const Eigen::VectorXd& z0,
   const bool projection = settings.kind.formulation == Formulation::projection;
   const std::string label(to_string(settings.kind));
   const std::string solver = "CVODE (" + label + ")";
+  // Settings a caller must never pass (the study checks them): std::invalid_argument, as before.
   if (!baumgarte && !projection && settings.kind.formulation != Formulation::index1) {
-    throw SolverFailure(FailureKind::setup, solver, "the index-1 ODE takes the index1, baumgarte or projection formulation", 0.0);
+    throw std::invalid_argument("integrate_index1: the formulation must be index1, baumgarte or projection");
   }
   if (baumgarte && !(settings.baumgarte_frequency > 0.0 && std::isfinite(settings.baumgarte_frequency))) {
-    throw SolverFailure(FailureKind::setup, solver, "Baumgarte frequency " + std::to_string(settings.baumgarte_frequency) +
-                                                        " rad/s is not a valid stabilization frequency (valid range (0, inf) rad/s)",
-                        0.0);
+    throw std::invalid_argument("baumgarte_frequency " + std::to_string(settings.baumgarte_frequency) +
+                                ": not a valid stabilization frequency (valid range (0, inf) rad/s)");
   }
   const int n = equations.full_size();
   sundials::Context context;
