@@ -213,7 +213,7 @@ std::vector<CliCase> misuse_cases() {
               {"{dir}/locked/out", "Permission denied"}, "", true},
       // A solver failure is exit 3 and named; nothing is written either.
       CliCase{"explicit_instability", "run {crane} --duration 2 --integrator arkode --step 0.05 --elements 2 --out {out}",
-              3, {"solver failure (explicit instability)", "reduce --step"}},
+              3, {"solver failure (explicit instability)", "reduce the fixed step", "options: --step"}},
   };
 }
 
