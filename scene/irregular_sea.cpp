@@ -143,7 +143,7 @@ Scene in_irregular_sea(const Scene& base, const IrregularSeaState& state) {
   check("wave.significant_height", state.significant_height);
   check("wave.peak_period", state.peak_period);
   check("simulation.duration", state.duration);
-  if (state.seed > 4294967295u) check("wave.seed", static_cast<double>(state.seed));
+  if (state.seed > 2147483647u) check("wave.seed", static_cast<double>(state.seed));
   if (!problems.empty()) throw SceneError(std::move(problems));
   sea.significant_height = state.significant_height;
   sea.peak_period = state.peak_period;

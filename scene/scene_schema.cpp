@@ -195,7 +195,7 @@ constexpr std::array kKeys{
               "JONSWAP peak-enhancement factor γ (1: Pierson–Moskowitz; 3.3: the mean JONSWAP sea)."),
     defaulted("wave.sigma_below", ratio, above(0.0, 0.5), 0.07, "JONSWAP spectral width σa for ω ≤ ωp."),
     defaulted("wave.sigma_above", ratio, above(0.0, 0.5), 0.09, "JONSWAP spectral width σb for ω > ωp."),
-    integer("wave.seed", between(0.0, 4294967295.0), 1.0,
+    integer("wave.seed", between(0.0, 2147483647.0), 1.0,
             "Random seed of the phases (and amplitudes): the same seed gives the same sea on any machine, thread "
             "or process count; another seed another realisation."),
     integer("wave.components", between(0.0, 2e6), 0.0,

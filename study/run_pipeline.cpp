@@ -150,6 +150,8 @@ void summarize(const scene::Scene& scene, double duration, ModelRun& run) {
   run.amplification = run.statics.outputs.wire_tension > 0.0 ? max_tension / run.statics.outputs.wire_tension
                                                                : std::numeric_limits<double>::quiet_NaN();
   run.real_time_factor = duration / run.result.stats.wall_seconds;
+  run.irregular = irregular_statistics(scene, run.result.time, run.result.samples, run.statics.outputs, run.window.first,
+                                       scene.simulation.output_interval);
 }
 
 ModelRun prepared_model(const PreparedRun& prepared) {
