@@ -14,6 +14,7 @@
 #include "scene/scene_checks.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_schema.hpp"
+#include "scene/wave_keys.hpp"
 
 namespace ffrf::scene {
 namespace {
@@ -56,7 +57,7 @@ std::string join_names(std::string_view choices) {
   return spaced;
 }
 
-class SceneReader {
+class SceneReader final : public WrittenKeys {
  public:
   SceneReader(std::string file, std::string_view text) : file_(std::move(file)) {
     for (std::size_t start = 0; start <= text.size();) {
@@ -79,7 +80,7 @@ class SceneReader {
   }
 
  private:
-  void report(int line, std::string key, std::string value, std::string message) {
+  void report(int line, std::string key, std::string value, std::string message) override {
     problems_.push_back({file_, line, 0, std::move(key), std::move(value), std::move(message)});
   }
 
@@ -303,14 +304,17 @@ class SceneReader {
     }
   }
 
-  double number(std::string_view name) const { return resolved_.at(std::string(key_spec(name).name)).number; }
-  const std::string& text(std::string_view name) const { return resolved_.at(std::string(key_spec(name).name)).text; }
-  bool has(std::string_view name) const { return resolved_.contains(std::string(key_spec(name).name)); }
-  const std::vector<double>& list(std::string_view name) const { return resolved_.at(std::string(key_spec(name).name)).list; }
+  double number(std::string_view name) const override { return resolved_.at(std::string(key_spec(name).name)).number; }
+  const std::string& text(std::string_view name) const override { return resolved_.at(std::string(key_spec(name).name)).text; }
+  bool has(std::string_view name) const override { return resolved_.contains(std::string(key_spec(name).name)); }
+  const std::vector<double>& list(std::string_view name) const override { return resolved_.at(std::string(key_spec(name).name)).list; }
+  bool written(std::string_view name) const override { return present_.contains(name); }
+  int line(std::string_view name) const override { return line_of(*present_.find(name)->second); }
+  std::string shown(std::string_view name) const override { return show_value(*present_.find(name)->second); }
 
   // Checks that involve several keys (only run when every key is valid on its own).
   void check_scene() {
-    if (sections_.contains("wave")) check_wave_keys();
+    if (sections_.contains("wave")) check_wave_keys(*this, line_of(*sections_.at("wave")));
     if (hub_) {
       for (const char* key : {"boom.angle", "boom.root_x", "boom.root_y"}) {
         if (present_.contains(key)) {
@@ -318,64 +322,6 @@ class SceneReader {
                  "belongs to a hull crane; a hub scene clamps the boom at hub.radius along hub.angle");
         }
       }
-    }
-  }
-
-  // The keys a [wave] spectrum needs, and no keys of another spectrum.
-  void check_wave_keys() {
-    const std::string& spectrum = text("wave.spectrum");
-    const int wave_line = line_of(*sections_.at("wave"));
-    const auto need = [&](const char* key) {
-      if (!present_.contains(key)) {
-        report(wave_line, key, "",
-               fmt::format("missing key: wave.spectrum = \"{}\" needs it ({}; valid range {})", spectrum,
-                           key_spec(key).help, format_range(key_spec(key))));
-      }
-    };
-    const auto refuse = [&](const char* key, std::string_view owner) {
-      if (const auto found = present_.find(key); found != present_.end()) {
-        report(line_of(*found->second), key, show_value(*found->second),
-               fmt::format("belongs to wave.spectrum = {}, not \"{}\"; remove it or change wave.spectrum", owner,
-                           spectrum));
-      }
-    };
-    const bool regular = spectrum == "regular", components = spectrum == "components";
-    const bool parametric = !regular && !components;
-    for (const char* key : {"wave.height", "wave.period"}) regular ? need(key) : refuse(key, "\"regular\"");
-    for (const char* key : {"wave.significant_height", "wave.peak_period"}) {
-      parametric ? need(key) : refuse(key, "\"jonswap\" or \"pierson-moskowitz\"");
-    }
-    if (spectrum != "jonswap") {
-      for (const char* key : {"wave.peak_enhancement", "wave.sigma_below", "wave.sigma_above"}) refuse(key, "\"jonswap\"");
-    }
-    for (const char* key : {"wave.component_frequencies", "wave.component_amplitudes", "wave.component_phases"}) {
-      components ? need(key) : refuse(key, "\"components\"");
-    }
-    if (!parametric) {
-      for (const char* key : {"wave.seed", "wave.components", "wave.frequency_min", "wave.frequency_max", "wave.amplitudes"}) {
-        refuse(key, "\"jonswap\" or \"pierson-moskowitz\"");
-      }
-    }
-    if (components && has("wave.component_frequencies") && has("wave.component_amplitudes") &&
-        has("wave.component_phases")) {
-      const std::size_t count = list("wave.component_frequencies").size();
-      for (const char* key : {"wave.component_amplitudes", "wave.component_phases"}) {
-        if (list(key).size() != count) {
-          report(line_of(*present_.at(key)), key, show_value(*present_.at(key)),
-                 fmt::format("{} values for {} component frequencies (valid: one per frequency)", list(key).size(), count));
-        }
-      }
-    }
-    if (parametric && has("wave.frequency_min") && has("wave.frequency_max") &&
-        !(number("wave.frequency_max") > number("wave.frequency_min"))) {
-      report(line_of(*present_.at("wave.frequency_max")), "wave.frequency_max", show_value(*present_.at("wave.frequency_max")),
-             fmt::format("not above wave.frequency_min = {:g} rad/s (valid range ({:g}, 100] rad/s)",
-                         number("wave.frequency_min"), number("wave.frequency_min")));
-    }
-    if (parametric && has("wave.frequency_min") != has("wave.frequency_max")) {
-      const char* given = has("wave.frequency_min") ? "wave.frequency_min" : "wave.frequency_max";
-      report(line_of(*present_.at(given)), given, show_value(*present_.at(given)),
-             "give both wave.frequency_min and wave.frequency_max (a band), or neither (the energy band)");
     }
   }
 
@@ -449,7 +395,7 @@ class SceneReader {
     }
     scene.environment = Environment{number("environment.water_density"), number("environment.gravity"),
                                     number("environment.water_depth")};
-    if (sections_.contains("wave")) build_wave(scene);
+    if (sections_.contains("wave")) build_wave(*this, scene);
     scene.radiation = Radiation{number("radiation.surge_added_mass"), number("radiation.heave_added_mass"),
                                 number("radiation.pitch_added_inertia"), number("radiation.surge_damping"),
                                 number("radiation.heave_damping"), number("radiation.pitch_damping")};
@@ -460,39 +406,6 @@ class SceneReader {
                                   number("simulation.cargo_lift"), number("simulation.deflection_limit"),
                                   number("simulation.constraint_drift_limit")};
     return scene;
-  }
-
-  void build_wave(Scene& scene) const {
-    const std::string& spectrum = text("wave.spectrum");
-    const bool head = text("wave.direction") == "head";
-    if (spectrum == "regular") {
-      scene.wave = Wave{number("wave.height"), number("wave.period"), head ? WaveDirection::head : WaveDirection::following,
-                        number("wave.ramp_periods")};
-      return;
-    }
-    IrregularSea sea;
-    sea.spectrum = spectrum == "jonswap"             ? SeaSpectrum::jonswap
-                   : spectrum == "pierson-moskowitz" ? SeaSpectrum::pierson_moskowitz
-                                                     : SeaSpectrum::components;
-    sea.heading = head ? hydro::WaveHeading::head : hydro::WaveHeading::following;
-    sea.ramp_periods = number("wave.ramp_periods");
-    if (sea.spectrum == SeaSpectrum::components) {
-      sea.component_frequencies = list("wave.component_frequencies");
-      sea.component_amplitudes = list("wave.component_amplitudes");
-      sea.component_phases = list("wave.component_phases");
-    } else {
-      sea.significant_height = number("wave.significant_height");
-      sea.peak_period = number("wave.peak_period");
-      sea.peak_enhancement = sea.spectrum == SeaSpectrum::jonswap ? number("wave.peak_enhancement") : 1.0;
-      sea.sigma_below = number("wave.sigma_below");
-      sea.sigma_above = number("wave.sigma_above");
-      sea.seed = static_cast<std::uint64_t>(number("wave.seed"));
-      sea.component_count = static_cast<int>(number("wave.components"));
-      if (has("wave.frequency_min")) sea.frequency_min = number("wave.frequency_min");
-      if (has("wave.frequency_max")) sea.frequency_max = number("wave.frequency_max");
-      sea.random_amplitudes = text("wave.amplitudes") == "rayleigh";
-    }
-    scene.sea = std::move(sea);
   }
 
   static fem::Boundary boundary_of(const std::string& keyword) {
