@@ -12,15 +12,15 @@ void check_wave_keys(WrittenKeys& keys, int wave_line) {
   const auto need = [&](const char* key) {
     if (!keys.written(key)) {
       keys.report(wave_line, key, "",
-             fmt::format("missing key: wave.spectrum = \"{}\" needs it ({}; valid range {})", spectrum,
-                         key_spec(key).help, format_range(key_spec(key))));
+                  fmt::format("missing key: wave.spectrum = \"{}\" needs it ({}; valid range {})", spectrum,
+                              key_spec(key).help, format_range(key_spec(key))));
     }
   };
   const auto refuse = [&](const char* key, std::string_view owner) {
     if (keys.written(key)) {
-      keys.report(keys.line(key), key, keys.shown(key),
-             fmt::format("belongs to wave.spectrum = {}, not \"{}\"; remove it or change wave.spectrum", owner,
-                         spectrum));
+      keys.report(
+          keys.line(key), key, keys.shown(key),
+          fmt::format("belongs to wave.spectrum = {}, not \"{}\"; remove it or change wave.spectrum", owner, spectrum));
     }
   };
   const bool regular = spectrum == "regular", components = spectrum == "components";
@@ -30,13 +30,15 @@ void check_wave_keys(WrittenKeys& keys, int wave_line) {
     parametric ? need(key) : refuse(key, "\"jonswap\" or \"pierson-moskowitz\"");
   }
   if (spectrum != "jonswap") {
-    for (const char* key : {"wave.peak_enhancement", "wave.sigma_below", "wave.sigma_above"}) refuse(key, "\"jonswap\"");
+    for (const char* key : {"wave.peak_enhancement", "wave.sigma_below", "wave.sigma_above"})
+      refuse(key, "\"jonswap\"");
   }
   for (const char* key : {"wave.component_frequencies", "wave.component_amplitudes", "wave.component_phases"}) {
     components ? need(key) : refuse(key, "\"components\"");
   }
   if (!parametric) {
-    for (const char* key : {"wave.seed", "wave.components", "wave.frequency_min", "wave.frequency_max", "wave.amplitudes"}) {
+    for (const char* key :
+         {"wave.seed", "wave.components", "wave.frequency_min", "wave.frequency_max", "wave.amplitudes"}) {
       refuse(key, "\"jonswap\" or \"pierson-moskowitz\"");
     }
   }
@@ -46,20 +48,21 @@ void check_wave_keys(WrittenKeys& keys, int wave_line) {
     for (const char* key : {"wave.component_amplitudes", "wave.component_phases"}) {
       if (keys.list(key).size() != count) {
         keys.report(keys.line(key), key, keys.shown(key),
-               fmt::format("{} values for {} component frequencies (valid: one per frequency)", keys.list(key).size(), count));
+                    fmt::format("{} values for {} component frequencies (valid: one per frequency)",
+                                keys.list(key).size(), count));
       }
     }
   }
   if (parametric && keys.has("wave.frequency_min") && keys.has("wave.frequency_max") &&
       !(keys.number("wave.frequency_max") > keys.number("wave.frequency_min"))) {
     keys.report(keys.line("wave.frequency_max"), "wave.frequency_max", keys.shown("wave.frequency_max"),
-           fmt::format("not above wave.frequency_min = {:g} rad/s (valid range ({:g}, 100] rad/s)",
-                       keys.number("wave.frequency_min"), keys.number("wave.frequency_min")));
+                fmt::format("not above wave.frequency_min = {:g} rad/s (valid range ({:g}, 100] rad/s)",
+                            keys.number("wave.frequency_min"), keys.number("wave.frequency_min")));
   }
   if (parametric && keys.has("wave.frequency_min") != keys.has("wave.frequency_max")) {
     const char* given = keys.has("wave.frequency_min") ? "wave.frequency_min" : "wave.frequency_max";
     keys.report(keys.line(given), given, keys.shown(given),
-           "give both wave.frequency_min and wave.frequency_max (a band), or neither (the energy band)");
+                "give both wave.frequency_min and wave.frequency_max (a band), or neither (the energy band)");
   }
 }
 
@@ -67,8 +70,8 @@ void build_wave(const WrittenKeys& keys, Scene& scene) {
   const std::string& spectrum = keys.text("wave.spectrum");
   const bool head = keys.text("wave.direction") == "head";
   if (spectrum == "regular") {
-    scene.wave = Wave{keys.number("wave.height"), keys.number("wave.period"), head ? WaveDirection::head : WaveDirection::following,
-                      keys.number("wave.ramp_periods")};
+    scene.wave = Wave{keys.number("wave.height"), keys.number("wave.period"),
+                      head ? WaveDirection::head : WaveDirection::following, keys.number("wave.ramp_periods")};
     return;
   }
   IrregularSea sea;

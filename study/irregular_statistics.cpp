@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <stdexcept>
 
 #include "hydro/record_statistics.hpp"
@@ -39,6 +41,10 @@ ResponseStatistics response_statistics(std::string_view column, std::string_view
   if (stats.standard_deviation > 0.0) {
     r.spectrum = hydro::welch_spectrum(record, dt);
     r.peak_frequency = hydro::peak_frequency(r.spectrum);
+    // A record too short for segments that resolve its own zero-crossing frequency has no peak.
+    if (!(stats.mean_period > 0.0) || r.spectrum.resolution > 0.25 * 2.0 * std::numbers::pi / stats.mean_period) {
+      r.peak_frequency = std::numeric_limits<double>::quiet_NaN();
+    }
     try {
       const hydro::ExtremeEstimates extremes = hydro::most_probable_maxima(record, dt);
       r.rayleigh = stats.mean + extremes.rayleigh;

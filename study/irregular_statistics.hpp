@@ -27,7 +27,7 @@ struct ResponseStatistics {
   std::string_view unit;
   double mean = 0.0, standard_deviation = 0.0, significant = 0.0;  // 4σ
   double zero_crossing_period = 0.0;  // Tz from the up-crossings [s]
-  double peak_frequency = 0.0;        // of the Welch spectrum [rad/s]
+  double peak_frequency = 0.0;        // of the Welch spectrum [rad/s]; NaN when its resolution is coarser than ω_z/4
   double observed_maximum = 0.0;      // largest value over the window (a level)
   bool extremes = false;              // MPMs below are valid (the window holds ≥ 10 waves)
   double rayleigh = 0.0, weibull = 0.0, gumbel = 0.0;  // most probable maxima, as levels (mean added)

@@ -96,9 +96,10 @@ void loads(const scene::Scene& scene, const std::vector<coupling::OutputChannel>
     r.rigid_error = r.static_tip_deflection * std::cos(phi) / rms_heave;
     r.statements.push_back(fmt::format(
         "Rigid boom: it misses the static tip deflection δ = F⊥L³/(3EI) + q⊥L⁴/(8EI) = {:.3g} m under the cargo and its own "
-        "weight; its vertical part δ cos φ = {:.3g} m against the cargo's RMS heave (the waves' RMS elevation) {:.3g} m estimates its error "
+        "weight; its vertical part δ cos φ = {:.3g} m against the cargo's RMS heave {} = {:.3g} m estimates its error "
         "at {:.2g} (τ = {:g}).",
-        r.static_tip_deflection, r.static_tip_deflection * std::cos(phi), rms_heave, r.rigid_error, r.tolerance));
+        r.static_tip_deflection, r.static_tip_deflection * std::cos(phi),
+        scene.wave ? "H/(2√2)" : "(the sea's RMS elevation √m0)", rms_heave, r.rigid_error, r.tolerance));
   } else {
     r.rigid_error = std::numeric_limits<double>::quiet_NaN();
     r.statements.push_back("Rigid boom: no wave to scale its error by; only its verification run can tell.");
