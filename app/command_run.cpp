@@ -17,6 +17,7 @@
 #include "report/gnuplot.hpp"
 #include "report/output_directory.hpp"
 #include "report/run_report.hpp"
+#include "report/irregular_report.hpp"
 #include "study/work_limits.hpp"
 
 namespace ffrf::app {
@@ -33,6 +34,7 @@ struct RunOptions {
 
 void write_outputs(report::StagedDirectory& out, const report::RunContext& context, const study::ModelRun& run) {
   out.write("timeseries.csv", report::timeseries_csv(run));
+  if (run.irregular) out.write("response_spectra.csv", report::response_spectra_csv(*run.irregular));
   report::ChartSet charts;
   charts.sources = {{"timeseries.csv", run.choice.label(), run.choice.kind != scene::BoomKind::rigid, false}};
   charts.names = report::crane_chart_names(*context.scene);

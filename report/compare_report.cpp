@@ -4,11 +4,13 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "report/compare_tables.hpp"
 #include "report/crane_charts.hpp"
+#include "report/irregular_report.hpp"
 #include "report/verdict_report.hpp"
 #include "report/reference_report.hpp"
 
@@ -53,6 +55,16 @@ std::string measure_text(const Comparison& c) {
       "({}) are not resolved.",
       study::output_list(c.judged), window_text(c.window_start),
       c.reference.levels.size() > 1 ? fmt::format("{:.2g}", c.reference.levels.back().change) : std::string("not measured"));
+}
+
+bool has_irregular_errors(const Comparison& c) {
+  return std::any_of(c.irregular.begin(), c.irregular.end(), [](const auto& e) { return e.has_value(); });
+}
+
+std::vector<std::string> model_labels(const Comparison& c) {
+  std::vector<std::string> labels;
+  for (const ModelRun& run : c.runs) labels.push_back(run.choice.label());
+  return labels;
 }
 
 }  // namespace
@@ -137,6 +149,13 @@ std::string compare_markdown(const RunContext& ctx, const Comparison& c) {
   r += "### Static offset x_s − x_ref_s\n\n" + error_table(c, ErrorKind::static_offset) + "\n";
   r += "### Largest dynamic difference max |d − d_ref|\n\n" + error_table(c, ErrorKind::dynamic_max) + "\n";
   r += "### Largest total difference max |x − x_ref|\n\n" + error_table(c, ErrorKind::total_max) + "\n";
+  if (has_irregular_errors(c)) {
+    r += "## Irregular sea: statistics and spectra against the reference\n\nIn an irregular sea a small phase drift "
+         "spoils a time history while every statistic a design uses agrees, so each model's statistics and Welch "
+         "spectra are compared with the reference's too (not judged by the verdict; cells: error of σ / error of the "
+         "Rayleigh MPM / spectral distance D).\n\n```\n" + irregular_errors_text(model_labels(c), c.irregular) + "```\n\n";
+    if (c.reference.run.irregular) r += "Reference run's statistics:\n\n```" + irregular_text(*c.reference.run.irregular) + "```\n\n";
+  }
   r += "## Wire rope\n\nDynamic amplification factor here: the maximum tension over the whole run divided by the static "
        "tension.\n\n" + wire_table(c) + "\n";
   r += "## Solver costs\n\nWall time of the integration alone; real-time factor = simulated time / wall time; work = steps × "
@@ -189,6 +208,7 @@ std::string compare_json(const RunContext& ctx, const Comparison& c) {
     errors["worst_normalized_rms"] = c.worst[m].error;
     errors["worst_output"] = channel_name(c.worst[m].channel);
     model["errors_to_reference"] = std::move(errors);
+    if (m < c.irregular.size() && c.irregular[m]) model["irregular_sea_errors"] = irregular_errors_json(*c.irregular[m]);
     model["verdict"] = Json{{"passed", c.verdict.models[m].passed},
                             {"wall_speedup", c.verdict.models[m].wall_speedup},
                             {"work_speedup", c.verdict.models[m].work_speedup}};
@@ -240,6 +260,7 @@ std::string compare_text(const RunContext& ctx, const Comparison& c) {
   t += "(worst: the largest total normalized RMS error over the judged outputs, what the verdict judges; static, dynamic: "
        "its two parts for that output — the equilibrium offset, and the motion about each model's own equilibrium; x wall, "
        "x work: the reference's wall time and solver work (steps x state size) over the model's)\n\n";
+  if (has_irregular_errors(c)) t += irregular_errors_text(model_labels(c), c.irregular);
   t += "verdict     " + wrapped(verdict_sentence(c), 100, 12) + "\n";
   return t;
 }

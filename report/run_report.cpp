@@ -12,6 +12,8 @@
 #include <numbers>
 #include <optional>
 
+#include "report/irregular_report.hpp"
+
 namespace ffrf::report {
 namespace {
 
@@ -174,6 +176,7 @@ Json model_json(const scene::Scene& scene, const study::ModelRun& run) {
                                       {"peak_over_static", snap.ratio}});
   }
   json["wire"] = std::move(wire);
+  if (run.irregular) json["irregular_sea"] = irregular_json(*run.irregular);
   json["max_constraint_residual_m"] = run.max_constraint_residual;
   json["max_buckling_load_ratio"] = coupling::max_buckling_load_ratio(run.result, limits);
   json["detections"] = Json::array();
@@ -234,6 +237,7 @@ std::string dynamics_text(const study::ModelRun& run) {
                         run.amplification, run.slack_events());
   }
   text += fmt::format("  max constraint residual {:.3g} m\n", run.max_constraint_residual);
+  if (run.irregular) text += irregular_text(*run.irregular);
   if (!run.result.detections.empty()) {
     text += "\ndetected\n";
     for (const coupling::Detection& d : run.result.detections) {

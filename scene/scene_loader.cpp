@@ -14,6 +14,7 @@
 #include "scene/scene_checks.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_schema.hpp"
+#include "scene/wave_keys.hpp"
 
 namespace ffrf::scene {
 namespace {
@@ -21,6 +22,7 @@ namespace {
 struct Resolved {
   double number = 0.0;
   std::string text;
+  std::vector<double> list;  // number_list keys
 };
 
 int line_of(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
@@ -55,7 +57,7 @@ std::string join_names(std::string_view choices) {
   return spaced;
 }
 
-class SceneReader {
+class SceneReader final : public WrittenKeys {
  public:
   SceneReader(std::string file, std::string_view text) : file_(std::move(file)) {
     for (std::size_t start = 0; start <= text.size();) {
@@ -78,7 +80,7 @@ class SceneReader {
   }
 
  private:
-  void report(int line, std::string key, std::string value, std::string message) {
+  void report(int line, std::string key, std::string value, std::string message) override {
     problems_.push_back({file_, line, 0, std::move(key), std::move(value), std::move(message)});
   }
 
@@ -162,7 +164,7 @@ class SceneReader {
   }
 
   static Resolved default_of(const KeySpec& key) {
-    return {key.default_value, std::string(key.default_text)};
+    return {key.default_value, std::string(key.default_text), {}};
   }
 
   void resolve_absent(const KeySpec& key, int section_line) {
@@ -202,7 +204,7 @@ class SceneReader {
                  fmt::format("out of range (valid range {}){}", range,
                              did_you_mean(unit_slips(key, written.number, written.unit))));
         } else {
-          resolved_[name] = {value, {}};
+          resolved_[name] = {value, {}, {}};
         }
         return;
       }
@@ -214,7 +216,7 @@ class SceneReader {
         } else if (!key.range.contains(*value)) {
           report(line, name, shown, fmt::format("out of range (valid range {})", range));
         } else {
-          resolved_[name] = {*value, {}};
+          resolved_[name] = {*value, {}, {}};
         }
         return;
       }
@@ -230,18 +232,51 @@ class SceneReader {
         if (!known) {
           report(line, name, shown, fmt::format("unknown choice; choose one of {}", join_names(key.choices)));
         } else {
-          resolved_[name] = {0.0, s->get()};
+          resolved_[name] = {0.0, s->get(), {}};
         }
         return;
       }
+      case ValueKind::number_list:
+        resolve_list(key, node);
+        return;
       case ValueKind::text:
         if (const auto* s = node.as_string()) {
-          resolved_[name] = {0.0, s->get()};
+          resolved_[name] = {0.0, s->get(), {}};
         } else {
           report(line, name, shown, "expected a text string");
         }
         return;
     }
+  }
+
+  // An array of quantities: each an SI number or a "value unit" string, each in the key's range.
+  void resolve_list(const KeySpec& key, const toml::node& node) {
+    const std::string name(key.name);
+    const std::string range = format_range(key);
+    const auto* array = node.as_array();
+    if (array == nullptr || array->empty()) {
+      report(line_of(node), name, show_value(node), fmt::format("expected a non-empty array of numbers (valid range {})", range));
+      return;
+    }
+    std::vector<double> values;
+    for (std::size_t i = 0; i < array->size(); ++i) {
+      const toml::node& element = *array->get(i);
+      QuantityResult result = QuantityError{"expected a number"};
+      if (const auto* s = element.as_string()) {
+        result = parse_quantity(s->get(), key.dimension, false);
+      } else if (element.is_number()) {
+        result = check_number(element.value<double>().value_or(0.0), false);
+      }
+      const double* value = std::get_if<double>(&result);
+      if (value == nullptr || !accepts(key, *value)) {
+        const std::string why = value == nullptr ? std::get<QuantityError>(result).message : "out of range";
+        report(line_of(node), name, show_value(node),
+               fmt::format("element {} = {}: {} (valid range {})", i + 1, show_parsed_value(element), why, range));
+        return;
+      }
+      values.push_back(*value);
+    }
+    resolved_[name] = {0.0, {}, std::move(values)};
   }
 
   void check_one_of_groups() {
@@ -269,12 +304,17 @@ class SceneReader {
     }
   }
 
-  double number(std::string_view name) const { return resolved_.at(std::string(key_spec(name).name)).number; }
-  const std::string& text(std::string_view name) const { return resolved_.at(std::string(key_spec(name).name)).text; }
-  bool has(std::string_view name) const { return resolved_.contains(std::string(key_spec(name).name)); }
+  double number(std::string_view name) const override { return resolved_.at(std::string(key_spec(name).name)).number; }
+  const std::string& text(std::string_view name) const override { return resolved_.at(std::string(key_spec(name).name)).text; }
+  bool has(std::string_view name) const override { return resolved_.contains(std::string(key_spec(name).name)); }
+  const std::vector<double>& list(std::string_view name) const override { return resolved_.at(std::string(key_spec(name).name)).list; }
+  bool written(std::string_view name) const override { return present_.contains(name); }
+  int line(std::string_view name) const override { return line_of(*present_.find(name)->second); }
+  std::string shown(std::string_view name) const override { return show_value(*present_.find(name)->second); }
 
   // Checks that involve several keys (only run when every key is valid on its own).
   void check_scene() {
+    if (sections_.contains("wave")) check_wave_keys(*this, line_of(*sections_.at("wave")));
     if (hub_) {
       for (const char* key : {"boom.angle", "boom.root_x", "boom.root_y"}) {
         if (present_.contains(key)) {
@@ -355,11 +395,7 @@ class SceneReader {
     }
     scene.environment = Environment{number("environment.water_density"), number("environment.gravity"),
                                     number("environment.water_depth")};
-    if (sections_.contains("wave")) {
-      scene.wave = Wave{number("wave.height"), number("wave.period"),
-                        text("wave.direction") == "head" ? WaveDirection::head : WaveDirection::following,
-                        number("wave.ramp_periods")};
-    }
+    if (sections_.contains("wave")) build_wave(*this, scene);
     scene.radiation = Radiation{number("radiation.surge_added_mass"), number("radiation.heave_added_mass"),
                                 number("radiation.pitch_added_inertia"), number("radiation.surge_damping"),
                                 number("radiation.heave_damping"), number("radiation.pitch_damping")};

@@ -45,6 +45,10 @@ Comparison compare(const scene::Scene& scene, const CompareRequest& request,
     c.errors.push_back(coupling::compare_runs(c.runs.back().result, c.reference.run.result, c.window_start));
     c.split.push_back(split_errors(c.runs.back(), c.reference.run, c.window_start));
     c.worst.push_back(worst_error(c.errors.back(), c.judged));
+    const ModelRun& done = c.runs.back();
+    c.irregular.push_back(irregular_errors(scene, done.result.samples, done.statics.outputs, c.reference.run.result.samples,
+                                           c.reference.run.statics.outputs, done.window.first,
+                                           scene.simulation.output_interval));
   }
   c.verdict = judge(measured_models(c), c.reference.run.result.stats.wall_seconds, c.reference.run.work(), request.tolerance);
   // The chosen model is drawn on the charts beside the fixed set.

@@ -9,6 +9,7 @@
 
 #include "coupling/planar.hpp"
 #include "fem/analytic_beam.hpp"
+#include "scene/irregular_sea.hpp"
 #include "scene/scene_checks.hpp"
 #include "study/work_limits.hpp"
 
@@ -56,7 +57,7 @@ coupling::MonitorLimits monitor_limits(const scene::Scene& scene) {
       limits.water.cargo_half_length = 0.5 * scene.cargo->length;
       limits.water.cargo_half_height = 0.5 * scene.cargo->height;
     }
-    limits.water.wave_amplitude = scene.wave ? 0.5 * scene.wave->height : 0.0;
+    limits.water.wave_amplitude = scene::wave_amplitude_bound(scene);
   }
   return limits;
 }
@@ -150,6 +151,8 @@ void summarize(const scene::Scene& scene, double duration, ModelRun& run) {
   run.amplification = run.statics.outputs.wire_tension > 0.0 ? max_tension / run.statics.outputs.wire_tension
                                                                : std::numeric_limits<double>::quiet_NaN();
   run.real_time_factor = duration / run.result.stats.wall_seconds;
+  run.irregular = irregular_statistics(scene, run.result.time, run.result.samples, run.statics.outputs, run.window.first,
+                                       scene.simulation.output_interval);
 }
 
 ModelRun prepared_model(const PreparedRun& prepared) {

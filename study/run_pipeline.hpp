@@ -19,6 +19,7 @@
 #include "modal/mode_cache.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
+#include "study/irregular_statistics.hpp"
 #include "study/output_series.hpp"
 
 namespace ffrf::study {
@@ -98,6 +99,7 @@ struct ModelRun {
   double amplification = 0.0;      // max wire tension over the run / static tension
   double max_constraint_residual = 0.0;
   double real_time_factor = 0.0;   // simulated seconds per wall second (integration)
+  std::optional<IrregularStatistics> irregular;  // an irregular sea: statistics after the ramp
 
   const coupling::CraneOutputs& static_outputs() const { return statics.outputs; }
   long slack_events() const;       // the wire went slack

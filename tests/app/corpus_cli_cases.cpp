@@ -41,6 +41,7 @@ std::string filled(std::string text, const fs::path& dir) {
       {"{scene}", "'" + (dir / "scene.toml").string() + "'"},
       {"{crane}", source_file("cases/paper_floating_crane.toml")},
       {"{hub}", source_file("cases/dropped_load.toml")},
+      {"{sea}", source_file("cases/irregular_sea_crane.toml")},
       {"{cantilever}", source_file("cases/cantilever.toml")},
       {"{out}", "'" + (dir / "out").string() + "'"},
       {"{dir}", dir.string()}};
@@ -73,6 +74,7 @@ std::vector<CliCase> scene_cases_through_the_program() {
 
 std::vector<CliCase> physics_cases() {
   const std::string crane = read_text(source_file("cases/paper_floating_crane.toml"));
+  const std::string sea = read_text(source_file("cases/irregular_sea_crane.toml"));
   const std::string no_mooring = crane.substr(0, crane.find("[mooring]")) + crane.substr(crane.find("[simulation]"));
   const auto run = [](std::string name, std::string text, std::vector<std::string> words) {
     return CliCase{std::move(name), "run {scene} --duration 2 --out {out}", 2, std::move(words), std::move(text)};
@@ -89,6 +91,19 @@ std::vector<CliCase> physics_cases() {
           {"cargo.mass = 14.0e6", "the deck would be under water at rest"}),
       run("cargo_in_the_water", replaced(crane, "unstretched_length = 20.0 ", "unstretched_length = 200.0 "),
           {"wire.unstretched_length = 200.0", "the cargo would hang in the water", "at most 103.6 m"}),
+      run("irregular_sea_too_steep", replaced(replaced(sea, "significant_height = 2.0 ", "significant_height = 5.0 "),
+                                              "peak_period = 8.0 ", "peak_period = 6.0 "),
+          {"wave.significant_height = 5.0", "the sea is too steep", "DNV-RP-C205", "valid range (0, 3.747] m"}),
+      run("irregular_sea_negative_hs", replaced(sea, "significant_height = 2.0 ", "significant_height = -2.0 "),
+          {"wave.significant_height = -2.0", "valid range (0, 30] m"}),
+      run("irregular_sea_zero_tp", replaced(sea, "peak_period = 8.0 ", "peak_period = 0 "),
+          {"wave.peak_period = 0", "valid range [1, 40] s"}),
+      run("irregular_sea_gamma_below_one", replaced(sea, "peak_enhancement = 3.3 ", "peak_enhancement = 0.5 "),
+          {"wave.peak_enhancement = 0.5", "valid range [1, 20]"}),
+      run("irregular_sea_without_hs", replaced(sea, "significant_height = 2.0 ", "# no Hs "),
+          {"wave.significant_height", "wave.spectrum = \"jonswap\" needs it", "valid range (0, 30] m"}),
+      run("regular_key_in_an_irregular_sea", replaced(sea, "peak_period = 8.0 ", "peak_period = 8.0\nheight = 1.0 "),
+          {"wave.height = 1.0", "belongs to wave.spectrum = \"regular\""}),
       run("breaking_wave", replaced(crane, "height = 1.0 ", "height = 25.0 "),
           {"wave.height = 25.0", "the wave breaks", "valid range [0, 22.3) m"}),
       run("depth_below_draft", replaced(replaced(crane, "water_depth = inf ", "water_depth = 3.0 "), "height = 1.0 ",

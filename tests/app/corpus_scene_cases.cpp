@@ -130,6 +130,14 @@ std::vector<SceneCase> generated_scene_cases() {
       case scene::ValueKind::text:
         add("number", "5", "expected a text string");
         break;
+      case scene::ValueKind::number_list: {
+        const scene::Range& r = key.range;
+        add("element_above_range", fmt::format("[{}]", number(10.0 * r.upper.value + 1.0)), range);
+        add("element_nan", "[nan]", range);
+        add("element_text", "[\"abc\"]", range);
+        add("not_an_array", "5", range);
+        break;
+      }
     }
   }
   return cases;
