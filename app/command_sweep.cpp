@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "app/cli_options.hpp"
+#include "app/radiation_option.hpp"
 #include "app/commands.hpp"
 #include "app/option_checks.hpp"
 #include "report/output_directory.hpp"
@@ -29,6 +30,7 @@ namespace {
 struct SweepOptions {
   std::string scene;
   std::string out;
+  std::string radiation;  // overrides bem.radiation_model of every configuration
   int jobs = 0;
   std::string shard;
   std::vector<std::string> merge;
@@ -112,6 +114,7 @@ int run_sweep(const SweepOptions& options) {
   std::optional<scene::Scene> scene = load_scene(options.scene, "sweep", true);
   if (!scene) return exit_bad_input;
   try {
+    apply_radiation_option(*scene, options.radiation);
     request.stiffening = stiffening_option(options.stiffening);
     request.tolerance = parse_tolerance(options.tolerance);
     study::validate(request.reference);
@@ -183,6 +186,7 @@ Command add_sweep_command(CLI::App& parent) {
                 "generalized-alpha at 3 steps, explicit RK at 0.5x and 2x its stability limit");
   add_reference_options(*sub, options->reference);
   add_stiffening_option(*sub, options->stiffening);
+  add_radiation_option(*sub, options->radiation);
   add_tolerance_option(*sub, options->tolerance,
                        "a configuration passes when its worst normalized RMS error over the judged outputs is within it");
   return {sub, [options] { return run_sweep(*options); }};

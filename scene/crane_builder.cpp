@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "scene/bem_hull_model.hpp"
 #include "scene/scene_loader.hpp"
 #include "fem/analytic_beam.hpp"
 #include "fem/axial_force.hpp"
@@ -182,6 +183,7 @@ coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords
     model.wave = coupling::WaveField::regular(scene.wave->height, scene.wave->period, direction,
                                               scene.wave->ramp_periods, env.water_depth, env.gravity);
   }
+  if (scene.bem && scene.is_crane()) apply_bem_hydrodynamics(scene, model.hull, model.wave);
   return model;
 }
 
