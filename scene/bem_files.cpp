@@ -12,7 +12,8 @@ namespace ffrf::scene {
 std::string resolve_scene_path(const std::string& scene_file, const std::string& written) {
   const std::filesystem::path path(written);
   if (path.is_absolute() || scene_file.empty()) return written;
-  return (std::filesystem::path(scene_file).parent_path() / path).lexically_normal().string();
+  // Not normalized: "cases/../data" must go through a symlinked cases/ as the OS resolves it.
+  return (std::filesystem::path(scene_file).parent_path() / path).string();
 }
 
 namespace {
