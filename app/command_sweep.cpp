@@ -17,6 +17,7 @@
 
 #include "app/cli_options.hpp"
 #include "app/radiation_option.hpp"
+#include "study/radiation_compare.hpp"
 #include "app/commands.hpp"
 #include "app/option_checks.hpp"
 #include "report/output_directory.hpp"
@@ -156,6 +157,22 @@ int run_sweep(const SweepOptions& options) {
              rows.size(), options.shard.empty() ? "" : " (shard " + options.shard + ")", study::to_string(request.grid),
              request.duration, request.jobs, rows.size() - failed, failed, report::reference_label(result.reference),
              report::reference_levels_text(result.reference), report::pareto_text(rows, report::context_facts(context)));
+  // A scene with BEM coefficients: a section comparing the radiation models on the scene's default
+  // boom model against the Cummins convolution, at the sweep's duration and tolerance.
+  if (scene->bem && options.shard.empty()) {
+    try {
+      progress("sweep", "radiation models (constant, state-space, convolution) ...", true);
+      DynamicsOptions dynamics;
+      dynamics.duration = request.duration;
+      const auto radiation = study::compare_radiation(*scene, default_boom_choice(*scene), integrator_settings(dynamics, *scene),
+                                                      request.tolerance);
+      fmt::print("{}", study::radiation_comparison_text(radiation));
+    } catch (const scene::SceneError& error) {
+      return scene_error("sweep", options.scene, error, "the radiation-model crane");
+    } catch (const coupling::SolverFailure& failure) {
+      return solver_failure("sweep", "radiation models", failure, options.out);
+    }
+  }
   if (!options.out.empty()) fmt::print("\nwrote {} (report.md)\n", options.out);
   return exit_ok;
 }
