@@ -8,18 +8,37 @@
 
 #include "app/commands.hpp"
 #include "app/option_checks.hpp"
+#include "coupling/integrator_table.hpp"
 #include "study/work_limits.hpp"
 
 namespace ffrf::app {
 
 void add_dynamics_options(CLI::App& sub, DynamicsOptions& options) {
+  std::string pairs;
+  for (const coupling::IntegratorEntry& entry : coupling::integrator_table()) {
+    pairs += fmt::format("; {} = {} x {}: {}", entry.name, coupling::to_string(entry.choice.formulation),
+                         coupling::to_string(entry.choice.solver), entry.summary);
+  }
   sub.add_option("--integrator", options.integrator,
-                 "Integrator " + coupling::integrator_choices() +
-                     ": cvode = minimal coordinates (BDF ODE), ida = Lagrange multipliers (stabilized index-2 DAE), "
-                     "arkode = minimal coordinates (explicit Runge-Kutta), generalized-alpha = index-3, fixed step (needs --step); "
-                     "index1, baumgarte, projection = full coordinates as an index-1 ODE (BDF): unstabilized (the constraint "
-                     "drifts), with Baumgarte feedback (omega_b = 10 rad/s), or projected onto the constraint after every step")
-      ->capture_default_str();
+                 "Integrator " + coupling::integrator_choices() + " (default cvode), each a formulation x solver pair" + pairs);
+  sub.add_option("--formulation", options.formulation,
+                 "Constraint formulation " + coupling::formulation_choices() +
+                     " (with --solver; instead of --integrator; default minimal): minimal coordinates, or Lagrange "
+                     "multipliers at index 3, stabilized index 2, index 1 (drifts), index 1 with Baumgarte feedback or "
+                     "with projection");
+  sub.add_option("--solver", options.solver,
+                 "Solver " + coupling::solver_choices() + " (with --formulation; default bdf): BDF (CVODE/IDA), explicit "
+                 "Runge-Kutta (ARKODE), generalized-alpha (fixed step, needs --step)");
+  sub.add_option("--max-steps", options.max_steps, "Work limit: steps over the whole run (then 'too much work')")
+      ->capture_default_str()
+      ->check(whole_number(1, 1000000000));
+  sub.add_option("--max-wall-time", options.max_wall_time,
+                 "Work limit: wall-clock seconds of each integration (then 'too much work'; default: none)")
+      ->check(finite_number(0.0, 1e6, "s", true));
+  sub.add_option("--min-step", options.min_step,
+                 "Work limit: step-size floor of the adaptive solvers [s] (then 'step-size collapse'; 0: none)")
+      ->capture_default_str()
+      ->check(finite_number(0.0, 3600.0, "s"));
   const CLI::Validator tolerance = finite_number(study::min_tolerance, study::max_tolerance);
   sub.add_option("--rtol", options.rtol, "Relative tolerance")->capture_default_str()->check(tolerance);
   sub.add_option("--atol", options.atol, "Absolute tolerance (scaled by each coordinate's typical size)")
@@ -144,13 +163,50 @@ std::string option_message(const study::SettingError& error) {
   return fmt::format("{} {}: {}", option_name(error.setting()), error.value(), error.problem());
 }
 
-coupling::IntegratorSettings integrator_settings(const DynamicsOptions& options, const scene::Scene& scene) {
-  const auto kind = coupling::parse_integrator(options.integrator);
-  if (!kind) {
-    throw BadOption(fmt::format("--integrator {}: unknown integrator; choose one of {}", options.integrator,
-                                coupling::integrator_choices()));
+coupling::Integrator integrator_choice(const DynamicsOptions& options) {
+  if (!options.integrator.empty() && (!options.formulation.empty() || !options.solver.empty())) {
+    throw BadOption(fmt::format("--integrator {} names a formulation and a solver: give either --integrator or "
+                                "--formulation/--solver",
+                                options.integrator));
   }
-  study::DynamicsRequest request{*kind, options.rtol, options.atol, options.duration, options.step, options.max_order};
+  if (options.formulation.empty() && options.solver.empty()) {
+    const std::string name = options.integrator.empty() ? "cvode" : options.integrator;
+    const auto kind = coupling::parse_integrator(name);
+    if (!kind) {
+      throw BadOption(fmt::format("--integrator {}: unknown integrator; choose one of {}", name, coupling::integrator_choices()));
+    }
+    return *kind;
+  }
+  coupling::Integrator choice = coupling::Integrator::cvode;
+  if (!options.formulation.empty()) {
+    const auto formulation = coupling::parse_formulation(options.formulation);
+    if (!formulation) {
+      throw BadOption(fmt::format("--formulation {}: unknown formulation; choose one of {}", options.formulation,
+                                  coupling::formulation_choices()));
+    }
+    choice.formulation = *formulation;
+  }
+  if (!options.solver.empty()) {
+    const auto solver = coupling::parse_solver(options.solver);
+    if (!solver) {
+      throw BadOption(fmt::format("--solver {}: unknown solver; choose one of {}", options.solver, coupling::solver_choices()));
+    }
+    choice.solver = *solver;
+  }
+  if (!coupling::is_valid(choice)) {
+    throw BadOption(fmt::format("--formulation {} --solver {}: not an implemented integrator; valid pairs: {}",
+                                coupling::to_string(choice.formulation), coupling::to_string(choice.solver),
+                                coupling::valid_integrators()));
+  }
+  return choice;
+}
+
+coupling::IntegratorSettings integrator_settings(const DynamicsOptions& options, const scene::Scene& scene) {
+  study::DynamicsRequest request{integrator_choice(options), options.rtol, options.atol, options.duration, options.step,
+                                 options.max_order};
+  request.work.max_steps = options.max_steps;
+  if (options.max_wall_time) request.work.max_wall_seconds = *options.max_wall_time;
+  request.work.min_step = options.min_step;
   try {
     coupling::IntegratorSettings settings = study::integrator_settings(scene, request);
     settings.progress = stderr_is_terminal();
@@ -158,6 +214,30 @@ coupling::IntegratorSettings integrator_settings(const DynamicsOptions& options,
   } catch (const study::SettingError& error) {
     throw BadOption(option_message(error));
   }
+}
+
+std::string option_names(coupling::Adjustment adjustment) {
+  switch (adjustment) {
+    case coupling::Adjustment::tolerances: return "--rtol/--atol";
+    case coupling::Adjustment::fixed_step: return "--step";
+    case coupling::Adjustment::step_limit: return "--max-steps";
+    case coupling::Adjustment::wall_clock_limit: return "--max-wall-time";
+    case coupling::Adjustment::step_floor: return "--min-step";
+    case coupling::Adjustment::solver: return "--solver";
+    case coupling::Adjustment::formulation: return "--formulation";
+    case coupling::Adjustment::stiffening: return "--stiffening";
+    case coupling::Adjustment::model_size: return "--elements/--modes";
+    case coupling::Adjustment::scene_values: return "the scene file";
+  }
+  return "?";
+}
+
+std::string remedy_options(coupling::FailureKind kind) {
+  std::string text;
+  for (const coupling::Adjustment adjustment : coupling::adjustments(kind)) {
+    text += (text.empty() ? "options: " : ", ") + option_names(adjustment);
+  }
+  return text;
 }
 
 // "1%" → 0.01, "0.01" → 0.01; throws BadOption when not a number in (0, 1).
@@ -228,7 +308,9 @@ int scene_error(const std::string& command, const std::string& path, const scene
 
 int solver_failure(const std::string& command, const std::string& what, const coupling::SolverFailure& failure,
                    const std::string& out) {
-  fmt::print(stderr, "ffrf {}: solver failure ({}): {}\n", command, what, failure.what());
+  const std::string options = remedy_options(failure.kind());
+  fmt::print(stderr, "ffrf {}: solver failure ({}): {}{}\n", command, what, failure.what(),
+             options.empty() ? "" : " (" + options + ")");
   if (!out.empty()) fmt::print(stderr, "ffrf {}: nothing written to {}\n", command, out);
   return exit_solver_failure;
 }

@@ -18,8 +18,16 @@
 namespace ffrf::app {
 
 // Integrator options as typed on the command line.
+// The integrator is a formulation × solver pair (coupling/integrator_choice.hpp): --integrator names a
+// valid pair (the names before the split: cvode, ida, ...); --formulation and --solver choose the two
+// apart (the one not given from the default cvode = minimal × bdf). The two ways exclude each other.
 struct DynamicsOptions {
-  std::string integrator = "cvode";
+  std::string integrator;   // empty: cvode
+  std::string formulation;  // empty: from --integrator
+  std::string solver;       // empty: from --integrator
+  long max_steps = coupling::WorkLimits{}.max_steps;  // steps over the run
+  std::optional<double> max_wall_time;                // [s]
+  double min_step = 0.0;                              // step-size floor [s]; 0: none
   double rtol = 1e-6;
   double atol = 1e-6;
   std::optional<double> duration;
@@ -80,7 +88,14 @@ std::optional<scene::Scene> load_scene(const std::string& path, const std::strin
 int bad_input(const std::string& command, const std::string& message);
 // Every problem of a scene that cannot make the crane, then the error line; returns exit_bad_input.
 int scene_error(const std::string& command, const std::string& path, const scene::SceneError& error, const std::string& what);
-// "ffrf CMD: solver failure (WHAT): ..." (and "nothing written to OUT"); returns exit_solver_failure.
+// The options behind a neutral adjustment of a remedy ("--rtol/--atol" for the tolerances).
+std::string option_names(coupling::Adjustment adjustment);
+// "options: --rtol/--atol, --min-step, ..." for a failure kind's adjustments.
+std::string remedy_options(coupling::FailureKind kind);
+// The pair the options name; throws BadOption naming the option and the valid choices or pairs.
+coupling::Integrator integrator_choice(const DynamicsOptions& options);
+// "ffrf CMD: solver failure (WHAT): ... Try: remedy (options: --rtol/--atol, ...)" (and "nothing written
+// to OUT"); returns exit_solver_failure.
 int solver_failure(const std::string& command, const std::string& what, const coupling::SolverFailure& failure,
                    const std::string& out);
 

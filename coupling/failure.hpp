@@ -2,6 +2,9 @@
 // (issue 5's detectors), one detection (kind, time, cause with its numbers, remedy), and the
 // exception a solver that could not finish throws — naming the kind, and carrying the samples up
 // to the failure so a report can chart how it failed (never as if they were a complete run).
+// Remedies are keyed by the failure kind and worded neutrally ("tighten the tolerances"); each names
+// the adjustments it involves, which a front end maps to its own options (the command line to
+// --rtol/--atol, ...). failure.cpp holds the names and the remedy table.
 #pragma once
 
 #include <exception>
@@ -9,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace ffrf::coupling {
 
@@ -41,6 +45,31 @@ inline constexpr FailureKind all_failure_kinds[] = {
     FailureKind::setup,
 };
 
+// What a user can change about a run, in neutral words.
+enum class Adjustment {
+  tolerances,        // the relative and absolute tolerances
+  fixed_step,        // the fixed step of a fixed-step solver
+  step_limit,        // the largest number of steps of a run
+  wall_clock_limit,  // the largest wall-clock time of a run
+  step_floor,        // the smallest step an adaptive solver may take
+  solver,            // the time integrator (bdf, explicit-rk, generalized-alpha)
+  formulation,       // the constraint formulation (minimal coordinates, Lagrange multipliers ...)
+  stiffening,        // geometric stiffening of the boom
+  model_size,        // elements or modes of the boom
+  scene_values,      // the scene's physical values (loads, masses, stiffnesses, the sea)
+};
+inline constexpr Adjustment all_adjustments[] = {
+    Adjustment::tolerances, Adjustment::fixed_step, Adjustment::step_limit,  Adjustment::wall_clock_limit,
+    Adjustment::step_floor, Adjustment::solver,     Adjustment::formulation, Adjustment::stiffening,
+    Adjustment::model_size, Adjustment::scene_values,
+};
+std::string_view to_string(Adjustment adjustment);  // "the tolerances", ...
+
+// What to try after a failure of this kind, in neutral words (no option names), and the
+// adjustments it involves.
+std::string_view remedy(FailureKind kind);
+std::vector<Adjustment> adjustments(FailureKind kind);
+
 struct Detection {
   FailureKind kind;
   double time = 0.0;   // when [s]
@@ -55,6 +84,9 @@ struct RunResult;
 // A solver that could not finish: which solver, which failure, what, when, and what to try.
 class SolverFailure : public std::runtime_error {
  public:
+  // The remedy of the kind (remedy(kind)) ...
+  SolverFailure(FailureKind kind, std::string solver, std::string cause, double time);
+  // ... or a specific one (neutral words, e.g. with the number to aim for).
   SolverFailure(FailureKind kind, std::string solver, std::string cause, double time, std::string remedy,
                 double value = 0.0);
   FailureKind kind() const { return kind_; }
@@ -63,6 +95,7 @@ class SolverFailure : public std::runtime_error {
   double time() const { return time_; }
   const std::string& remedy() const { return remedy_; }
   double value() const { return value_; }
+  std::vector<Adjustment> adjustments() const { return coupling::adjustments(kind_); }
   Detection detection() const { return {kind_, time_, true, cause_, remedy_, value_}; }
   // The samples up to the failure (set by the integrator; may be null).
   const std::shared_ptr<const RunResult>& partial() const { return partial_; }

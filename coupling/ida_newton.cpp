@@ -29,14 +29,8 @@ int IndexTwoNewton::jacobian(double t, double cj, N_Vector y, N_Vector yp, N_Vec
   const auto state = view(y);
   const auto rate = view(yp);
   if (!state.allFinite() || !rate.allFinite()) return 1;
-  try {
-    self->equations_.full_jacobian(t, state.head(n), state.segment(n, n), rate.segment(n, n), self->blocks_);
-    self->curvature_.evaluate(self->equations_, state.head(n), self->scale_);
-  } catch (const std::exception& error) {
-    self->model_error_ = error.what();
-    self->model_error_kind_ = model_failure_kind(error);
-    return -1;
-  }
+  self->equations_.full_jacobian(t, state.head(n), state.segment(n, n), rate.segment(n, n), self->blocks_);
+  self->curvature_.evaluate(self->equations_, state.head(n), self->scale_);
   self->cj_ = cj;
   self->velocity_ = state.segment(n, n);
   self->lambda_ = state.segment<constraints>(2 * n);

@@ -34,12 +34,9 @@ class IndexTwoNewton {
 
   SUNMatrix matrix() const { return linear_.matrix(); }
   SUNLinearSolver solver() const { return linear_.solver(); }
-  // An exception the model threw in a Jacobian evaluation (never crosses C code).
-  const std::string& model_error() const { return model_error_; }
-  FailureKind model_error_kind() const { return model_error_kind_; }
-
   // IDALsJacFn: register with IDASetJacFn after IDASetLinearSolver(solver(), matrix()); the user
-  // data pointer is not used (the matrix carries this object).
+  // data pointer is not used (the matrix carries this object). The model's exceptions propagate: call
+  // it inside the adapter's callback guard (sundials::CallbackGuard), never directly from C.
   static int jacobian(double t, double cj, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix J, void* user, N_Vector,
                       N_Vector, N_Vector);
 
@@ -59,8 +56,6 @@ class IndexTwoNewton {
   Eigen::Vector3d lambda_ = Eigen::Vector3d::Zero(), mu_ = Eigen::Vector3d::Zero();
   Eigen::VectorXd velocity_, column_, reduced_rhs_, product_, delta_q_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic> mu_curvature_;  // H_μ over the border (b × b)
-  std::string model_error_;
-  FailureKind model_error_kind_ = FailureKind::model_error;
   CustomLinearSolver linear_;  // last: built on the complete object
 };
 

@@ -31,55 +31,43 @@ struct ErkData {
   double energy_bound = std::numeric_limits<double>::infinity();
   double energy_reference = 0.0;  // E_ref + E_floor
   double diverged_energy = 0.0, diverged_time = 0.0;
-  std::string model_error = {};  // an exception the model threw inside a callback
-  FailureKind model_error_kind = FailureKind::model_error;
+  sundials::CallbackGuard* guard = nullptr;  // every callback runs inside it
 };
 
 int erk_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
   auto* data = static_cast<ErkData*>(user);
-  const auto state = sundials::Vector::view(y);
-  auto rate = sundials::Vector::view(y_dot);
-  const int n = data->size;
-  if (!state.allFinite()) return 1;  // recoverable: adaptive ERK retries with a smaller step
-  try {
+  return (*data->guard)([&] {
+    const auto state = sundials::Vector::view(y);
+    auto rate = sundials::Vector::view(y_dot);
+    const int n = data->size;
+    if (!state.allFinite()) return 1;  // recoverable: adaptive ERK retries with a smaller step
     rate.head(n) = state.tail(n);
     data->equations->minimal_accelerations(t, state.head(n), state.tail(n), rate.tail(n));
-  } catch (const std::exception& error) {  // never across ARKODE's C frames
-    data->model_error = error.what();
-    data->model_error_kind = model_failure_kind(error);
-    return -1;
-  }
-  return rate.allFinite() ? 0 : 1;
+    return rate.allFinite() ? 0 : 1;
+  });
 }
 
 int wire_root(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
   auto* data = static_cast<ErkData*>(user);
-  g[0] = data->equations->wire_stretch_minimal(t, sundials::Vector::view(y).head(data->size));
-  return 0;
+  return (*data->guard)([&] {
+    g[0] = sundials::wire_event(data->equations->wire_stretch_minimal(t, sundials::Vector::view(y).head(data->size)));
+    return 0;
+  });
 }
 
 // After every fixed step: stop when the kinetic energy leaves the bound (or is not finite).
 int energy_watch(sunrealtype t, N_Vector y, void* user) {
   auto* data = static_cast<ErkData*>(user);
-  const auto state = sundials::Vector::view(y);
-  const int n = data->size;
-  const double energy = state.allFinite() ? data->equations->minimal_outputs(t, state.head(n), state.tail(n)).kinetic_energy
-                                          : std::numeric_limits<double>::infinity();
-  if (std::isfinite(energy) && energy <= data->energy_bound) return 0;
-  data->diverged_energy = energy;
-  data->diverged_time = t;
-  return 1;
-}
-
-std::string remedy_for(int flag, double limit) {
-  const std::string limit_text = std::isfinite(limit) ? " (the linearized stability limit is ≈ " + std::to_string(limit) + " s)" : "";
-  switch (flag) {
-    case ARK_TOO_MUCH_WORK:
-      return "explicit RK on a stiff model takes steps bounded by stability, not accuracy" + limit_text +
-             ": use an implicit integrator (cvode, ida), fewer elements or modes, or raise the step limit";
-    case ARK_ERR_FAILURE: return "repeated error-test failures (step-size collapse): check for a wire snap or loosen --atol";
-    default: return "use an implicit integrator (cvode, ida) or check the scene's stiffness and mass values";
-  }
+  return (*data->guard)([&] {
+    const auto state = sundials::Vector::view(y);
+    const int n = data->size;
+    const double energy = state.allFinite() ? data->equations->minimal_outputs(t, state.head(n), state.tail(n)).kinetic_energy
+                                            : std::numeric_limits<double>::infinity();
+    if (std::isfinite(energy) && energy <= data->energy_bound) return 0;
+    data->diverged_energy = energy;
+    data->diverged_time = t;
+    return 1;
+  });
 }
 
 }  // namespace
@@ -121,7 +109,7 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
   const bool fixed = settings.fixed_step > 0.0;
   if (settings.fixed_step < 0.0 || !std::isfinite(settings.fixed_step)) {
     throw SolverFailure(FailureKind::setup, solver_name, "invalid fixed step " + std::to_string(settings.fixed_step), 0.0,
-                        "give --step > 0, or 0 for adaptive steps");
+                        "give a fixed step > 0, or 0 for adaptive steps");
   }
   sundials::Context context;
   sundials::Vector y(2 * n, context.ctx), tolerance(2 * n, context.ctx);
@@ -131,26 +119,33 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
   tolerance.map().head(n) = settings.absolute_tolerance * scale;
   tolerance.map().tail(n) = settings.absolute_tolerance * scale;
 
+  sundials::CallbackGuard guard(solver_name, settings.work);
   ErkData data{&equations, n};
+  data.guard = &guard;
   {
     Eigen::VectorXd q(equations.full_size()), v(equations.full_size());
     equations.full_from_minimal(0.0, z0, Eigen::VectorXd::Zero(n), q, v);
     data.energy_reference = 0.5 * equations.full_mass_matrix(q).diagonal().sum();  // E_floor
     data.energy_bound = energy_growth_bound * data.energy_reference;
   }
+  sundials::LibraryMessage message;
+  const sundials::SetupCheck check(solver_name, ERKStepGetReturnFlagName, message);
   std::unique_ptr<void, void (*)(void*)> memory(ERKStepCreate(erk_rhs, 0.0, y.v, context.ctx),
                                                [](void* p) { ERKStepFree(&p); });
   void* erk = memory.get();
-  if (!erk || ERKStepSVtolerances(erk, settings.relative_tolerance, tolerance.v) != ARK_SUCCESS ||
-      ERKStepSetTableNum(erk, explicit_table_id) != ARK_SUCCESS || ERKStepSetUserData(erk, &data) != ARK_SUCCESS ||
-      ERKStepSetMaxNumSteps(erk, settings.max_steps) != ARK_SUCCESS || ERKStepRootInit(erk, 1, wire_root) != ARK_SUCCESS ||
-      (fixed && (ERKStepSetFixedStep(erk, settings.fixed_step) != ARK_SUCCESS ||
-                 ERKStepSetPostprocessStepFn(erk, energy_watch) != ARK_SUCCESS))) {
-    throw SolverFailure(FailureKind::setup, solver_name, "set-up failed", 0.0, "report this as a bug");
+  check(erk, "ERKStepCreate");
+  check(ERKStepSetErrHandlerFn(erk, sundials::LibraryMessage::handler, &message), "ERKStepSetErrHandlerFn");
+  check(ERKStepSVtolerances(erk, settings.relative_tolerance, tolerance.v), "ERKStepSVtolerances");
+  check(ERKStepSetTableNum(erk, explicit_table_id), "ERKStepSetTableNum");
+  check(ERKStepSetUserData(erk, &data), "ERKStepSetUserData");
+  check(ERKStepSetMaxNumSteps(erk, settings.max_steps), "ERKStepSetMaxNumSteps");
+  if (!fixed && settings.work.min_step > 0.0) check(ERKStepSetMinStep(erk, settings.work.min_step), "ERKStepSetMinStep");
+  check(ERKStepRootInit(erk, 1, wire_root), "ERKStepRootInit");
+  if (fixed) {
+    check(ERKStepSetFixedStep(erk, settings.fixed_step), "ERKStepSetFixedStep");
+    check(ERKStepSetPostprocessStepFn(erk, energy_watch), "ERKStepSetPostprocessStepFn");
   }
   ERKStepSetNoInactiveRootWarn(erk);
-  // Failures become SolverFailure with cause and remedy; ARKODE's own message would only repeat it.
-  ERKStepSetErrHandlerFn(erk, [](int, const char*, const char*, char*, void*) {}, nullptr);
 
   RunResult result;
   DivergenceWatch watch(settings.monitor, solver_name);
@@ -161,7 +156,7 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
     if (!fixed) {
       std::snprintf(cause, sizeof cause, "unstable: the solution grew without bound with adaptive steps (kinetic energy %.3g J)", energy);
       return SolverFailure(FailureKind::unstable_explicit, solver_name, cause, t,
-                           "use an implicit integrator (cvode, ida) or tighten --rtol");
+                           "use an implicit solver (bdf) or tighten the tolerances");
     }
     std::snprintf(cause, sizeof cause,
                   "unstable: the step h = %.3g s exceeds the explicit stability limit ≈ %.3g s of the linearized crane "
@@ -169,8 +164,8 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
                   settings.fixed_step, limit, energy, energy / data.energy_reference, data.energy_reference);
     char remedy[320];
     std::snprintf(remedy, sizeof remedy,
-                  "reduce --step below ≈ %.3g s (≈ %.2f/ω_max for undamped modes), use fewer elements or modes, or an "
-                  "implicit integrator (cvode, ida)",
+                  "reduce the fixed step below ≈ %.3g s (≈ %.2f/ω_max for undamped modes), use fewer elements or "
+                  "modes, or an implicit solver (bdf)",
                   limit, explicit_imaginary_axis_boundary());
     return SolverFailure(FailureKind::unstable_explicit, solver_name, cause, t, remedy, limit);
   };
@@ -189,24 +184,41 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
       data.energy_bound = energy_growth_bound * data.energy_reference;
     }
   };
+  long steps = 0;
   sundials::sample_outputs_keeping_partial(
       result, settings, solver_name, ARK_ROOT_RETURN,
-      [&](double t_out, double& t) { return ERKStepEvolve(erk, t_out, y.v, &t, ARK_NORMAL); },
+      [&](double t_out, double& t) {
+        ERKStepGetNumSteps(erk, &steps);
+        const long allowed = sundials::call_step_limit(settings, steps);
+        if (allowed == 0) return ARK_TOO_MUCH_WORK;
+        ERKStepSetMaxNumSteps(erk, allowed);
+        return ERKStepEvolve(erk, t_out, y.v, &t, ARK_NORMAL);
+      },
       [&] {
         int direction = 0;
         ERKStepGetRootInfo(erk, &direction);
         return direction;
       },
       [&](int flag, double t) {
-        if (!data.model_error.empty()) {
-          throw SolverFailure(data.model_error_kind, solver_name, "the model failed: " + data.model_error, t,
-                              "check the scene's values; reduce --step or use an implicit integrator (cvode, ida)");
-        }
-        if (flag == ARK_POSTPROCESS_STEP_FAIL) throw unstable(data.diverged_time, data.diverged_energy);
+        if (flag == ARK_POSTPROCESS_STEP_FAIL && !guard.failed()) throw unstable(data.diverged_time, data.diverged_energy);
+        guard.rethrow(t);
         if (fixed && flag != ARK_TOO_MUCH_WORK) throw unstable(t, std::numeric_limits<double>::infinity());
-        throw SolverFailure(flag == ARK_TOO_MUCH_WORK ? FailureKind::too_much_work : FailureKind::model_error, solver_name,
-                            ERKStepGetReturnFlagName(flag), t,
-                            remedy_for(flag, flag == ARK_TOO_MUCH_WORK ? explicit_stable_step(equations, z0) : NAN));
+        double last_step = 0.0;
+        ERKStepGetNumSteps(erk, &steps);
+        result.stats.steps = steps;  // the partial result's statistics
+        ERKStepGetCurrentStep(erk, &last_step);
+        SolverFailure failure = sundials::solver_failure(solver_name, settings, flag,
+                                                         sundials::flag_name(ERKStepGetReturnFlagName(flag)) + message.suffix(),
+                                                         {ARK_TOO_MUCH_WORK, ARK_ERR_FAILURE, ARK_CONV_FAILURE}, steps, last_step, t);
+        if (failure.kind() != FailureKind::too_much_work) throw failure;
+        // Explicit RK on a stiff model takes steps bounded by stability, not accuracy: say which.
+        char remedy[400];
+        std::snprintf(remedy, sizeof remedy,
+                      "explicit RK on a stiff model takes steps bounded by stability, not accuracy (the linearized "
+                      "stability limit is ≈ %.3g s): use an implicit solver (bdf), fewer elements or modes, or raise "
+                      "the step or wall-clock limit",
+                      explicit_stable_step(equations, z0));
+        throw SolverFailure(FailureKind::too_much_work, solver_name, failure.cause(), t, remedy);
       },
       record_and_calibrate, result.wire_events);
 

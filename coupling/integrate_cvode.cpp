@@ -26,57 +26,38 @@ namespace {
 struct OdeData {
   CraneEquations* equations;
   int size;
-  std::string model_error;  // an exception the model threw inside a callback (never crosses C code)
-  FailureKind model_error_kind = FailureKind::model_error;
+  sundials::CallbackGuard* guard;  // every callback runs inside it
 };
 
 int ode_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
   auto* data = static_cast<OdeData*>(user);
-  const auto state = sundials::Vector::view(y);
-  auto rate = sundials::Vector::view(y_dot);
-  if (!state.allFinite()) return 1;  // recoverable: CVODE retries with a smaller step
-  const int n = data->size;
-  try {
+  return (*data->guard)([&] {
+    const auto state = sundials::Vector::view(y);
+    auto rate = sundials::Vector::view(y_dot);
+    if (!state.allFinite()) return 1;  // recoverable: CVODE retries with a smaller step
+    const int n = data->size;
     rate.head(n) = state.tail(n);
     data->equations->minimal_accelerations(t, state.head(n), state.tail(n), rate.tail(n));
-  } catch (const std::exception& error) {
-    data->model_error = error.what();
-    data->model_error_kind = model_failure_kind(error);
-    return -1;
-  }
-  return rate.allFinite() ? 0 : 1;
+    return rate.allFinite() ? 0 : 1;
+  });
 }
 
 // The structured Newton blocks at a state (coupling/second_order_newton.hpp).
 int newton_blocks(OdeData& data, double t, CraneEquations::ConstRef z, CraneEquations::ConstRef z_dot,
                   CraneEquations::ConstRef z_ddot, SecondOrderJacobian& blocks) {
-  if (!z.allFinite() || !z_dot.allFinite() || !z_ddot.allFinite()) return 1;
-  try {
+  return (*data.guard)([&] {
+    if (!z.allFinite() || !z_dot.allFinite() || !z_ddot.allFinite()) return 1;
     data.equations->minimal_jacobian(t, z, z_dot, z_ddot, blocks);
-  } catch (const std::exception& error) {
-    data.model_error = error.what();
-    data.model_error_kind = model_failure_kind(error);
-    return -1;
-  }
-  return 0;
+    return 0;
+  });
 }
 
 int wire_root(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
   auto* data = static_cast<OdeData*>(user);
-  g[0] = data->equations->wire_stretch_minimal(t, sundials::Vector::view(y).head(data->size));
-  return 0;
-}
-
-std::string remedy_for(int flag) {
-  switch (flag) {
-    case CV_TOO_MUCH_WORK: return "raise the step limit, or loosen --rtol/--atol; a very stiff model (many elements) needs more steps";
-    case CV_ERR_FAILURE: return "repeated error-test failures (step-size collapse): check for a discontinuity (wire snap) or tighten --atol";
-    case CV_CONV_FAILURE: return "Newton did not converge (step-size collapse): tighten tolerances or reduce the element count";
-    case CV_RHSFUNC_FAIL:
-    case CV_REPTD_RHSFUNC_ERR:
-    case CV_UNREC_RHSFUNC_ERR: return "the model produced non-finite accelerations (divergence): check the scene's stiffness and mass values";
-    default: return "check the scene and the tolerances";
-  }
+  return (*data->guard)([&] {
+    g[0] = sundials::wire_event(data->equations->wire_stretch_minimal(t, sundials::Vector::view(y).head(data->size)));
+    return 0;
+  });
 }
 
 }  // namespace
@@ -92,19 +73,27 @@ RunResult integrate_minimal(CraneEquations& equations, const Eigen::VectorXd& z0
   tolerance.map().head(n) = settings.absolute_tolerance * scale;
   tolerance.map().tail(n) = settings.absolute_tolerance * scale;
 
-  OdeData data{&equations, n, {}, FailureKind::model_error};
+  sundials::CallbackGuard guard("CVODE", settings.work);
+  OdeData data{&equations, n, &guard};
   sundials::SecondOrderNewton newton(equations.minimal_structure(), context.ctx,
                                      [&data](double t, auto z, auto z_dot, auto z_ddot, SecondOrderJacobian& blocks) {
                                        return newton_blocks(data, t, z, z_dot, z_ddot, blocks);
                                      });
+  sundials::LibraryMessage message;
+  const sundials::SetupCheck check("CVODE", CVodeGetReturnFlagName, message);
   std::unique_ptr<void, void (*)(void*)> memory(CVodeCreate(CV_BDF, context.ctx), [](void* p) { CVodeFree(&p); });
   void* cvode = memory.get();
-  if (CVodeInit(cvode, ode_rhs, 0.0, y.v) != CV_SUCCESS || CVodeSVtolerances(cvode, settings.relative_tolerance, tolerance.v) != CV_SUCCESS ||
-      CVodeSetUserData(cvode, &data) != CV_SUCCESS || CVodeSetLinearSolver(cvode, newton.solver(), newton.matrix()) != CV_SUCCESS ||
-      CVodeSetLinSysFn(cvode, sundials::SecondOrderNewton::linear_system) != CV_SUCCESS ||
-      CVodeSetMaxNumSteps(cvode, settings.max_steps) != CV_SUCCESS || CVodeSetMaxOrd(cvode, settings.max_order) != CV_SUCCESS || CVodeRootInit(cvode, 1, wire_root) != CV_SUCCESS) {
-    throw SolverFailure(FailureKind::setup, "CVODE", "set-up failed", 0.0, "report this as a bug");
-  }
+  check(cvode, "CVodeCreate");
+  check(CVodeSetErrHandlerFn(cvode, sundials::LibraryMessage::handler, &message), "CVodeSetErrHandlerFn");
+  check(CVodeInit(cvode, ode_rhs, 0.0, y.v), "CVodeInit");
+  check(CVodeSVtolerances(cvode, settings.relative_tolerance, tolerance.v), "CVodeSVtolerances");
+  check(CVodeSetUserData(cvode, &data), "CVodeSetUserData");
+  check(CVodeSetLinearSolver(cvode, newton.solver(), newton.matrix()), "CVodeSetLinearSolver");
+  check(CVodeSetLinSysFn(cvode, sundials::SecondOrderNewton::linear_system), "CVodeSetLinSysFn");
+  check(CVodeSetMaxNumSteps(cvode, settings.max_steps), "CVodeSetMaxNumSteps");
+  check(CVodeSetMaxOrd(cvode, settings.max_order), "CVodeSetMaxOrd");
+  if (settings.work.min_step > 0.0) check(CVodeSetMinStep(cvode, settings.work.min_step), "CVodeSetMinStep");
+  check(CVodeRootInit(cvode, 1, wire_root), "CVodeRootInit");
   CVodeSetNoInactiveRootWarn(cvode);
 
   RunResult result;
@@ -122,23 +111,31 @@ RunResult integrate_minimal(CraneEquations& equations, const Eigen::VectorXd& z0
     }
     watch.observe(t, result.samples.back());
   };
+  long steps = 0;
   sundials::sample_outputs_keeping_partial(
-      result, settings, "cvode", CV_ROOT_RETURN, [&](double t_out, double& t) { return CVode(cvode, t_out, y.v, &t, CV_NORMAL); },
+      result, settings, "cvode", CV_ROOT_RETURN,
+      [&](double t_out, double& t) {
+        CVodeGetNumSteps(cvode, &steps);
+        const long allowed = sundials::call_step_limit(settings, steps);
+        if (allowed == 0) return CV_TOO_MUCH_WORK;
+        CVodeSetMaxNumSteps(cvode, allowed);
+        return CVode(cvode, t_out, y.v, &t, CV_NORMAL);
+      },
       [&] {
         int direction = 0;
         CVodeGetRootInfo(cvode, &direction);
         return direction;
       },
       [&](int flag, double t) {
-        if (!data.model_error.empty()) {
-          throw SolverFailure(data.model_error_kind, "CVODE", "the model failed: " + data.model_error, t,
-                              "check the scene's values; tighten --rtol/--atol");
-        }
-        throw SolverFailure(sundials::failure_kind(flag, CV_TOO_MUCH_WORK, CV_ERR_FAILURE, CV_CONV_FAILURE), "CVODE",
-                            sundials::flag_name(CVodeGetReturnFlagName(flag)), t, remedy_for(flag));
+        guard.rethrow(t);
+        double last_step = 0.0;
+        CVodeGetNumSteps(cvode, &steps);
+        result.stats.steps = steps;  // the partial result's statistics
+        CVodeGetCurrentStep(cvode, &last_step);
+        throw sundials::solver_failure("CVODE", settings, flag, sundials::flag_name(CVodeGetReturnFlagName(flag)) + message.suffix(),
+                                       {CV_TOO_MUCH_WORK, CV_ERR_FAILURE, CV_CONV_FAILURE}, steps, last_step, t);
       },
-      record,
-      result.wire_events);
+      record, result.wire_events);
 
   sundials::cvode_statistics(cvode, 0, result.stats);
   result.stats.function_evaluations += result.stats.jacobian_evaluations * equations.minimal_jacobian_evaluations();

@@ -158,7 +158,7 @@ class GeneralizedAlpha {
       }
     }
     if (!matrix_.factorize()) throw SolverFailure(FailureKind::newton_divergence, solver_name, "the iteration matrix is singular",
-                                                  t1, "reduce --step (now " + std::to_string(h_) + " s)");
+                                                  t1, "reduce the fixed step (now " + std::to_string(h_) + " s)");
     ++stats_.jacobian_evaluations;
     ++stats_.linear_setups;
     stats_.function_evaluations += eq_.full_jacobian_evaluations();
@@ -175,7 +175,7 @@ class GeneralizedAlpha {
 
   [[noreturn]] void fail(double t, const std::string& cause) {
     throw SolverFailure(FailureKind::newton_divergence, solver_name, cause, t,
-                        "reduce --step (now " + std::to_string(h_) + " s), or use an adaptive integrator (cvode, ida)");
+                        "reduce the fixed step (now " + std::to_string(h_) + " s), or use an adaptive solver (bdf)");
   }
 
   CraneEquations& eq_;
@@ -203,7 +203,7 @@ RunResult integrate_generalized_alpha(CraneEquations& equations, const Eigen::Ve
   const auto start = std::chrono::steady_clock::now();
   if (!(settings.fixed_step > 0.0) || !std::isfinite(settings.fixed_step)) {
     throw SolverFailure(FailureKind::setup, solver_name, "no step size given (fixed_step = " + std::to_string(settings.fixed_step) + ")",
-                        0.0, "give a fixed step > 0, e.g. --step 0.01");
+                        0.0, "give a fixed step > 0, e.g. 0.01 s");
   }
   if (!(settings.spectral_radius >= 0.0 && settings.spectral_radius <= 1.0)) {
     throw SolverFailure(FailureKind::setup, solver_name, "spectral radius ρ∞ = " + std::to_string(settings.spectral_radius) + " outside [0, 1]",
@@ -212,6 +212,21 @@ RunResult integrate_generalized_alpha(CraneEquations& equations, const Eigen::Ve
   // Steps land on every output time: h = Δt_out / ⌈Δt_out / fixed_step⌉.
   const long per_output = std::max(1L, static_cast<long>(std::ceil(settings.output_interval / settings.fixed_step - 1e-9)));
   const double h = settings.output_interval / static_cast<double>(per_output);
+  // The work limits: the step count is known before the run; the wall clock is checked every step.
+  const double planned_steps = static_cast<double>(per_output) * std::round(settings.duration / settings.output_interval);
+  if (planned_steps > static_cast<double>(settings.work.max_steps)) {
+    throw SolverFailure(FailureKind::too_much_work, solver_name,
+                        "the run needs " + std::to_string(static_cast<long>(planned_steps)) + " steps of " + std::to_string(h) +
+                            " s, more than the run's step limit of " + std::to_string(settings.work.max_steps),
+                        0.0, "use a larger fixed step, a shorter duration, or raise the step limit");
+  }
+  if (h < settings.work.min_step) {
+    throw SolverFailure(FailureKind::setup, solver_name,
+                        "the fixed step " + std::to_string(h) + " s is below the step-size floor " +
+                            std::to_string(settings.work.min_step) + " s",
+                        0.0, "use a fixed step above the step-size floor, or lower the floor");
+  }
+  const sundials::CallbackGuard wall_clock(solver_name, settings.work);
 
   RunResult result;
   result.stats.step = h;
@@ -229,10 +244,11 @@ RunResult integrate_generalized_alpha(CraneEquations& equations, const Eigen::Ve
       for (long i = 0; i < per_output; ++i) {
         t = t0 + static_cast<double>(i) * h;
         solver.step(t, result.wire_events);
+        wall_clock.check_wall_clock(t + h);
       }
       const double t_out = static_cast<double>(k) * settings.output_interval;
       if (!solver.finite()) {
-        throw SolverFailure(FailureKind::divergence, solver_name, "the solution is not finite", t_out, "reduce --step");
+        throw SolverFailure(FailureKind::divergence, solver_name, "the solution is not finite", t_out, "reduce the fixed step");
       }
       result.time.push_back(t_out);
       result.samples.push_back(solver.outputs(t_out));
@@ -246,7 +262,7 @@ RunResult integrate_generalized_alpha(CraneEquations& equations, const Eigen::Ve
   } catch (const std::exception& error) {  // the model refused a state
     progress.finish();
     SolverFailure failure(model_failure_kind(error), solver_name, std::string("the model failed: ") + error.what(), t,
-                          "reduce --step; check the scene's values");
+                          "reduce the fixed step; check the scene's values");
     failure.attach_partial(std::make_shared<const RunResult>(std::move(result)));
     throw failure;
   }

@@ -29,14 +29,13 @@ struct DaeData {
   int size;                  // nq
   Eigen::MatrixXd jacobian;  // C_q workspace (3 × nq)
   Eigen::VectorXd forces, mass_times, c, c_t;
-  std::string model_error;  // an exception the model threw inside a callback
-  FailureKind model_error_kind = FailureKind::model_error;
+  sundials::CallbackGuard* guard;  // every callback runs inside it
 };
 
 int dae_residual(sunrealtype t, N_Vector y, N_Vector y_dot, N_Vector r, void* user) {
   auto* d = static_cast<DaeData*>(user);
-  if (!sundials::Vector::view(y).allFinite()) return 1;
-  try {
+  return (*d->guard)([&] {
+    if (!sundials::Vector::view(y).allFinite()) return 1;
     const int n = d->size;
     const auto s = sundials::Vector::view(y);
     const auto s_dot = sundials::Vector::view(y_dot);
@@ -53,27 +52,21 @@ int dae_residual(sunrealtype t, N_Vector y, N_Vector y_dot, N_Vector r, void* us
     res.tail(constraints).noalias() = d->jacobian * v;
     res.tail(constraints) += d->c_t;
     return res.allFinite() ? 0 : 1;
-  } catch (const std::exception& error) {
-    d->model_error = error.what();
-    d->model_error_kind = model_failure_kind(error);
-    return -1;
-  }
+  });
+}
+
+int dae_jacobian(double t, double cj, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix J, void* user, N_Vector t1,
+                 N_Vector t2, N_Vector t3) {
+  auto* d = static_cast<DaeData*>(user);
+  return (*d->guard)([&] { return sundials::IndexTwoNewton::jacobian(t, cj, y, yp, r, J, user, t1, t2, t3); });
 }
 
 int wire_root(sunrealtype, N_Vector y, N_Vector, sunrealtype* g, void* user) {
   auto* d = static_cast<DaeData*>(user);
-  g[0] = d->equations->wire_stretch_full(sundials::Vector::view(y).head(d->size));
-  return 0;
-}
-
-std::string remedy_for(int flag) {
-  switch (flag) {
-    case IDA_TOO_MUCH_WORK: return "raise the step limit or loosen --rtol/--atol";
-    case IDA_ERR_FAIL: return "repeated error-test failures (step-size collapse): check for a wire snap or tighten --atol";
-    case IDA_CONV_FAIL: return "Newton did not converge: tighten tolerances, or use --integrator cvode (minimal coordinates)";
-    case IDA_CONSTR_FAIL: return "constraint failure: use --integrator cvode";
-    default: return "check the scene and the tolerances, or use --integrator cvode";
-  }
+  return (*d->guard)([&] {
+    g[0] = sundials::wire_event(d->equations->wire_stretch_full(sundials::Vector::view(y).head(d->size)));
+    return 0;
+  });
 }
 
 }  // namespace
@@ -84,7 +77,8 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
   const int total = 2 * n + 2 * constraints;
   sundials::Context context;
   sundials::Vector y(total, context.ctx), y_dot(total, context.ctx), tolerance(total, context.ctx), id(total, context.ctx);
-  DaeData data{&equations, n, Eigen::MatrixXd(constraints, n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(constraints), Eigen::VectorXd(constraints), {}, FailureKind::model_error};
+  sundials::CallbackGuard guard("IDA", settings.work);
+  DaeData data{&equations, n, Eigen::MatrixXd(constraints, n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(constraints), Eigen::VectorXd(constraints), &guard};
 
   // Consistent initial values at rest.
   auto s = y.map();
@@ -109,15 +103,23 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
   kind.tail(2 * constraints).setZero();
 
   sundials::IndexTwoNewton newton(equations, context.ctx, full_scale);
+  sundials::LibraryMessage message;
+  const sundials::SetupCheck check("IDA", IDAGetReturnFlagName, message);
   std::unique_ptr<void, void (*)(void*)> memory(IDACreate(context.ctx), [](void* p) { IDAFree(&p); });
   void* ida = memory.get();
-  if (IDAInit(ida, dae_residual, 0.0, y.v, y_dot.v) != IDA_SUCCESS || IDASVtolerances(ida, settings.relative_tolerance, tolerance.v) != IDA_SUCCESS ||
-      IDASetUserData(ida, &data) != IDA_SUCCESS || IDASetLinearSolver(ida, newton.solver(), newton.matrix()) != IDA_SUCCESS ||
-      IDASetJacFn(ida, sundials::IndexTwoNewton::jacobian) != IDA_SUCCESS ||
-      IDASetId(ida, id.v) != IDA_SUCCESS || IDASetSuppressAlg(ida, SUNTRUE) != IDA_SUCCESS ||
-      IDASetMaxNumSteps(ida, settings.max_steps) != IDA_SUCCESS || IDASetMaxOrd(ida, settings.max_order) != IDA_SUCCESS || IDARootInit(ida, 1, wire_root) != IDA_SUCCESS) {
-    throw SolverFailure(FailureKind::setup, "IDA", "set-up failed", 0.0, "report this as a bug");
-  }
+  check(ida, "IDACreate");
+  check(IDASetErrHandlerFn(ida, sundials::LibraryMessage::handler, &message), "IDASetErrHandlerFn");
+  check(IDAInit(ida, dae_residual, 0.0, y.v, y_dot.v), "IDAInit");
+  check(IDASVtolerances(ida, settings.relative_tolerance, tolerance.v), "IDASVtolerances");
+  check(IDASetUserData(ida, &data), "IDASetUserData");
+  check(IDASetLinearSolver(ida, newton.solver(), newton.matrix()), "IDASetLinearSolver");
+  check(IDASetJacFn(ida, dae_jacobian), "IDASetJacFn");
+  check(IDASetId(ida, id.v), "IDASetId");
+  check(IDASetSuppressAlg(ida, SUNTRUE), "IDASetSuppressAlg");
+  check(IDASetMaxNumSteps(ida, settings.max_steps), "IDASetMaxNumSteps");
+  check(IDASetMaxOrd(ida, settings.max_order), "IDASetMaxOrd");
+  if (settings.work.min_step > 0.0) check(IDASetMinStep(ida, settings.work.min_step), "IDASetMinStep");
+  check(IDARootInit(ida, 1, wire_root), "IDARootInit");
   IDASetNoInactiveRootWarn(ida);
 
   RunResult result;
@@ -137,26 +139,31 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
     result.samples.push_back(equations.full_outputs(t, state.head(n), state.segment(n, n), lambda));
     watch.observe(t, result.samples.back());
   };
+  long steps = 0;
   sundials::sample_outputs_keeping_partial(
       result, settings, "ida", IDA_ROOT_RETURN,
-      [&](double t_out, double& t) { return IDASolve(ida, t_out, &t, y.v, y_dot.v, IDA_NORMAL); },
+      [&](double t_out, double& t) {
+        IDAGetNumSteps(ida, &steps);
+        const long allowed = sundials::call_step_limit(settings, steps);
+        if (allowed == 0) return IDA_TOO_MUCH_WORK;
+        IDASetMaxNumSteps(ida, allowed);
+        return IDASolve(ida, t_out, &t, y.v, y_dot.v, IDA_NORMAL);
+      },
       [&] {
         int direction = 0;
         IDAGetRootInfo(ida, &direction);
         return direction;
       },
       [&](int flag, double t) {
-        if (!data.model_error.empty() || !newton.model_error().empty()) {
-          const bool in_residual = !data.model_error.empty();
-          throw SolverFailure(in_residual ? data.model_error_kind : newton.model_error_kind(), "IDA",
-                              "the model failed: " + (in_residual ? data.model_error : newton.model_error()), t,
-                              "check the scene's values; tighten --rtol/--atol");
-        }
-        throw SolverFailure(sundials::failure_kind(flag, IDA_TOO_MUCH_WORK, IDA_ERR_FAIL, IDA_CONV_FAIL), "IDA",
-                            sundials::flag_name(IDAGetReturnFlagName(flag)), t, remedy_for(flag));
+        guard.rethrow(t);
+        double last_step = 0.0;
+        IDAGetNumSteps(ida, &steps);
+        result.stats.steps = steps;  // the partial result's statistics
+        IDAGetCurrentStep(ida, &last_step);
+        throw sundials::solver_failure("IDA", settings, flag, sundials::flag_name(IDAGetReturnFlagName(flag)) + message.suffix(),
+                                       {IDA_TOO_MUCH_WORK, IDA_ERR_FAIL, IDA_CONV_FAIL}, steps, last_step, t);
       },
-      record,
-      result.wire_events);
+      record, result.wire_events);
 
   long nre = 0, nre_ls = 0;
   IDAGetNumSteps(ida, &result.stats.steps);

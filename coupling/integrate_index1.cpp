@@ -45,12 +45,11 @@ struct Index1Data {
   Eigen::VectorXd forces, free_acceleration, weights, work;
   Eigen::Vector3d c, c_t, c_dot, gamma, lambda;
   long jacobian_rhs_evaluations = 0;
-  std::string model_error;  // an exception the model threw inside a callback (never crosses C code)
-  FailureKind model_error_kind = FailureKind::model_error;
+  sundials::CallbackGuard* guard;  // every callback runs inside it
 
-  Index1Data(CraneEquations& e, int n, double a, double b)
+  Index1Data(CraneEquations& e, int n, double a, double b, sundials::CallbackGuard& g)
       : equations(&e), size(n), alpha(a), beta(b), jacobian(constraints, n), mass_matrix(n, n), mass(n), mass_inverse_jacobian_t(n, constraints),
-        forces(n), free_acceleration(n), weights(2 * n), work(n) {}
+        forces(n), free_acceleration(n), weights(2 * n), work(n), guard(&g) {}
 };
 
 // C, C_q, Ċ = C_q v and γ at (q, v): the one place the constraint is evaluated for the dynamics.
@@ -91,34 +90,26 @@ bool accelerations(Index1Data& d, double t, CraneEquations::ConstRef q, CraneEqu
 
 int index1_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
   auto* d = static_cast<Index1Data*>(user);
-  const auto state = sundials::Vector::view(y);
-  auto rate = sundials::Vector::view(y_dot);
-  if (!state.allFinite()) return 1;  // recoverable: CVODE retries with a smaller step
-  const int n = d->size;
-  try {
+  return (*d->guard)([&] {
+    const auto state = sundials::Vector::view(y);
+    auto rate = sundials::Vector::view(y_dot);
+    if (!state.allFinite()) return 1;  // recoverable: CVODE retries with a smaller step
+    const int n = d->size;
     rate.head(n) = state.tail(n);
     return accelerations(*d, t, state.head(n), state.tail(n), rate.tail(n)) ? 0 : 1;
-  } catch (const std::exception& error) {
-    d->model_error = error.what();
-    d->model_error_kind = model_failure_kind(error);
-    return -1;
-  }
+  });
 }
 
 int index1_jacobian(sunrealtype t, N_Vector y, N_Vector f_y, SUNMatrix jacobian, void* user, N_Vector work_y, N_Vector work_f,
                     N_Vector) {
   auto* d = static_cast<Index1Data*>(user);
-  try {
+  return (*d->guard)([&] {
     const int flag = sundials::second_order_jacobian(
         t, y, f_y, jacobian, work_y, work_f,
         [d](double s, auto q, auto v, auto v_dot) { return accelerations(*d, s, q, v, v_dot); });
     if (flag == 0) d->jacobian_rhs_evaluations += 2 * d->size;
     return flag;
-  } catch (const std::exception& error) {
-    d->model_error = error.what();
-    d->model_error_kind = model_failure_kind(error);
-    return -1;
-  }
+  });
 }
 
 // x minus its M-orthogonal component normal to C_q x = 0: x ← x − Y S⁻¹ C_q x.
@@ -171,7 +162,7 @@ int index1_projection(sunrealtype t, N_Vector ycur, N_Vector corr, sunrealtype e
   const int n = d->size;
   const auto state = sundials::Vector::view(ycur);
   auto correction = sundials::Vector::view(corr);
-  try {
+  return (*d->guard)([&] {
     if (CVodeGetErrWeights(d->cvode, d->error_weights) != CV_SUCCESS) return -1;
     d->weights = sundials::Vector::view(d->error_weights);
     if (!state.allFinite()) return 1;
@@ -191,44 +182,33 @@ int index1_projection(sunrealtype t, N_Vector ycur, N_Vector corr, sunrealtype e
       remove_normal_component(*d, error.tail(n));
     }
     return correction.allFinite() ? 0 : 1;
-  } catch (const std::exception& error) {
-    d->model_error = error.what();
-    d->model_error_kind = model_failure_kind(error);
-    return -1;
-  }
+  });
 }
 
 int wire_root(sunrealtype, N_Vector y, sunrealtype* g, void* user) {
   auto* d = static_cast<Index1Data*>(user);
-  g[0] = d->equations->wire_stretch_full(sundials::Vector::view(y).head(d->size));
-  return 0;
-}
-
-std::string remedy_for(int flag) {
-  switch (flag) {
-    case CV_TOO_MUCH_WORK: return "raise the step limit, or loosen --rtol/--atol";
-    case CV_ERR_FAILURE: return "repeated error-test failures (step-size collapse): check for a wire snap or tighten --atol";
-    case CV_CONV_FAILURE: return "Newton did not converge: tighten tolerances, or use --integrator cvode (minimal coordinates)";
-    case CV_PROJFUNC_FAIL:
-    case CV_REPTD_PROJFUNC_ERR: return "the projection onto the constraint did not converge: tighten tolerances or use --integrator ida";
-    default: return "check the scene and the tolerances, or use --integrator cvode";
-  }
+  return (*d->guard)([&] {
+    g[0] = sundials::wire_event(d->equations->wire_stretch_full(sundials::Vector::view(y).head(d->size)));
+    return 0;
+  });
 }
 
 }  // namespace
 
 RunResult integrate_index1(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings) {
   const auto start = std::chrono::steady_clock::now();
-  const bool baumgarte = settings.kind == Integrator::baumgarte;
-  const bool projection = settings.kind == Integrator::projection;
-  if (!baumgarte && !projection && settings.kind != Integrator::index1) {
-    throw std::invalid_argument("integrate_index1: settings.kind must be index1, baumgarte or projection");
+  const bool baumgarte = settings.kind.formulation == Formulation::baumgarte;
+  const bool projection = settings.kind.formulation == Formulation::projection;
+  const std::string label(to_string(settings.kind));
+  const std::string solver = "CVODE (" + label + ")";
+  // Settings a caller must never pass (the study checks them): std::invalid_argument, as before.
+  if (!baumgarte && !projection && settings.kind.formulation != Formulation::index1) {
+    throw std::invalid_argument("integrate_index1: the formulation must be index1, baumgarte or projection");
   }
   if (baumgarte && !(settings.baumgarte_frequency > 0.0 && std::isfinite(settings.baumgarte_frequency))) {
     throw std::invalid_argument("baumgarte_frequency " + std::to_string(settings.baumgarte_frequency) +
                                 ": not a valid stabilization frequency (valid range (0, inf) rad/s)");
   }
-  const std::string label(to_string(settings.kind));
   const int n = equations.full_size();
   sundials::Context context;
   sundials::Vector y(2 * n, context.ctx), tolerance(2 * n, context.ctx);
@@ -244,20 +224,28 @@ RunResult integrate_index1(CraneEquations& equations, const Eigen::VectorXd& z0,
   tolerance.map().tail(n) = settings.absolute_tolerance * full_scale;
 
   const double gain = baumgarte ? settings.baumgarte_frequency : 0.0;
-  Index1Data data(equations, n, gain, gain);
+  sundials::CallbackGuard guard(solver, settings.work);
+  Index1Data data(equations, n, gain, gain, guard);
+  sundials::LibraryMessage message;
+  const sundials::SetupCheck check(solver, CVodeGetReturnFlagName, message);
   std::unique_ptr<void, void (*)(void*)> memory(CVodeCreate(CV_BDF, context.ctx), [](void* p) { CVodeFree(&p); });
   void* cvode = memory.get();
+  check(cvode, "CVodeCreate");
+  check(CVodeSetErrHandlerFn(cvode, sundials::LibraryMessage::handler, &message), "CVodeSetErrHandlerFn");
   data.cvode = cvode;
   sundials::Vector error_weights(2 * n, context.ctx);
   data.error_weights = error_weights.v;
   sundials::DenseSolver linear(y.v, context.ctx);
-  if (CVodeInit(cvode, index1_rhs, 0.0, y.v) != CV_SUCCESS || CVodeSVtolerances(cvode, settings.relative_tolerance, tolerance.v) != CV_SUCCESS ||
-      CVodeSetUserData(cvode, &data) != CV_SUCCESS || CVodeSetLinearSolver(cvode, linear.solver, linear.matrix) != CV_SUCCESS ||
-      CVodeSetJacFn(cvode, index1_jacobian) != CV_SUCCESS || CVodeSetMaxNumSteps(cvode, settings.max_steps) != CV_SUCCESS ||
-      CVodeSetMaxOrd(cvode, settings.max_order) != CV_SUCCESS ||
-      CVodeRootInit(cvode, 1, wire_root) != CV_SUCCESS || (projection && CVodeSetProjFn(cvode, index1_projection) != CV_SUCCESS)) {
-    throw SolverFailure(FailureKind::setup, "CVODE (" + label + ")", "set-up failed", 0.0, "report this as a bug");
-  }
+  check(CVodeInit(cvode, index1_rhs, 0.0, y.v), "CVodeInit");
+  check(CVodeSVtolerances(cvode, settings.relative_tolerance, tolerance.v), "CVodeSVtolerances");
+  check(CVodeSetUserData(cvode, &data), "CVodeSetUserData");
+  check(CVodeSetLinearSolver(cvode, linear.solver, linear.matrix), "CVodeSetLinearSolver");
+  check(CVodeSetJacFn(cvode, index1_jacobian), "CVodeSetJacFn");
+  check(CVodeSetMaxNumSteps(cvode, settings.max_steps), "CVodeSetMaxNumSteps");
+  check(CVodeSetMaxOrd(cvode, settings.max_order), "CVodeSetMaxOrd");
+  if (settings.work.min_step > 0.0) check(CVodeSetMinStep(cvode, settings.work.min_step), "CVodeSetMinStep");
+  check(CVodeRootInit(cvode, 1, wire_root), "CVodeRootInit");
+  if (projection) check(CVodeSetProjFn(cvode, index1_projection), "CVodeSetProjFn");
   CVodeSetNoInactiveRootWarn(cvode);
 
   // Projection and the output times: CVODE projects the state at the end of each step, not the values
@@ -265,7 +253,7 @@ RunResult integrate_index1(CraneEquations& equations, const Eigen::VectorXd& z0,
   // on a driven hub) the projected error estimate vanishes and steps grow without bound, so the
   // interpolant drifts off the moving manifold C(q, t) = 0: the projection's steps are capped at the
   // output interval and every output state is projected as well (docs/theory.md §10).
-  if (projection) CVodeSetMaxStep(cvode, settings.output_interval);
+  if (projection) check(CVodeSetMaxStep(cvode, settings.output_interval), "CVodeSetMaxStep");
   sundials::Vector projected_output(2 * n, context.ctx), output_correction(2 * n, context.ctx);
 
   RunResult result;
@@ -278,27 +266,41 @@ RunResult integrate_index1(CraneEquations& equations, const Eigen::VectorXd& z0,
     }
     const auto s = projected_output.map();
     if (!accelerations(data, t, s.head(n), s.tail(n), v_dot)) {
-      throw SolverFailure(FailureKind::mass_not_positive_definite, "CVODE (" + label + ")",
-                          "the mass matrix is not positive definite", t, "check the scene's mass values");
+      throw SolverFailure(FailureKind::mass_not_positive_definite, solver, "the mass matrix is not positive definite", t);
     }
     result.time.push_back(t);
     result.samples.push_back(equations.full_outputs(t, s.head(n), s.tail(n), data.lambda));
     watch.observe(t, result.samples.back());
   };
+  long steps = 0;
   sundials::sample_outputs_keeping_partial(
-      result, settings, label.c_str(), CV_ROOT_RETURN, [&](double t_out, double& t) { return CVode(cvode, t_out, y.v, &t, CV_NORMAL); },
+      result, settings, label.c_str(), CV_ROOT_RETURN,
+      [&](double t_out, double& t) {
+        CVodeGetNumSteps(cvode, &steps);
+        const long allowed = sundials::call_step_limit(settings, steps);
+        if (allowed == 0) return CV_TOO_MUCH_WORK;
+        CVodeSetMaxNumSteps(cvode, allowed);
+        return CVode(cvode, t_out, y.v, &t, CV_NORMAL);
+      },
       [&] {
         int direction = 0;
         CVodeGetRootInfo(cvode, &direction);
         return direction;
       },
       [&](int flag, double t) {
-        if (!data.model_error.empty()) {
-          throw SolverFailure(data.model_error_kind, "CVODE (" + label + ")", "the model failed: " + data.model_error, t,
-                              "check the scene's values; tighten --rtol/--atol");
+        guard.rethrow(t);
+        double last_step = 0.0;
+        CVodeGetNumSteps(cvode, &steps);
+        result.stats.steps = steps;  // the partial result's statistics
+        CVodeGetCurrentStep(cvode, &last_step);
+        if (flag == CV_PROJFUNC_FAIL || flag == CV_REPTD_PROJFUNC_ERR) {
+          throw SolverFailure(FailureKind::step_size_collapse, solver,
+                              sundials::flag_name(CVodeGetReturnFlagName(flag)) +
+                                  ": the projection onto the constraint did not converge" + message.suffix(),
+                              t, "tighten the tolerances, or use the index2 formulation or minimal coordinates");
         }
-        throw SolverFailure(sundials::failure_kind(flag, CV_TOO_MUCH_WORK, CV_ERR_FAILURE, CV_CONV_FAILURE),
-                            "CVODE (" + label + ")", sundials::flag_name(CVodeGetReturnFlagName(flag)), t, remedy_for(flag));
+        throw sundials::solver_failure(solver, settings, flag, sundials::flag_name(CVodeGetReturnFlagName(flag)) + message.suffix(),
+                                       {CV_TOO_MUCH_WORK, CV_ERR_FAILURE, CV_CONV_FAILURE}, steps, last_step, t);
       },
       record, result.wire_events);
 

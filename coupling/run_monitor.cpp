@@ -1,4 +1,4 @@
-// Failure detectors (see run_monitor.hpp), failure names and SolverFailure.
+// Failure detectors (see run_monitor.hpp).
 #include "coupling/run_monitor.hpp"
 
 #include <algorithm>
@@ -113,46 +113,12 @@ void water_detections(const RunResult& result, const WaterLimits& water, std::ve
 
 }  // namespace
 
-std::string_view to_string(FailureKind kind) {
-  switch (kind) {
-    case FailureKind::divergence: return "divergence";
-    case FailureKind::step_size_collapse: return "step-size collapse";
-    case FailureKind::error_test_failures: return "error-test failures";
-    case FailureKind::newton_divergence: return "Newton divergence";
-    case FailureKind::too_much_work: return "too much work";
-    case FailureKind::constraint_drift: return "constraint drift";
-    case FailureKind::mass_not_positive_definite: return "mass matrix not positive definite";
-    case FailureKind::unstable_explicit: return "explicit instability";
-    case FailureKind::wire_slack: return "wire slack";
-    case FailureKind::snap_load: return "snap load";
-    case FailureKind::buckling: return "buckling";
-    case FailureKind::capsize: return "capsize";
-    case FailureKind::deck_submerged: return "deck submerged";
-    case FailureKind::cargo_in_water: return "cargo in water";
-    case FailureKind::model_error: return "model error";
-    case FailureKind::setup: return "set-up";
-  }
-  return "?";
-}
-
-SolverFailure::SolverFailure(FailureKind kind, std::string solver, std::string cause, double time, std::string remedy,
-                             double value)
-    : std::runtime_error(solver + " failed at t = " + std::to_string(time) + " s (" + std::string(to_string(kind)) +
-                         "): " + cause + ". Try: " + remedy),
-      kind_(kind), solver_(std::move(solver)), cause_(std::move(cause)), remedy_(std::move(remedy)), time_(time),
-      value_(value) {}
-
-FailureKind model_failure_kind(const std::exception& error) {
-  return dynamic_cast<const MassMatrixError*>(&error) != nullptr ? FailureKind::mass_not_positive_definite
-                                                                 : FailureKind::model_error;
-}
-
 void DivergenceWatch::observe(double t, const CraneOutputs& sample) {
   throw_if_stop_requested();  // SIGINT/SIGTERM: end the run at this output time
   const double deflection = sample.tip_deflection.norm();
   if (!std::isfinite(deflection) || !sample.cargo.allFinite() || !sample.hull.allFinite()) {
     throw SolverFailure(FailureKind::divergence, solver_, "the state is no longer finite", t,
-                        "reduce the step or tighten --rtol/--atol; check the scene's stiffness and mass values");
+                        "reduce the step or tighten the tolerances; check the scene's stiffness and mass values");
   }
   if (limits_.water.floating) watch_capsize(solver_, t, sample);
   if (limits_.boom_length <= 0.0) return;
@@ -191,7 +157,7 @@ void DivergenceWatch::observe(double t, const CraneOutputs& sample) {
   }
   throw SolverFailure(FailureKind::divergence, solver_, cause, t,
                       "the linear floating-frame boom lost its stiffness: switch on geometric stiffening "
-                      "(--stiffening centrifugal for a spinning boom, static near buckling), or lower the spin rate or load",
+                      "(centrifugal for a spinning boom, static near buckling), or lower the spin rate or load",
                       rate);
 }
 
@@ -274,8 +240,7 @@ std::vector<Detection> post_run_detections(const RunResult& result, const Monito
     }
     found.push_back({FailureKind::constraint_drift, when, false,
                      format("the clamp residual |C| reached %.3g m (bound %.3g m)", drift, limits.constraint_drift_limit),
-                     "stabilize the constraints: --integrator ida (index-2), baumgarte or projection, or cvode (minimal "
-                     "coordinates: no drift)",
+                     std::string(remedy(FailureKind::constraint_drift)),
                      drift});
   }
   const double ratio = max_buckling_load_ratio(result, limits);
@@ -288,7 +253,7 @@ std::vector<Detection> post_run_detections(const RunResult& result, const Monito
                      format("the boom's root compression reached %.3g of its Euler buckling load %.4g N", ratio,
                             limits.buckling_load),
                      ratio >= 1.0 ? "the boom buckles: the linear model is invalid; reduce the load"
-                                  : "switch on geometric stiffening (--stiffening static) so the bending stiffness "
+                                  : "switch on geometric stiffening (static) so the bending stiffness "
                                     "loss under compression is modelled",
                      ratio});
   }
@@ -298,7 +263,7 @@ std::vector<Detection> post_run_detections(const RunResult& result, const Monito
     found.push_back({FailureKind::error_test_failures, result.time.empty() ? 0.0 : result.time.back(), false,
                      format("%.0f error-test failures in %.0f steps", static_cast<double>(stats.error_test_failures),
                             static_cast<double>(stats.steps)),
-                     "a discontinuity (wire snap) or a stiff transient: tighten --atol or resolve the event", 0.0});
+                     std::string(remedy(FailureKind::error_test_failures)), 0.0});
   }
   return found;
 }

@@ -1,36 +1,14 @@
-// Integrator names, solver failures and the terminal progress line.
+// Dispatch to the integrator of a run (its row in integrator_table.cpp) and the terminal progress line.
 #include "coupling/simulation.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
+#include "coupling/integrator_table.hpp"
 #include "coupling/sundials_support.hpp"
 
 namespace ffrf::coupling {
-
-std::string_view to_string(Integrator integrator) {
-  switch (integrator) {
-    case Integrator::ida: return "ida";
-    case Integrator::cvode: return "cvode";
-    case Integrator::arkode: return "arkode";
-    case Integrator::generalized_alpha: return "generalized-alpha";
-    case Integrator::index1: return "index1";
-    case Integrator::baumgarte: return "baumgarte";
-    case Integrator::projection: return "projection";
-  }
-  return "?";
-}
-
-std::optional<Integrator> parse_integrator(std::string_view text) {
-  for (Integrator i : {Integrator::ida, Integrator::cvode, Integrator::arkode, Integrator::generalized_alpha,
-                       Integrator::index1, Integrator::baumgarte, Integrator::projection}) {
-    if (text == to_string(i)) return i;
-  }
-  return std::nullopt;
-}
-
-std::string integrator_choices() { return "ida|cvode|arkode|generalized-alpha|index1|baumgarte|projection"; }
 
 namespace {
 
@@ -51,20 +29,14 @@ RunResult kinematic_run(CraneEquations& equations, const IntegratorSettings& set
   return result;
 }
 
-bool minimal_coordinate_integrator(Integrator kind) { return kind == Integrator::cvode || kind == Integrator::arkode; }
-
 RunResult dispatch(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings) {
-  if (equations.minimal_size() == 0 && minimal_coordinate_integrator(settings.kind)) return kinematic_run(equations, settings);
-  switch (settings.kind) {
-    case Integrator::ida: return integrate_lagrange(equations, z0, settings);
-    case Integrator::cvode: return integrate_minimal(equations, z0, settings);
-    case Integrator::arkode: return integrate_explicit(equations, z0, settings);
-    case Integrator::generalized_alpha: return integrate_generalized_alpha(equations, z0, settings);
-    case Integrator::index1:
-    case Integrator::baumgarte:
-    case Integrator::projection: return integrate_index1(equations, z0, settings);
+  if (!is_valid(settings.kind)) {
+    throw SolverFailure(FailureKind::setup, "integrator", InvalidIntegrator(settings.kind).what(), 0.0,
+                        "choose one of the valid formulation × solver pairs");
   }
-  throw std::invalid_argument("unknown integrator");
+  const IntegratorEntry& entry = integrator_entry(settings.kind);
+  if (equations.minimal_size() == 0 && settings.kind.formulation == Formulation::minimal) return kinematic_run(equations, settings);
+  return entry.integrate(equations, z0, settings);
 }
 
 }  // namespace

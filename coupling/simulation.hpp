@@ -2,6 +2,7 @@
 // sampled outputs, the solver statistics every run must record, and the wire's slack/taut events.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -9,29 +10,32 @@
 
 #include "coupling/crane_equations.hpp"
 #include "coupling/failure.hpp"
+#include "coupling/integrator_choice.hpp"
 #include "coupling/run_monitor.hpp"
 
 namespace ffrf::coupling {
 
-// ida: Lagrange multipliers, stabilized index-2 DAE (IDA BDF); cvode: minimal-coordinate ODE (CVODE
-// BDF); arkode: minimal-coordinate ODE (ARKODE explicit Runge–Kutta, adaptive or fixed step);
-// generalized_alpha: full coordinates, index-3 with the Arnold–Brüls constraint treatment (fixed step);
-// index1, baumgarte, projection: full coordinates as an ODE with the constraint differentiated twice
-// (index 1, CVODE BDF): unstabilized, with Baumgarte's feedback, or with CVODE's projection onto
-// C = 0, C_q v = 0 after every step (integrate_index1.cpp).
-enum class Integrator { ida, cvode, arkode, generalized_alpha, index1, baumgarte, projection };
-// "ida", "cvode", "arkode", "generalized-alpha", "index1", "baumgarte", "projection"
-std::string_view to_string(Integrator integrator);
-std::optional<Integrator> parse_integrator(std::string_view text);
-std::string integrator_choices();  // "ida|cvode|arkode|generalized-alpha|index1|baumgarte|projection"
+// The integrator is a constraint formulation × a solver (coupling/integrator_choice.hpp); the valid
+// pairs and the function each runs are in coupling/integrator_table.cpp.
+
+// The work a run may do before it ends with a "too much work" (steps, wall clock) or "step-size
+// collapse" (floor) failure, for every integrator. study/work_limits.hpp estimates fixed-step work
+// before a run; these limits stop adaptive runs that would otherwise crawl (explicit RK on a stiff
+// boom, a step size collapsing towards 1e-24 s).
+struct WorkLimits {
+  long max_steps = 10000000;  // steps over the whole run (study::max_fixed_steps for fixed steps)
+  double max_wall_seconds = std::numeric_limits<double>::infinity();  // wall clock of the integration [s]
+  double min_step = 0.0;      // step-size floor of the adaptive solvers [s]; 0: none (the solver's own)
+};
 
 struct IntegratorSettings {
-  Integrator kind = Integrator::cvode;
+  Integrator kind = Integrator::cvode;  // formulation × solver
   double relative_tolerance = 1e-6;
   double absolute_tolerance = 1e-8;  // scaled by CraneEquations::coordinate_scale()
   double duration = 120.0;           // [s]
   double output_interval = 0.05;     // [s]
   long max_steps = 500000;           // per output interval (SUNDIALS semantics)
+  WorkLimits work = {};              // over the whole run
   // Fixed step [s]: required > 0 for generalized-α (rounded down to divide the output interval);
   // for arkode 0 = adaptive with the tolerances, > 0 = this fixed step (outputs interpolated).
   double fixed_step = 0.0;
@@ -97,7 +101,8 @@ RunResult integrate_generalized_alpha(CraneEquations& equations, const Eigen::Ve
 // settings.baumgarte_frequency) or projection (α = β = 0, CVODE projects q onto C(q) = 0 and v onto
 // C_q v = 0 in the mass-weighted norm after every step).
 RunResult integrate_index1(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings);
-// Dispatch on settings.kind, then the post-run detectors (coupling/run_monitor.hpp) fill
+// The row of settings.kind in coupling/integrator_table.cpp (InvalidIntegrator for a pair that is
+// not implemented, as a SolverFailure of kind set-up), then the post-run detectors (coupling/run_monitor.hpp) fill
 // RunResult::detections. A fatal detection is a SolverFailure with the partial result attached.
 RunResult integrate(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings);
 

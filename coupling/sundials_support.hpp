@@ -1,6 +1,9 @@
-// Small RAII helpers around the SUNDIALS 6 C API shared by the KINSOL, CVODE and IDA adapters:
-// the context, serial vectors viewed as Eigen vectors, dense matrix + dense linear solver, and a
-// terminal progress line.
+// Small RAII helpers around the SUNDIALS 6 C API shared by the KINSOL, CVODE, IDA and ARKODE
+// adapters: the context, serial vectors viewed as Eigen vectors, dense matrix + dense linear solver,
+// a terminal progress line; and what every adapter does the same way: set-up calls checked by name
+// (SetupCheck), one guard for every callback (CallbackGuard: no C++ exception crosses SUNDIALS' C
+// frames, and the wall-clock limit is checked there), the run's step budget and step-size floor
+// (WorkLimits), and the failure a solver's error flag means (solver_failure).
 #pragma once
 
 #include <cvode/cvode.h>
@@ -14,8 +17,11 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -31,6 +37,17 @@ inline std::string flag_name(char* name) {
   std::string text = name != nullptr ? name : "unknown flag";
   std::free(name);
   return text;
+}
+
+// The wire's slack/taut event function for the root finders: g = ℓ − L0 where the wire is taut
+// (ℓ > L0) and negative where it is slack (ℓ ≤ L0, the tension law's slack branch, coupling/wire_rope.hpp),
+// never exactly zero. ℓ − L0 is the difference of positions ~100 m from the origin, so it is quantized
+// in steps of ~1e-14 m, while the root finders restart after an event by checking g at the root and
+// 100·ε·(|t| + |h|) ≈ 2e-14 s later (CVODE's cvRcheck2, IDA's and ARKODE's alike): with the cargo
+// moving at ~1 m/s both can round to exactly 0, which SUNDIALS rejects as "Root found at and very
+// near t" (an illegal-input failure). An exact 0 belongs to the slack side, where the force law puts it.
+inline double wire_event(double stretch) {
+  return stretch > 0.0 ? stretch : std::min(stretch, -std::numeric_limits<double>::min());
 }
 
 struct Context {
@@ -77,6 +94,149 @@ struct DenseSolver {
   DenseSolver& operator=(const DenseSolver&) = delete;
 };
 
+// SUNDIALS' own error messages ("reltol < 0 illegal.", "At t = 0 and h = 0.05, the error test failed
+// repeatedly or with |h| = hmin."), kept for the failure's cause instead of printed on stderr:
+// register `handler` with this object right after the solver is created (CVodeSetErrHandlerFn, ...).
+struct LibraryMessage {
+  std::string text;
+  static void handler(int, const char*, const char* function, char* message, void* self) {
+    static_cast<LibraryMessage*>(self)->text = std::string(function) + ": " + message;
+  }
+  std::string suffix() const { return text.empty() ? std::string() : " (" + text + ")"; }
+};
+
+// Set-up calls checked by name, as SUNDIALS' own examples do (cvRoberts_dns.c's check_retval): a
+// call that returns a negative flag, or a constructor that returns null, throws
+// SolverFailure(set-up) naming the call, the flag and SUNDIALS' message, e.g. "CVodeSVtolerances returned
+// CV_ILL_INPUT (CVodeSVtolerances: reltol < 0 illegal.)".
+class SetupCheck {
+ public:
+  using FlagName = char* (*)(long int);
+  SetupCheck(std::string solver, FlagName flag_name, const LibraryMessage& message)
+      : solver_(std::move(solver)), flag_name_(flag_name), message_(message) {}
+  void operator()(int flag, const char* call) const {
+    if (flag < 0) {
+      throw SolverFailure(FailureKind::setup, solver_,
+                          std::string(call) + " returned " + flag_name(flag_name_(flag)) + message_.suffix(), 0.0);
+    }
+  }
+  void operator()(const void* created, const char* call) const {
+    if (created == nullptr) throw SolverFailure(FailureKind::setup, solver_, std::string(call) + " returned null", 0.0);
+  }
+
+ private:
+  std::string solver_;
+  FlagName flag_name_;
+  const LibraryMessage& message_;
+};
+
+// One guard for every solver callback (right-hand side, residual, Jacobian, linear system, root
+// function, projection, post-step check). A C++ exception never crosses SUNDIALS' C frames: the
+// guard stores it (its failure kind from model_failure_kind, its message) and returns −1, SUNDIALS'
+// unrecoverable callback failure; the adapter turns it into a SolverFailure when the solver returns
+// (rethrow). Every call also checks the run's wall-clock limit (WorkLimits::max_wall_seconds),
+// ending the run the same way with "too much work".
+class CallbackGuard {
+ public:
+  CallbackGuard(std::string solver, const WorkLimits& limits)
+      : solver_(std::move(solver)), wall_limit_(limits.max_wall_seconds), start_(std::chrono::steady_clock::now()) {}
+  CallbackGuard(const CallbackGuard&) = delete;
+  CallbackGuard& operator=(const CallbackGuard&) = delete;
+
+  template <class Body>
+  int operator()(Body&& body) noexcept {
+    if (failed_) return -1;
+    if (std::isfinite(wall_limit_) && elapsed() > wall_limit_) {
+      store(FailureKind::too_much_work, "the wall-clock limit of " + number(wall_limit_) + " s was reached");
+      return -1;
+    }
+    try {
+      return body();
+    } catch (const SolverFailure& failure) {
+      store(failure.kind(), failure.cause());
+    } catch (const std::exception& error) {
+      store(model_failure_kind(error), std::string("the model failed: ") + error.what());
+    } catch (...) {
+      store(FailureKind::model_error, "the model failed: an exception of unknown type");
+    }
+    return -1;
+  }
+  bool failed() const { return failed_; }
+  FailureKind kind() const { return kind_; }
+  // The stored failure as a SolverFailure at t (with the remedy of its kind); nothing when none.
+  void rethrow(double t) const {
+    if (failed_) throw SolverFailure(kind_, solver_, cause_, t);
+  }
+  // For loops outside SUNDIALS (generalized-α): throws "too much work" past the wall-clock limit.
+  void check_wall_clock(double t) const {
+    if (std::isfinite(wall_limit_) && elapsed() > wall_limit_) {
+      throw SolverFailure(FailureKind::too_much_work, solver_, "the wall-clock limit of " + number(wall_limit_) + " s was reached", t);
+    }
+  }
+  const std::string& solver() const { return solver_; }
+
+ private:
+  double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+  static std::string number(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", x);
+    return text;
+  }
+  void store(FailureKind kind, std::string cause) noexcept {
+    failed_ = true;
+    kind_ = kind;
+    try {
+      cause_ = std::move(cause);
+    } catch (...) {
+    }
+  }
+
+  std::string solver_;
+  double wall_limit_;
+  std::chrono::steady_clock::time_point start_;
+  bool failed_ = false;
+  FailureKind kind_ = FailureKind::model_error;
+  std::string cause_;
+};
+
+// The steps the next solver call may take: the per-output-interval limit, within what is left of
+// the run's step limit; 0 when the run's limit is spent (the adapter then reports the solver's
+// too-much-work flag without calling it: a call allowed even one step could reach its output time).
+inline long call_step_limit(const IntegratorSettings& settings, long steps_so_far) {
+  return std::max(0L, std::min(settings.max_steps, settings.work.max_steps - steps_so_far));
+}
+
+// What a solver's error flag means: the failure kind from the solver's own flag values, the cause
+// (the flag's name, the step limit that was reached, or the step-size floor the step fell to), and
+// the remedy of the kind. `last_step`: the step size last attempted.
+struct SolverFlags {
+  int too_much_work, error_test_failure, convergence_failure;
+};
+inline SolverFailure solver_failure(const std::string& solver, const IntegratorSettings& settings, int flag,
+                                    const std::string& flag_text, SolverFlags flags, long steps, double last_step,
+                                    double t) {
+  char cause[320];
+  if (flag == flags.too_much_work) {
+    if (steps >= settings.work.max_steps) {
+      std::snprintf(cause, sizeof cause, "%s: the run's step limit of %ld steps was reached", flag_text.c_str(),
+                    settings.work.max_steps);
+    } else {
+      std::snprintf(cause, sizeof cause, "%s: more than %ld steps within one output interval (%ld steps in all)",
+                    flag_text.c_str(), settings.max_steps, steps);
+    }
+    return {FailureKind::too_much_work, solver, cause, t};
+  }
+  const bool at_floor = settings.work.min_step > 0.0 && std::abs(last_step) <= settings.work.min_step * (1.0 + 1e-6);
+  if ((flag == flags.error_test_failure || flag == flags.convergence_failure) && at_floor) {
+    std::snprintf(cause, sizeof cause, "%s: the step fell to the step-size floor %.3g s and failed there",
+                  flag_text.c_str(), settings.work.min_step);
+    return {FailureKind::step_size_collapse, solver, cause, t};
+  }
+  if (flag == flags.error_test_failure) return {FailureKind::step_size_collapse, solver, flag_text, t};
+  if (flag == flags.convergence_failure) return {FailureKind::newton_divergence, solver, flag_text, t};
+  return {FailureKind::model_error, solver, flag_text, t};
+}
+
 // Progress on stderr, only when enabled (callers enable it for terminals).
 class Progress {
  public:
@@ -108,11 +268,7 @@ void sample_outputs(const IntegratorSettings& settings, const char* label, int r
     } catch (const SolverFailure&) {
       throw;
     } catch (const std::exception& error) {
-      const FailureKind kind = model_failure_kind(error);
-      throw SolverFailure(kind, label, std::string("the model failed: ") + error.what(), t,
-                          kind == FailureKind::mass_not_positive_definite
-                              ? "check the scene's masses and added masses (a negative or too small inertia)"
-                              : "check the scene's values; tighten --rtol/--atol");
+      throw SolverFailure(model_failure_kind(error), label, std::string("the model failed: ") + error.what(), t);
     }
   };
   try {
@@ -179,14 +335,6 @@ inline void cvode_statistics(void* cvode, long jacobian_rhs_evaluations, SolverS
   CVodeGetNumNonlinSolvIters(cvode, &stats.newton_iterations);
   CVodeGetNumErrTestFails(cvode, &stats.error_test_failures);
   CVodeGetNumNonlinSolvConvFails(cvode, &stats.convergence_failures);
-}
-
-// The failure kind of a negative SUNDIALS flag, given the solver's own flag values.
-inline FailureKind failure_kind(int flag, int too_much_work, int error_test_failure, int convergence_failure) {
-  if (flag == too_much_work) return FailureKind::too_much_work;
-  if (flag == error_test_failure) return FailureKind::step_size_collapse;
-  if (flag == convergence_failure) return FailureKind::newton_divergence;
-  return FailureKind::model_error;
 }
 
 // sample_outputs, and on a SolverFailure the samples so far attached to it as its partial result.

@@ -183,7 +183,7 @@ study::ChannelBaseline read_channel(const Node& n, std::size_t samples) {
   return c;
 }
 
-study::Baseline read_baseline_body(const Node& root) {
+study::Baseline read_baseline_body(const Node& root, long long version) {
   study::Baseline b;
   b.model = read_model(root.at("model"));
   b.cost = read_cost(root.at("cost"));
@@ -194,6 +194,17 @@ study::Baseline read_baseline_body(const Node& root) {
     const Node mode = modes.at(j);
     b.boom_frequencies.push_back({mode.at("hz").number(0.0, INFINITY, true, "Hz"), mode.at("kind").text(),
                                   mode.at("order").integer(0, 1'000'000)});
+  }
+  if (version >= 2) {  // format 1 had no coupled modes
+    const Node coupled = root.at("coupled_modes");
+    if (!coupled.is_null()) {
+      const Node list = coupled.at("modes");
+      for (std::size_t j = 0; j < list.size(); ++j) {
+        const Node mode = list.at(j);
+        b.coupled_modes.push_back({mode.at("hz").number(0.0, INFINITY, true, "Hz"), mode.at("damping_ratio").number(-1.0, 1.0, false),
+                                   mode.at("dominant").text()});
+      }
+    }
   }
   const Node error = root.at("integration_error");
   if (!error.is_null() && error.has("problem")) {
@@ -283,6 +294,15 @@ std::string baseline_json(const BaselineFile& file) {
   Json modes = Json::array();
   for (const study::BoomFrequency& f : b.boom_frequencies) modes.push_back(Json{{"hz", f.hz}, {"kind", f.kind}, {"order", f.order}});
   doc["boom_frequencies"] = Json{{"boundary", "clamped-free"}, {"elements", b.boom_elements}, {"solver", "arpack"}, {"modes", modes}};
+  if (b.coupled_modes.empty()) {
+    doc["coupled_modes"] = nullptr;
+  } else {
+    Json coupled = Json::array();
+    for (const study::CoupledFrequency& f : b.coupled_modes) {
+      coupled.push_back(Json{{"hz", f.hz}, {"damping_ratio", f.damping_ratio}, {"dominant", f.dominant}});
+    }
+    doc["coupled_modes"] = Json{{"linearised_about", "static equilibrium, calm water"}, {"modes", coupled}};
+  }
   if (b.integration_error && !b.integration_error->measured()) {
     doc["integration_error"] = Json{{"problem", b.integration_error->problem}};
   } else if (b.integration_error) {
@@ -318,8 +338,12 @@ BaselineFile parse_baseline(const std::string& text, const std::string& file) {
   const Node format = root.at("format");
   if (format.text() != format_name) format.fail(fmt::format("not an ffrf baseline (expected \"{}\")", format_name));
   const Node version = root.at("format_version");
-  if (!doc["format_version"].is_number_integer() || doc["format_version"].get<long long>() != baseline_format_version) {
-    version.fail(fmt::format("this ffrf reads baseline format version {}; record the baseline again", baseline_format_version));
+  const bool known_version = doc["format_version"].is_number_integer() &&
+                             doc["format_version"].get<long long>() >= oldest_baseline_format_version &&
+                             doc["format_version"].get<long long>() <= baseline_format_version;
+  if (!known_version) {
+    version.fail(fmt::format("this ffrf reads baseline format versions {} to {}; record the baseline again",
+                             oldest_baseline_format_version, baseline_format_version));
   }
   BaselineFile result;
   const Node provenance = root.at("provenance");
@@ -330,7 +354,7 @@ BaselineFile parse_baseline(const std::string& text, const std::string& file) {
   result.provenance.scene_path = scene.at("path").text();
   result.provenance.scene_name = scene.at("name").text();
   result.provenance.scene_hash = scene.at("content_hash").text();
-  result.baseline = read_baseline_body(root);
+  result.baseline = read_baseline_body(root, doc["format_version"].get<long long>());
   return result;
 }
 

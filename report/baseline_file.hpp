@@ -1,4 +1,4 @@
-// The regression-baseline file (issue 12.5): a JSON document, format "ffrf-baseline" version 1,
+// The regression-baseline file (issue 12.5): a JSON document, format "ffrf-baseline" version 2,
 // that `ffrf baseline record` writes and `ffrf baseline check` reads (docs/baselines.md documents
 // every field). It holds a study::Baseline (model, frequencies, statistics, histories) and where it
 // came from: ffrf's version and git commit, the date, the scene file's path, name and content hash
@@ -14,7 +14,10 @@
 
 namespace ffrf::report {
 
-inline constexpr int baseline_format_version = 1;
+// Version 2 added the coupled crane's natural modes ("coupled_modes"); version 1 files (without
+// them) are still read, with no coupled modes to check.
+inline constexpr int baseline_format_version = 2;
+inline constexpr int oldest_baseline_format_version = 1;
 
 struct BaselineProvenance {
   std::string ffrf_version;

@@ -86,6 +86,12 @@ std::string baseline_record_text(const BaselineFile& file) {
     frequencies += fmt::format("{}{:.10g} ({} {})", frequencies.empty() ? "" : ", ", f.hz, f.kind, f.order);
   }
   text += fmt::format("boom        clamped-free, N = {}: {} Hz\n", b.boom_elements, frequencies.empty() ? "(none)" : frequencies);
+  std::string coupled;
+  for (const study::CoupledFrequency& f : b.coupled_modes) {
+    coupled += fmt::format("{}{:.8g} ({}, zeta {:.3g} %)", coupled.empty() ? "" : ", ", f.hz, f.dominant, 100.0 * f.damping_ratio);
+  }
+  text += fmt::format("coupled     natural modes of the linearised crane: {}{}\n", coupled.empty() ? "(none: no hull)" : coupled,
+                      coupled.empty() ? "" : " Hz");
   text += fmt::format("statistics  over t >= {:g} s{}\n", b.window_start, b.window_after_ramp ? " (after the wave ramp)" : " (the whole run)");
   if (b.integration_error && !b.integration_error->measured()) {
     text += fmt::format("error       integration error not measured ({}): a check's default tolerance of the responses is "

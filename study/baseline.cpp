@@ -13,6 +13,7 @@
 #include "fem/boundary.hpp"
 #include "study/error_measure.hpp"
 #include "study/modes.hpp"
+#include "study/rao.hpp"
 #include "study/output_series.hpp"
 
 namespace ffrf::study {
@@ -99,6 +100,17 @@ std::vector<BoomFrequency> boom_frequencies(const scene::Scene& scene, int eleme
   return frequencies;
 }
 
+std::vector<CoupledFrequency> coupled_frequencies(const scene::Scene& scene, const scene::BoomChoice& choice,
+                                                  modal::ModeCache* modes) {
+  std::vector<CoupledFrequency> out;
+  if (!scene.is_crane()) return out;
+  for (const NaturalMode& mode : coupled_natural_modes(scene, choice, modes)) {
+    if (out.size() == static_cast<std::size_t>(baseline_coupled_modes)) break;
+    out.push_back({mode.angular_frequency / (2.0 * std::numbers::pi), mode.damping_ratio, mode.dominant});
+  }
+  return out;
+}
+
 namespace {
 
 std::vector<std::string> chosen_columns(const scene::Scene& scene, const std::vector<std::string>& outputs) {
@@ -124,6 +136,7 @@ Baseline record_run(const scene::Scene& scene, const BaselineRequest& request, m
   baseline.boom_elements = request.choice.elements;
   baseline.boom_frequencies = boom_frequencies(scene, request.choice.elements);
 
+  baseline.coupled_modes = coupled_frequencies(scene, baseline.model.choice, modes);
   const ModelRun run = run_model(scene, baseline.model.choice, request.settings, modes);
   baseline.cost = run.result.stats;
   baseline.window_start = run.window.start_s;

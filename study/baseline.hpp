@@ -2,6 +2,9 @@
 // so that a later run of the same scene and model can be checked against it (study/baseline_check.hpp).
 //  * The boom's natural frequencies as `ffrf modes` computes them: clamped–free, unloaded, on the
 //    model's mesh (N elements), ARPACK shift-invert at machine precision (study::solve_modes).
+//  * The coupled crane's natural frequencies and damping ratios (crane scenes): the lowest
+//    baseline_coupled_modes modes of the model linearised about its static equilibrium in calm
+//    water, as `ffrf rao` computes them (study::coupled_natural_modes, study/rao.hpp).
 //  * Per chosen output (a crane_series() column, default the judged outputs of study/error_measure.hpp):
 //    its value at the static equilibrium and its min, max, mean, RMS about the static value and
 //    standard deviation over the statistics window (study::stats_window: after the wave ramp), and
@@ -59,6 +62,13 @@ struct BoomFrequency {
   int order = 0;     // 1-based within its kind
 };
 
+// One natural mode of the coupled, linearised crane.
+struct CoupledFrequency {
+  double hz = 0.0;
+  double damping_ratio = 0.0;  // fraction of critical [-]
+  std::string dominant;        // the coordinate with the largest share of the kinetic energy ("hull heave", "boom")
+};
+
 struct ChannelBaseline {
   std::string name;   // crane_series() column, unit in the name ("wire_tension_N")
   std::string unit;   // "N"
@@ -87,6 +97,9 @@ struct Baseline {
   coupling::SolverStats cost;  // steps, evaluations, wall time of the recorded run
   int boom_elements = 0;       // the mesh of the frequencies
   std::vector<BoomFrequency> boom_frequencies;
+  // Lowest natural modes of the coupled crane, lowest first; empty for a hub scene and in a
+  // baseline recorded before they were (file format 1).
+  std::vector<CoupledFrequency> coupled_modes;
   double window_start = 0.0;   // statistics window start [s]
   bool window_after_ramp = false;
   std::optional<double> wire_amplification;  // none without a wire
@@ -108,6 +121,8 @@ struct BaselineRequest {
 
 // The boom modes recorded per baseline (as `ffrf modes`' default), fewer on a coarse mesh.
 inline constexpr int baseline_boom_modes = 6;
+// The coupled crane's natural modes recorded per baseline (the lowest; all when fewer).
+inline constexpr int baseline_coupled_modes = 8;
 // Samples kept per shortest period of the physics in a decimated history.
 inline constexpr int history_points_per_period = 20;
 
@@ -126,6 +141,11 @@ int history_decimation(const scene::Scene& scene, double output_interval, double
 // The boom's frequencies as `ffrf modes SCENE -N elements` (up to baseline_boom_modes).
 // Throws modal::EigenSolverError.
 std::vector<BoomFrequency> boom_frequencies(const scene::Scene& scene, int elements);
+
+// The lowest baseline_coupled_modes natural modes of the crane of `choice` linearised about its
+// static equilibrium (study::coupled_natural_modes); empty for a scene without a hull.
+std::vector<CoupledFrequency> coupled_frequencies(const scene::Scene& scene, const scene::BoomChoice& choice,
+                                                  modal::ModeCache* modes = nullptr);
 
 // Runs the model once (study::run_model) and keeps what a baseline holds, without the integration
 // error. Throws std::invalid_argument for an unknown output, scene::SceneError,

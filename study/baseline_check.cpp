@@ -63,6 +63,35 @@ void compare_frequencies(const Baseline& baseline, const Baseline& run, double t
   }
 }
 
+// The coupled crane's natural modes, matched by order: frequency (scale f_j) and damping ratio
+// (scale ζ_j), both at the frequency tolerance.
+void compare_coupled_modes(const Baseline& baseline, const Baseline& run, double tolerance, std::vector<Deviation>& out) {
+  for (std::size_t j = 0; j < baseline.coupled_modes.size(); ++j) {
+    const CoupledFrequency& b = baseline.coupled_modes[j];
+    if (j >= run.coupled_modes.size()) {
+      out.push_back(not_compared("coupled", fmt::format("f{}", j + 1),
+                                 fmt::format("this run's crane has only {} natural modes", run.coupled_modes.size())));
+      continue;
+    }
+    const CoupledFrequency& r = run.coupled_modes[j];
+    const std::string detail = r.dominant == b.dominant ? b.dominant : fmt::format("baseline {}, this run {}", b.dominant, r.dominant);
+    const std::pair<const char*, double CoupledFrequency::*> quantities[] = {{"f", &CoupledFrequency::hz},
+                                                                           {"zeta", &CoupledFrequency::damping_ratio}};
+    for (const auto& [name, member] : quantities) {
+      Deviation d;
+      d.channel = "coupled";
+      d.quantity = fmt::format("{}{}", name, j + 1);
+      d.detail = detail;
+      d.baseline = b.*member;
+      d.value = r.*member;
+      d.difference = std::abs(d.value - d.baseline);
+      d.scale = std::abs(d.baseline);
+      judge(d, tolerance, 0.0);
+      out.push_back(d);
+    }
+  }
+}
+
 void compare_statistics(const ChannelBaseline& b, const ChannelBaseline& r, double relative, double absolute,
                         std::vector<Deviation>& out) {
   const std::pair<const char*, double ChannelBaseline::*> statistics[] = {
@@ -210,6 +239,7 @@ BaselineCheck compare_baseline(const Baseline& baseline, const Baseline& run, co
   check.response_tolerance_given = tolerances.relative.has_value();
   check.absolute_tolerance = tolerances.absolute;
   compare_frequencies(baseline, run, check.frequency_tolerance, check.deviations);
+  compare_coupled_modes(baseline, run, check.frequency_tolerance, check.deviations);
   for (const ChannelBaseline& b : baseline.channels) {
     const double relative = relative_for(tolerances, b.name, check.response_tolerance);
     const ChannelBaseline* r = run.channel(b.name);

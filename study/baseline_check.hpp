@@ -6,6 +6,10 @@
 //    eigenvalues to machine precision (tolerance 0), so the same model on another compiler or BLAS
 //    moves them by ~1e-13; 1e-6 leaves seven orders for that and still catches a change of 2e-6 in
 //    E, ρA or L (f ∝ √(E/ρA)/L²).
+//  * coupled natural mode j of the linearised crane (Baseline::coupled_modes): its frequency (scale
+//    f_j) and damping ratio (scale ζ_j) at the same relative tolerance as the boom frequencies (name
+//    "frequencies"): the linearisation is deterministic (difference Jacobians of fixed increments,
+//    a dense eigen solver), and E × 1.01 moves the boom-dominated modes by ~5e-3.
 //  * statistic (static value, min, max, mean, RMS, std) of a channel and its time history (the RMS
 //    over the history's samples of the difference): scale = the channel's standard deviation in the
 //    baseline (its motion in the window), at least 1e-6 of its largest magnitude (a channel that
@@ -78,8 +82,8 @@ class ToleranceError : public std::invalid_argument {
 void validate(const BaselineTolerances& tolerances, const Baseline& baseline);
 
 struct Deviation {
-  std::string channel;    // a channel column, "boom" (frequencies) or "wire" (amplification)
-  std::string quantity;   // "f1", "static", "min", "max", "mean", "rms", "std", "history", "amplification"
+  std::string channel;    // a channel column, "boom" (frequencies), "coupled" (the crane's natural modes) or "wire" (amplification)
+  std::string quantity;   // "f1", "zeta1" (coupled), "static", "min", "max", "mean", "rms", "std", "history", "amplification"
   std::string detail;     // "bending 1" of a frequency; "over 0–40 s, 801 samples" of a history
   double baseline = 0.0;  // the recorded value (history: the baseline's RMS about its mean)
   double value = 0.0;     // this run's (history: this run's RMS about the baseline's mean)

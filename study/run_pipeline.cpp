@@ -110,6 +110,7 @@ coupling::IntegratorSettings integrator_settings(const scene::Scene& scene, cons
   }
   settings.max_order = request.max_order != 0 ? request.max_order : (scene.boom.damping_ratio > 0.0 ? 5 : 2);
   settings.monitor = monitor_limits(scene);
+  settings.work = request.work;
   return settings;
 }
 

@@ -53,6 +53,7 @@ struct DynamicsRequest {
   std::optional<double> duration;  // default: simulation.duration of the scene
   double fixed_step = 0.0;         // generalized-α: required; arkode: 0 = adaptive [s]
   int max_order = 0;               // largest BDF order of cvode/ida; 0: from the physics
+  coupling::WorkLimits work = {};  // steps, wall clock and step-size floor of the run
 };
 
 // The tolerances every run accepts: tighter than 1e-12 is at the edge of what the integrators

@@ -197,6 +197,15 @@ std::vector<CliCase> misuse_cases() {
       command("stability_of_a_beam", "stability {cantilever} --out {out}", {"not a crane scene"}),
       command("unknown_global_option", "--frobnicate", {"--frobnicate: unknown option"}),
       command("scene_reference_extra", "scene-reference extra", {"not expected"}),
+      // `ffrf rao`: the frequency grid, the time-domain check's options, a scene without water.
+      command("rao_periods_malformed", "rao {crane} --periods 3:30 --out {out}", {"--periods 3:30", "three fields", "a:b:n"}),
+      command("rao_periods_reversed", "rao {crane} --periods 30:3:10 --out {out}", {"--periods 30:3:10", "0 < a < b <= 1000"}),
+      command("rao_frequency_negative", "rao {crane} --frequencies 0.5,-1 --out {out}",
+              {"--frequencies 0.5,-1", "-1 is out of range", "(0, 100] rad/s"}),
+      command("rao_frequency_text", "rao {crane} --frequencies fast --out {out}", {"--frequencies fast", "not a finite number"}),
+      command("rao_check_wave_height_zero", "rao {crane} --check-time-domain --check-wave-height 0 --out {out}",
+              {"--check-wave-height 0", "valid range"}),
+      command("rao_without_water", "rao {hub} --out {out}", {"needs a floating crane", "[hub]"}),
       // Output paths: the user's path and the operating system's reason, exit 2.
       command("out_under_a_file", "run {crane} --duration 2 --out {dir}/stdout.txt/sub",
               {"{dir}/stdout.txt/sub", "Not a directory"}),
@@ -205,7 +214,7 @@ std::vector<CliCase> misuse_cases() {
               {"{dir}/locked/out", "Permission denied"}, "", true},
       // A solver failure is exit 3 and named; nothing is written either.
       CliCase{"explicit_instability", "run {crane} --duration 2 --integrator arkode --step 0.05 --elements 2 --out {out}",
-              3, {"solver failure (explicit instability)", "reduce --step"}},
+              3, {"solver failure (explicit instability)", "reduce the fixed step", "options: --step"}},
   };
 }
 

@@ -46,7 +46,7 @@ TEST(CliBaseline, RecordThenCheckPassesAndAStifferBoomExitsFourNamingWhatMoved) 
   EXPECT_NE(rec.out.find("wrote " + base), std::string::npos) << rec.out;
   const Json file = JsonParser(read_text(base)).parse();
   EXPECT_EQ(file["format"].text, "ffrf-baseline");
-  EXPECT_EQ(file["format_version"].number, 1.0);
+  EXPECT_EQ(file["format_version"].number, 2.0);
   EXPECT_EQ(file["model"]["elements"].number, 4.0);
   EXPECT_EQ(file["provenance"]["scene"]["path"].text, kCrane);
 
@@ -94,11 +94,12 @@ TEST(CliBaseline, TolerancesFromTheCommandLineDecide) {
   ASSERT_EQ(record(dir, kCrane, base, "--outputs cargo_heave").exit_code, 0);
   const fs::path stiffer = stiffer_scene(dir);
   const std::string check = "baseline check '" + stiffer.string() + "' '" + base + "'";
-  // The frequencies move by 0.4988 % and the cargo by up to a few % of its motion: loose enough
+  // The boom frequencies move by 0.4988 %, the coupled crane's modes by up to 0.52 % (the damping
+  // ratio of its second boom mode) and the cargo by up to a few % of its motion: loose enough
   // tolerances pass, and each override is named in the JSON.
-  RunResult r = run_ffrf(check + " --frequency-rtol 0.005 --rtol 0.1 --json", dir.path());
+  RunResult r = run_ffrf(check + " --frequency-rtol 0.006 --rtol 0.1 --json", dir.path());
   EXPECT_EQ(r.exit_code, 0) << r.out;
-  r = run_ffrf(check + " --tolerance frequencies=0.005 --tolerance cargo_heave_m=0.1 --tolerance wire_amplification=0.1",
+  r = run_ffrf(check + " --tolerance frequencies=0.006 --tolerance cargo_heave_m=0.1 --tolerance wire_amplification=0.1",
                dir.path());
   EXPECT_EQ(r.exit_code, 0) << r.out;
   r = run_ffrf(check + " --tolerance frequencies=0.004 --rtol 0.1", dir.path());

@@ -94,7 +94,8 @@ INSTANTIATE_TEST_SUITE_P(
                       ChartingCommand{"sweep", "--quick --duration 25 --reference-levels 2 --jobs 2",
                                       "accuracy_speed.png"},
                       ChartingCommand{"stability", "--quick", "constraint_drift.png"},
-                      ChartingCommand{"recommend", "--duration 25", "recommendation.md"}),
+                      ChartingCommand{"recommend", "--duration 25", "recommendation.md"},
+                      ChartingCommand{"rao", "--periods 4:20:17 --check-time-domain --check-periods 10", "rao_hull.png"}),
     [](const ::testing::TestParamInfo<ChartingCommand>& p) { return std::string(p.param.name); });
 
 }  // namespace

@@ -38,6 +38,7 @@ report::BaselineFile sample_file() {
   b.cost.wall_seconds = 0.125;
   b.boom_elements = 16;
   b.boom_frequencies = {{1.0 / 3.0, "bending", 1}, {0.1 + 0.2, "axial", 1}};
+  b.coupled_modes = {{1.0 / 35.6, 0.0196, "hull surge"}, {std::nextafter(0.7, 1.0), 1.0 / 3.0 * 0.1, "boom"}};
   b.window_start = 20.05;
   b.window_after_ramp = true;
   b.wire_amplification = 1.0 + 1.0 / 7.0;
@@ -93,6 +94,11 @@ TEST(BaselineFile, ReadsBackEveryValueBitForBit) {
   EXPECT_EQ(b.boom_frequencies[0].hz, 1.0 / 3.0);
   EXPECT_EQ(b.boom_frequencies[1].hz, 0.1 + 0.2);
   EXPECT_EQ(b.boom_frequencies[1].kind, "axial");
+  ASSERT_EQ(b.coupled_modes.size(), 2u);
+  EXPECT_EQ(b.coupled_modes[0].hz, 1.0 / 35.6);
+  EXPECT_EQ(b.coupled_modes[1].hz, std::nextafter(0.7, 1.0));
+  EXPECT_EQ(b.coupled_modes[1].damping_ratio, 1.0 / 3.0 * 0.1);
+  EXPECT_EQ(b.coupled_modes[1].dominant, "boom");
   EXPECT_EQ(*b.wire_amplification, 1.0 + 1.0 / 7.0);
   EXPECT_EQ(b.decimation, 3);
   EXPECT_EQ(b.history_time, a.history_time);
@@ -127,14 +133,36 @@ TEST(BaselineFile, ReadsBackEveryValueBitForBit) {
   EXPECT_FALSE(report::parse_baseline(report::baseline_json(calm), "mem").baseline.wire_amplification.has_value());
 }
 
+// A baseline of format version 1 (before the coupled modes were recorded) still reads: the same
+// document without "coupled_modes", with no coupled modes to check; a hub scene's (null) neither.
+TEST(BaselineFile, ReadsFormatVersionOneWithoutCoupledModes) {
+  report::BaselineFile file = sample_file();
+  std::string text = report::baseline_json(file);
+  const std::size_t start = text.find("  \"coupled_modes\": {");
+  const std::size_t end = text.find("  \"integration_error\"");
+  ASSERT_NE(start, std::string::npos);
+  ASSERT_NE(end, std::string::npos);
+  text.erase(start, end - start);
+  text.replace(text.find("\"format_version\": 2"), 19, "\"format_version\": 1");
+  const report::BaselineFile old = report::parse_baseline(text, "old.json");
+  EXPECT_TRUE(old.baseline.coupled_modes.empty());
+  EXPECT_EQ(old.baseline.boom_frequencies.size(), 2u);
+  EXPECT_EQ(old.baseline.channels.size(), 1u);
+  // Version 2 requires the key (null without a hull).
+  EXPECT_NE(parse_error(text.replace(text.find("\"format_version\": 1"), 19, "\"format_version\": 2")).find("coupled_modes"),
+            std::string::npos);
+  file.baseline.coupled_modes.clear();
+  EXPECT_TRUE(report::parse_baseline(report::baseline_json(file), "hub.json").baseline.coupled_modes.empty());
+}
+
 TEST(BaselineFile, MalformedFilesAreNamedWithKeyValueAndProblem) {
   EXPECT_EQ(parse_error(report::baseline_json(sample_file())), "");
   EXPECT_EQ(parse_error("{\"format\": \"ffrf-baseline\", ").substr(0, 52), "base.json: not a JSON document (parse error at byte ");
   EXPECT_EQ(parse_error("[1, 2]"), "base.json: not a baseline: the document is not a JSON object");
   EXPECT_EQ(parse_error(edited("\"ffrf-baseline\"", "\"ffrf-summary\"")),
             "base.json: format = \"ffrf-summary\": not an ffrf baseline (expected \"ffrf-baseline\")");
-  EXPECT_EQ(parse_error(edited("\"format_version\": 1", "\"format_version\": 2")),
-            "base.json: format_version = 2: this ffrf reads baseline format version 1; record the baseline again");
+  EXPECT_EQ(parse_error(edited("\"format_version\": 2", "\"format_version\": 3")),
+            "base.json: format_version = 3: this ffrf reads baseline format versions 1 to 2; record the baseline again");
   EXPECT_EQ(parse_error(edited("\"rtol\": 1e-07,", "")), "base.json: model.rtol = (missing): a required key is missing");
   EXPECT_EQ(parse_error(edited("\"rtol\": 1e-07", "\"rtol\": 2.0")),
             "base.json: model.rtol = 2.0: out of range (valid range (0, 1))");

@@ -76,6 +76,10 @@ TEST_F(CraneBaseline, RecordsTheModelFrequenciesStatisticsAndHistories) {
   EXPECT_EQ(b.model.duration, kDuration);
   ASSERT_EQ(b.boom_frequencies.size(), 6u);
   EXPECT_EQ(b.boom_frequencies[0].kind, "bending");
+  // The coupled crane's lowest modes, as `ffrf rao` finds them: the moored surge first.
+  ASSERT_EQ(b.coupled_modes.size(), 8u);
+  EXPECT_EQ(b.coupled_modes[0].dominant, "hull surge");
+  for (std::size_t j = 1; j < b.coupled_modes.size(); ++j) EXPECT_GE(b.coupled_modes[j].hz, b.coupled_modes[j - 1].hz);
   ASSERT_EQ(b.channels.size(), 7u);
   EXPECT_EQ(b.channels[0].name, "cargo_heave_m");
   EXPECT_EQ(b.channels[6].name, "tip_transverse_m");
@@ -104,8 +108,9 @@ TEST_F(CraneBaseline, RoundTripPassesWithZeroDifferences) {
       study::check_baseline(*scene_, *baseline_, baseline_->model.choice, short_run(*scene_), {});
   EXPECT_TRUE(check.passed());
   EXPECT_TRUE(check.model_differences.empty());
-  // 6 frequencies, 7 channels × (6 statistics + history), the wire amplification.
-  EXPECT_EQ(check.deviations.size(), 6u + 7u * 7u + 1u);
+  // 6 boom frequencies, 8 coupled modes × (frequency, damping ratio), 7 channels × (6 statistics +
+  // history), the wire amplification.
+  EXPECT_EQ(check.deviations.size(), 6u + 8u * 2u + 7u * 7u + 1u);
   for (const study::Deviation& d : check.deviations) EXPECT_EQ(d.difference, 0.0) << d.channel << " " << d.quantity;
   ASSERT_TRUE(baseline_->integration_error.has_value());
   const study::IntegrationError& error = *baseline_->integration_error;
@@ -144,6 +149,18 @@ TEST_F(CraneBaseline, StifferBoomFailsNamingEveryFrequencyAndTheChannelsThatMove
     EXPECT_NEAR(d.normalized(), ratio - 1.0, 1e-10) << d.quantity << ": the reported relative deviation";
     EXPECT_EQ(d.allowed, 1e-6 * d.baseline);
   }
+  // The coupled crane's modes: the first boom mode rises by most of √1.01 (measured +4.2e-3: the
+  // hull and cargo share little of its energy), the moored surge by less than 1 % of that (+7.6e-6).
+  const study::Deviation& surge = find(check, "coupled", "f1");
+  EXPECT_EQ(surge.detail, "hull surge");
+  const auto boom_mode = std::find_if(baseline_->coupled_modes.begin(), baseline_->coupled_modes.end(),
+                                      [](const study::CoupledFrequency& m) { return m.dominant == "boom"; });
+  ASSERT_NE(boom_mode, baseline_->coupled_modes.end());
+  const study::Deviation& boom = find(check, "coupled", "f" + std::to_string(boom_mode - baseline_->coupled_modes.begin() + 1));
+  EXPECT_FALSE(boom.passed);
+  EXPECT_GT(boom.value / boom.baseline, 1.0 + 0.5 * (ratio - 1.0));
+  EXPECT_LT(boom.value / boom.baseline, ratio + 1e-9);
+  EXPECT_LT(surge.normalized(), 0.01 * boom.normalized());
   // Static tip deflection of the linear boom ∝ 1/E; Q changes with the hull's trim (measured: 2.4e-5 off 1/1.01).
   const study::Deviation& tip = find(check, "tip_transverse_m", "static");
   EXPECT_FALSE(tip.passed);

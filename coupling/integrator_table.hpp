@@ -1,0 +1,34 @@
+// The valid integrators, one row each (integrator_table.cpp): the formulation × solver pair, its
+// name, what messages call its solver, and the function that integrates a crane with it. Adding an
+// integrator is a new integrate_*.cpp, its row, and its line in coupling/CMakeLists.txt
+// (docs/integrators.md).
+#pragma once
+
+#include <Eigen/Core>
+#include <span>
+#include <string_view>
+
+#include "coupling/integrator_choice.hpp"
+
+namespace ffrf::coupling {
+
+class CraneEquations;
+struct IntegratorSettings;
+struct RunResult;
+
+using IntegrateFunction = RunResult (*)(CraneEquations& equations, const Eigen::VectorXd& z0,
+                                        const IntegratorSettings& settings);
+
+struct IntegratorEntry {
+  Integrator choice;
+  std::string_view name;     // the --integrator name ("cvode")
+  std::string_view label;    // the solver in messages ("CVODE")
+  IntegrateFunction integrate;
+  std::string_view summary;  // one line for --help and docs
+};
+
+std::span<const IntegratorEntry> integrator_table();
+// The row of a valid pair, or InvalidIntegrator.
+const IntegratorEntry& integrator_entry(Integrator choice);
+
+}  // namespace ffrf::coupling

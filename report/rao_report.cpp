@@ -1,0 +1,307 @@
+// CSV, Markdown, JSON, text and gnuplot renderings of the frequency domain (report/rao_report.hpp).
+#include "report/rao_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "report/gnuplot.hpp"
+#include "report/json.hpp"
+
+namespace ffrf::report {
+namespace {
+
+using coupling::LinearOutput;
+
+constexpr int shown_modes = 8;  // natural modes in the tables (the lowest)
+
+LinearOutput output_at(int k) { return static_cast<LinearOutput>(k); }
+std::string name_of(LinearOutput output) { return std::string(coupling::to_string(output)); }
+std::string unit_slug(LinearOutput output) {  // "m/m" → "m_per_m"
+  std::string unit(coupling::unit_per_amplitude(output));
+  return unit.replace(unit.find('/'), 1, "_per_");
+}
+double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
+double period_of(double omega) { return 2.0 * std::numbers::pi / omega; }
+// The tip outputs are the boom's elastic deflection: identically zero for the rigid boom.
+bool drawn(const study::ModelRao& model, LinearOutput output) {
+  return model.choice.kind != scene::BoomKind::rigid ||
+         (output != LinearOutput::tip_axial && output != LinearOutput::tip_transverse);
+}
+
+struct Chart {
+  const char* name;
+  const char* title;
+  std::array<LinearOutput, 3> outputs;
+};
+constexpr std::array<Chart, 3> charts{{
+    {"rao_hull", "Hull RAOs", {LinearOutput::hull_surge, LinearOutput::hull_heave, LinearOutput::hull_pitch}},
+    {"rao_cargo", "Cargo RAOs", {LinearOutput::cargo_surge, LinearOutput::cargo_heave, LinearOutput::cargo_pitch}},
+    {"rao_boom_wire", "Boom tip (elastic deflection) and wire tension RAOs",
+     {LinearOutput::tip_transverse, LinearOutput::tip_axial, LinearOutput::wire_tension}},
+}};
+
+std::string percent(double fraction) { return fmt::format("{:.3f} %", 100.0 * fraction); }
+
+}  // namespace
+
+std::string model_slug(const scene::BoomChoice& choice) {
+  switch (choice.kind) {
+    case scene::BoomKind::rigid: return "rigid";
+    case scene::BoomKind::nodal: return fmt::format("nodal_N{}", choice.elements);
+    case scene::BoomKind::modal:
+      return fmt::format("modal_k{}{}_N{}", choice.modes, choice.static_modes ? "_static" : "", choice.elements);
+  }
+  return "model";
+}
+
+std::string rao_csv(const study::RaoResult& result, std::size_t model) {
+  const study::ModelRao& m = result.models.at(model);
+  std::string out = "period_s,angular_frequency_rad_per_s";
+  for (int k = 0; k < coupling::linear_output_count; ++k) {
+    out += fmt::format(",{0}_amplitude_{1},{0}_phase_deg", name_of(output_at(k)), unit_slug(output_at(k)));
+  }
+  out += '\n';
+  for (std::size_t f = 0; f < result.angular_frequencies.size(); ++f) {
+    const double omega = result.angular_frequencies[f];
+    out += fmt::format("{:.10g},{:.10g}", period_of(omega), omega);
+    for (int k = 0; k < coupling::linear_output_count; ++k) {
+      const std::complex<double> value = m.response[static_cast<std::size_t>(k)][f];
+      out += fmt::format(",{:.10g},{:.6f}", std::abs(value), degrees(std::arg(value)));
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+std::string natural_modes_csv(const study::RaoResult& result) {
+  std::string out = "model,mode,angular_frequency_rad_per_s,period_s,damping_ratio,dominant\n";
+  for (const study::ModelRao& m : result.models) {
+    for (std::size_t j = 0; j < m.modes.size(); ++j) {
+      const study::NaturalMode& mode = m.modes[j];
+      out += fmt::format("{},{},{:.10g},{:.10g},{:.8g},{}\n", m.choice.label(), j + 1, mode.angular_frequency, mode.period(),
+                         mode.damping_ratio, mode.dominant);
+    }
+  }
+  return out;
+}
+
+std::string time_domain_check_csv(const std::vector<study::TimeDomainCheck>& checks) {
+  std::string out = "model,period_s,output,rao_amplitude,time_domain_amplitude,deviation,phase_difference_rad,fit_residual,"
+                    "steps,wall_s,passed\n";
+  for (const study::TimeDomainCheck& check : checks) {
+    for (const study::PeriodCheck& p : check.periods) {
+      for (const study::ChannelCheck& c : p.channels) {
+        out += fmt::format("{},{:g},{},{:.10g},{:.10g},{:.6e},{:.6e},{:.3e},{},{:.4f},{}\n", check.choice.label(), p.period,
+                           name_of(c.output), c.frequency_domain, c.time_domain, c.deviation(), c.phase_difference,
+                           c.fit_residual, p.stats.steps, p.stats.wall_seconds,
+                           std::abs(c.deviation()) <= check.request.tolerance ? "yes" : "no");
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> rao_chart_names() {
+  std::vector<std::string> names;
+  for (const Chart& chart : charts) names.emplace_back(chart.name);
+  return names;
+}
+
+std::string rao_chart_script(const std::string& name, const study::RaoResult& result, const std::string& terminal) {
+  const auto chart = std::find_if(charts.begin(), charts.end(), [&](const Chart& c) { return name == c.name; });
+  if (chart == charts.end()) throw std::invalid_argument("rao_chart_script: unknown chart " + name);
+  std::string script = fmt::format(
+      "# Drawn by `ffrf rao --out`; restyle and rerun with `gnuplot {0}.gp` in this directory.\n"
+      "set terminal {1} size 1500,860 font ',11'\n"
+      "set output '{0}.png'\n"
+      "set datafile separator ','\n"
+      "set grid\n"
+      "set multiplot layout 2,3 title {2} noenhanced\n",
+      chart->name, terminal, gnuplot_quoted(std::string(chart->title) + " per metre of wave amplitude"));
+  for (const bool amplitude : {true, false}) {
+    for (const LinearOutput output : chart->outputs) {
+      const int k = static_cast<int>(output);
+      std::vector<std::string> curves;
+      for (std::size_t m = 0; m < result.models.size(); ++m) {
+        if (!drawn(result.models[m], output)) continue;
+        curves.push_back(fmt::format("'rao_{}.csv' skip 1 using 1:{} with lines lw 2 lc {} title {}",
+                                     model_slug(result.models[m].choice), amplitude ? 3 + 2 * k : 4 + 2 * k, m + 1,
+                                     gnuplot_quoted(result.models[m].choice.label())));
+      }
+      script += fmt::format("set title {} noenhanced\nset xlabel 'wave period [s]'\n",
+                            gnuplot_quoted(name_of(output) + (amplitude ? " amplitude" : " phase")));
+      script += amplitude ? fmt::format("set logscale y\nset format y '%g'\nset ylabel '[{}]'\nset yrange [*:*]\n", coupling::unit_per_amplitude(output))
+                          : "unset logscale y\nset format y '%g'\nset ylabel 'phase vs elevation at x = 0 [deg]'\nset yrange [-180:180]\n";
+      if (curves.empty()) {
+        script += "unset key\nset label 1 'zero for the rigid boom' at graph 0.5, 0.5 center\nplot [0:1] [0:1] NaN notitle\n"
+                  "unset label 1\n";
+      } else {
+        script += fmt::format("set key opaque box bottom right font ',9'\nplot {}\n", fmt::join(curves, ", \\\n     "));
+      }
+    }
+  }
+  return script + "unset multiplot\n";
+}
+
+std::string rao_markdown(const study::RaoResult& result, const std::vector<study::TimeDomainCheck>& checks,
+                         const RaoContext& context, bool with_charts) {
+  const auto& omegas = result.angular_frequencies;
+  std::string out = fmt::format("# Frequency domain: {}\n\n", context.scene_name.empty() ? context.scene_file : context.scene_name);
+  out += fmt::format("Scene `{}`. The crane linearised about its static equilibrium in calm water, in the time domain's "
+                     "minimal coordinates (mass, damping and stiffness from the equations' own Newton blocks; wave "
+                     "excitation as the derivative of the generalized forces in the wave amplitude, central difference "
+                     "of ±{:g} m). Responses per metre of wave amplitude, phase relative to the elevation at x = 0. "
+                     "{} frequencies, periods {:.4g}–{:.4g} s. Hull radiation: {}. Wall time {:.3g} s.\n\n",
+                     context.scene_file, result.excitation_amplitude, omegas.size(), period_of(*std::max_element(omegas.begin(), omegas.end())),
+                     period_of(*std::min_element(omegas.begin(), omegas.end())),
+                     result.frequency_dependent_hydrodynamics ? "frequency-dependent coefficients from the provider"
+                                                              : "the scene's constant added mass and damping",
+                     context.wall_seconds);
+  out += "| model | coordinates | wall time [s] |\n|---|---:|---:|\n";
+  for (const study::ModelRao& m : result.models) {
+    out += fmt::format("| {} | {} | {:.3g} |\n", m.choice.label(), m.coordinates, m.wall_seconds);
+  }
+  out += "\n## Coupled natural modes\n\nPeriod [s], damping ratio and the coordinate holding most of the mode's kinetic "
+         "energy, lowest modes first.\n\n| mode |";
+  for (const study::ModelRao& m : result.models) out += fmt::format(" {} |", m.choice.label());
+  out += "\n|---:|";
+  for (std::size_t m = 0; m < result.models.size(); ++m) out += "---|";
+  out += '\n';
+  for (std::size_t j = 0; j < static_cast<std::size_t>(shown_modes); ++j) {
+    out += fmt::format("| {} |", j + 1);
+    for (const study::ModelRao& m : result.models) {
+      out += j < m.modes.size() ? fmt::format(" {:.4g} s, ζ = {:.3g} %, {} |", m.modes[j].period(),
+                                              100.0 * m.modes[j].damping_ratio, m.modes[j].dominant)
+                                : " – |";
+    }
+    out += '\n';
+  }
+  out += "\n## Largest response per output\n\n| output |";
+  for (const study::ModelRao& m : result.models) out += fmt::format(" {} |", m.choice.label());
+  out += "\n|---|";
+  for (std::size_t m = 0; m < result.models.size(); ++m) out += "---|";
+  out += '\n';
+  for (int k = 0; k < coupling::linear_output_count; ++k) {
+    out += fmt::format("| {} [{}] |", name_of(output_at(k)), coupling::unit_per_amplitude(output_at(k)));
+    for (const study::ModelRao& m : result.models) {
+      const auto& values = m.response[static_cast<std::size_t>(k)];
+      const auto peak = std::max_element(values.begin(), values.end(),
+                                         [](auto a, auto b) { return std::abs(a) < std::abs(b); });
+      out += drawn(m, output_at(k)) ? fmt::format(" {:.4g} at {:.4g} s |", std::abs(*peak),
+                                                  period_of(omegas[static_cast<std::size_t>(peak - values.begin())]))
+                                    : " 0 (rigid) |";
+    }
+    out += '\n';
+  }
+  if (with_charts) {
+    out += "\n## Charts\n\n";
+    for (const Chart& chart : charts) out += fmt::format("![{}]({}.png)\n\n", chart.title, chart.name);
+  }
+  out += "\n## Time-domain check\n\n";
+  if (checks.empty()) return out + "Not run (`--check-time-domain` runs it).\n";
+  const study::TimeDomainCheckRequest& request = checks.front().request;
+  bool passed = true;
+  double worst = 0.0;
+  for (const auto& check : checks) {
+    passed = passed && check.passed();
+    worst = std::max(worst, check.worst_deviation());
+  }
+  out += fmt::format("**{}**: regular-wave runs (one run pipeline, CVODE BDF on the minimal coordinates, relative and "
+                     "absolute tolerance {:g}, nonlinear hull pressure, wave height {:g} m ramped over {:g} periods, "
+                     "amplitude fitted over the following {:g} periods with the free modes separated) against the RAOs: "
+                     "worst amplitude deviation {} against the tolerance {}.\n\n",
+                     passed ? "PASS" : "FAIL", request.relative_tolerance, request.wave_height, request.ramp_periods,
+                     request.window_periods, percent(worst), percent(request.tolerance));
+  out += "| model | period [s] | output | RAO | time domain | deviation | phase diff. [rad] | fit residual | steps | wall [s] | |\n"
+         "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+  for (const auto& check : checks) {
+    for (const auto& p : check.periods) {
+      for (const auto& c : p.channels) {
+        out += fmt::format("| {} | {:g} | {} | {:.6g} | {:.6g} | {:+.3f} % | {:+.2e} | {:.1e} | {} | {:.3g} | {} |\n",
+                           check.choice.label(), p.period, name_of(c.output), c.frequency_domain, c.time_domain,
+                           100.0 * c.deviation(), c.phase_difference, c.fit_residual, p.stats.steps, p.stats.wall_seconds,
+                           std::abs(c.deviation()) <= request.tolerance ? "pass" : "**FAIL**");
+      }
+    }
+  }
+  return out;
+}
+
+std::string rao_json(const study::RaoResult& result, const std::vector<study::TimeDomainCheck>& checks, const RaoContext& context) {
+  Json json{{"scene", context.scene_file},
+            {"scene_name", context.scene_name},
+            {"wall_s", context.wall_seconds},
+            {"excitation_amplitude_m", result.excitation_amplitude},
+            {"frequency_dependent_hydrodynamics", result.frequency_dependent_hydrodynamics},
+            {"angular_frequencies_rad_per_s", result.angular_frequencies}};
+  json["models"] = Json::array();
+  for (const study::ModelRao& m : result.models) {
+    Json model{{"model", m.choice.label()}, {"coordinates", m.coordinates}, {"wall_s", m.wall_seconds}, {"natural_modes", Json::array()}};
+    for (const study::NaturalMode& mode : m.modes) {
+      model["natural_modes"].push_back({{"angular_frequency_rad_per_s", mode.angular_frequency},
+                                        {"period_s", mode.period()},
+                                        {"damping_ratio", mode.damping_ratio},
+                                        {"dominant", mode.dominant}});
+    }
+    Json raos = Json::object();
+    for (int k = 0; k < coupling::linear_output_count; ++k) {
+      Json amplitude = Json::array(), phase = Json::array();
+      for (const auto& value : m.response[static_cast<std::size_t>(k)]) {
+        amplitude.push_back(std::abs(value));
+        phase.push_back(degrees(std::arg(value)));
+      }
+      raos[name_of(output_at(k))] = {{"unit", coupling::unit_per_amplitude(output_at(k))}, {"amplitude", amplitude}, {"phase_deg", phase}};
+    }
+    model["rao"] = std::move(raos);
+    json["models"].push_back(std::move(model));
+  }
+  Json check_json = Json::array();
+  for (const auto& check : checks) {
+    Json entry{{"model", check.choice.label()}, {"tolerance", check.request.tolerance}, {"wave_height_m", check.request.wave_height},
+               {"integrator_tolerance", check.request.relative_tolerance}, {"worst_deviation", check.worst_deviation()},
+               {"passed", check.passed()}, {"periods", Json::array()}};
+    for (const auto& p : check.periods) {
+      Json period{{"period_s", p.period}, {"duration_s", p.duration}, {"window_start_s", p.window_start},
+                  {"fitted_free_modes", p.fitted_modes}, {"steps", p.stats.steps},
+                  {"function_evaluations", p.stats.function_evaluations}, {"wall_s", p.stats.wall_seconds},
+                  {"channels", Json::array()}};
+      for (const auto& c : p.channels) {
+        period["channels"].push_back({{"output", name_of(c.output)}, {"rao_amplitude", c.frequency_domain},
+                                      {"time_domain_amplitude", c.time_domain}, {"deviation", c.deviation()},
+                                      {"phase_difference_rad", c.phase_difference}, {"fit_residual", c.fit_residual}});
+      }
+      entry["periods"].push_back(std::move(period));
+    }
+    check_json.push_back(std::move(entry));
+  }
+  json["time_domain_check"] = std::move(check_json);
+  return json_text(json);
+}
+
+std::string rao_text(const study::RaoResult& result, const std::vector<study::TimeDomainCheck>& checks, const RaoContext& context) {
+  std::string out = fmt::format("scene      {}{}\nfrequencies {} (periods {:.4g}-{:.4g} s), wall time {:.3g} s\n", context.scene_file,
+                                context.scene_name.empty() ? "" : " (" + context.scene_name + ")", result.angular_frequencies.size(),
+                                period_of(*std::max_element(result.angular_frequencies.begin(), result.angular_frequencies.end())),
+                                period_of(*std::min_element(result.angular_frequencies.begin(), result.angular_frequencies.end())),
+                                context.wall_seconds);
+  for (const study::ModelRao& m : result.models) {
+    out += fmt::format("\n{} ({} coordinates): coupled natural modes\n", m.choice.label(), m.coordinates);
+    for (std::size_t j = 0; j < std::min<std::size_t>(shown_modes, m.modes.size()); ++j) {
+      const study::NaturalMode& mode = m.modes[j];
+      out += fmt::format("  {:>2}  T = {:>9.4f} s  omega = {:>9.4f} rad/s  zeta = {:>7.3f} %  {}\n", j + 1, mode.period(),
+                         mode.angular_frequency, 100.0 * mode.damping_ratio, mode.dominant);
+    }
+  }
+  for (const auto& check : checks) {
+    out += fmt::format("\ntime-domain check {}: {} (worst amplitude deviation {} against {})\n", check.choice.label(),
+                       check.passed() ? "PASS" : "FAIL", percent(check.worst_deviation()), percent(check.request.tolerance));
+  }
+  return out;
+}
+
+}  // namespace ffrf::report

@@ -1,0 +1,99 @@
+// The frequency domain (`ffrf rao`, issue 15.5): response amplitude operators of the crane
+// linearised about its static equilibrium (coupling/linearisation.hpp) — the linearised time
+// domain, the cheap second method that checks it. At each angular frequency ω
+//   X(ω) = (−ω² (M + A'(ω)) + iω (C + B'(ω)) + K)⁻¹ F̂(ω),    Y(ω) = (G + iω H) X(ω),
+// per metre of wave amplitude, phase relative to the elevation at x = 0 (ζ = a cos ωt; response
+// Re(Y e^{iωt}) a: a positive phase leads the wave). A'(ω), B'(ω) are frequency-dependent hull
+// terms added to the model's constant added mass and radiation damping, and F̂ may be replaced by a
+// given excitation, through a provider (HullHydrodynamics): constant coefficients by default, BEM
+// data when a provider gives them. Natural frequencies and damping ratios of the coupled system from
+// the eigenvalues λ of the first-order form of M ẍ + C ẋ + K x = 0: ω_n = |λ|, ζ = −Re λ / |λ|.
+// Rigid, nodal and modal booms side by side (rao_models()).
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <complex>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "coupling/linearisation.hpp"
+#include "modal/mode_cache.hpp"
+#include "scene/crane_builder.hpp"
+#include "scene/scene.hpp"
+
+namespace ffrf::study {
+
+// Frequency-dependent hull terms at ω in the hull's (surge, heave, pitch) rows and columns at G1.
+struct HullFrequencyTerms {
+  Eigen::Matrix3d added_mass = Eigen::Matrix3d::Zero();  // added to the model's mass matrix [kg, kg m, kg m²]
+  Eigen::Matrix3d damping = Eigen::Matrix3d::Zero();     // added to the model's damping matrix
+  // Given: the wave excitation per metre of amplitude on the hull [N/m, N m/m], replacing the
+  // model's own (derived from its hull pressure); empty: the model's.
+  std::optional<Eigen::Vector3cd> excitation;
+};
+// ω [rad/s] → the hull's frequency-dependent terms. Empty function: the model's constant coefficients.
+using HullHydrodynamics = std::function<HullFrequencyTerms(double angular_frequency)>;
+
+// One natural mode of the linearised coupled system.
+struct NaturalMode {
+  double angular_frequency = 0.0;  // |λ| [rad/s]
+  double damping_ratio = 0.0;      // −Re λ / |λ| [-]
+  std::string dominant;            // the coordinate with the largest share of the mode's kinetic energy ("hull heave", "boom")
+  double period() const;           // 2π / ω_n [s]
+};
+
+// M, C, K: the natural modes, lowest first (one per complex pair; overdamped ones as real roots).
+std::vector<NaturalMode> natural_modes(const coupling::LinearisedCrane& linear);
+
+// X = (−ω²M + iωC + K)⁻¹ F by Eigen's complex LU; throws std::runtime_error when singular (at an
+// undamped resonance).
+Eigen::VectorXcd frequency_response(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& damping,
+                                    const Eigen::MatrixXd& stiffness, const Eigen::VectorXcd& force,
+                                    double angular_frequency);
+
+// The natural modes of the crane of `choice` linearised about its static equilibrium in calm water.
+// Throws as response_amplitude_operators().
+std::vector<NaturalMode> coupled_natural_modes(const scene::Scene& scene, const scene::BoomChoice& choice,
+                                               modal::ModeCache* modes = nullptr);
+
+struct RaoRequest {
+  std::vector<scene::BoomChoice> models;  // empty: rao_models()
+  std::vector<double> angular_frequencies;  // [rad/s], each > 0
+  HullHydrodynamics hydrodynamics;        // empty: the constant coefficients of the scene
+  double excitation_amplitude = 0.01;     // wave amplitude of the excitation's central difference [m]
+};
+
+// rigid; nodal N = 16; modal k = 2 + static modes on N = 16 (the set `compare` plots).
+std::vector<scene::BoomChoice> rao_models();
+
+struct ModelRao {
+  scene::BoomChoice choice;
+  int coordinates = 0;  // minimal coordinates n
+  std::vector<NaturalMode> modes;
+  // response[output][frequency index], per metre of wave amplitude (LinearOutput order)
+  std::array<std::vector<std::complex<double>>, coupling::linear_output_count> response;
+  double wall_seconds = 0.0;
+};
+
+struct RaoResult {
+  std::vector<double> angular_frequencies;  // [rad/s], as requested
+  double excitation_amplitude = 0.0;
+  bool frequency_dependent_hydrodynamics = false;
+  std::vector<ModelRao> models;
+};
+
+// The scene must float a crane (hull) in water. Throws scene::SceneError (the scene cannot make
+// the crane), coupling::SolverFailure (static equilibrium), std::invalid_argument (no frequency, or
+// one ≤ 0), std::runtime_error (a singular system at some ω). `progress` is told each model's label.
+RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoRequest& request,
+                                       const std::function<void(const std::string&)>& progress = {},
+                                       modal::ModeCache* modes = nullptr);
+
+// The scene with a regular wave of this amplitude and ω (no ramp; the scene's direction, following
+// when it has none): the wave the excitation is derived in, and the time-domain check runs in.
+scene::Scene with_regular_wave(const scene::Scene& scene, double height, double period, double ramp_periods);
+
+}  // namespace ffrf::study

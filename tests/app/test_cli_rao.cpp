@@ -1,0 +1,52 @@
+// End-to-end tests of `ffrf rao` (issue 15.5): the files written, the report's verdict of the
+// time-domain check and its exit code when the check fails (a tolerance below the measured
+// deviation), the CSV columns with units, the JSON summary. The physics is tested on the study
+// itself (tests/study/test_rao.cpp, test_rao_time_domain.cpp).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cli_harness.hpp"
+
+namespace ffrf::test {
+namespace {
+
+const std::string kCrane = source_file("cases/paper_floating_crane.toml");
+
+TEST(CliRao, WritesEveryFileAndStatesThePassingVerdict) {
+  TempDir dir;
+  const fs::path out = dir / "rao";
+  const RunResult r = run_ffrf("rao '" + kCrane + "' --periods 5:15:11 --check-time-domain --check-periods 10 --out '" +
+                                   out.string() + "'", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* file : {"rao_rigid.csv", "rao_nodal_N16.csv", "rao_modal_k2_static_N16.csv", "natural_modes.csv",
+                           "time_domain_check.csv", "report.md", "summary.json", "rao_hull.png", "rao_cargo.png",
+                           "rao_boom_wire.png", "rao_hull.gp"}) {
+    EXPECT_TRUE(fs::exists(out / file)) << file;
+  }
+  const std::string csv = read_text(out / "rao_nodal_N16.csv");
+  EXPECT_EQ(csv.rfind("period_s,angular_frequency_rad_per_s,hull_surge_amplitude_m_per_m,hull_surge_phase_deg", 0), 0u);
+  EXPECT_NE(csv.find("wire_tension_amplitude_N_per_m"), std::string::npos);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 12);  // header + 11 periods
+  const std::string report = read_text(out / "report.md");
+  EXPECT_NE(report.find("**PASS**"), std::string::npos) << report;
+  EXPECT_NE(report.find("Coupled natural modes"), std::string::npos);
+  const Json summary = JsonParser(read_text(out / "summary.json")).parse();
+  EXPECT_EQ(summary["models"].items.size(), 3u);
+  EXPECT_TRUE(summary["time_domain_check"][0]["passed"].flag);
+  EXPECT_LT(summary["time_domain_check"][1]["worst_deviation"].number, 0.01);
+}
+
+TEST(CliRao, OneModelFromTheOptionsAndAFailedCheckExitsOne) {
+  TempDir dir;
+  const RunResult r = run_ffrf("rao '" + kCrane + "' --boom modal -k 2 --static-modes --frequencies 0.6283 --check-time-domain "
+                                   "--check-periods 10 --tolerance 0.000001 --json", dir.path());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("the time-domain check failed: modal k=2+static (N=16)"), std::string::npos) << r.err;
+  const Json summary = JsonParser(r.out).parse();
+  ASSERT_EQ(summary["models"].items.size(), 1u);
+  EXPECT_FALSE(summary["time_domain_check"][0]["passed"].flag);
+}
+
+}  // namespace
+}  // namespace ffrf::test

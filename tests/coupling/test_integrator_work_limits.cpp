@@ -1,0 +1,119 @@
+// Work limits for every integrator (issue 13.3): a run that needs more work than its limit ends with
+// the named failure and the remedy of its kind, within the limit.
+//  * explicit RK on a stiff boom (nodal N = 8): the linearized stability limit (explicit_stable_step,
+//    an eigenvalue computation independent of the run) says the run needs more steps than its
+//    limit, and it stops with "too much work" having taken no more than the limit;
+//  * the step limit of every other integrator, and the wall-clock limit of every integrator;
+//  * a step-size floor above the steps a wire snap needs (the dropped load): "step-size collapse".
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "coupling/integrator_table.hpp"
+#include "crane_test_support.hpp"
+
+namespace {
+
+using namespace ffrf;
+using coupling::FailureKind;
+using coupling::Integrator;
+
+struct Crane {
+  scene::Scene scene;
+  std::unique_ptr<coupling::CraneEquations> equations;
+  Eigen::VectorXd z0;
+  Crane(scene::Scene s, scene::BoomChoice choice) : scene(std::move(s)), equations(scene::build_crane(scene, choice)) {
+    z0 = coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
+  }
+};
+
+coupling::IntegratorSettings settings(Integrator kind, double duration) {
+  coupling::IntegratorSettings s;
+  s.kind = kind;
+  s.relative_tolerance = 1e-6;
+  s.absolute_tolerance = 1e-6;
+  s.duration = duration;
+  s.output_interval = 0.05;
+  if (kind.solver == coupling::Solver::generalized_alpha) s.fixed_step = 0.01;
+  return s;
+}
+
+// The failure of a run that must fail.
+coupling::SolverFailure failure_of(coupling::CraneEquations& equations, const Eigen::VectorXd& z0,
+                                   const coupling::IntegratorSettings& s) {
+  try {
+    coupling::integrate(equations, z0, s);
+  } catch (const coupling::SolverFailure& failure) {
+    std::printf("%s\n", failure.what());
+    return failure;
+  }
+  throw std::runtime_error(std::string(coupling::to_string(s.kind)) + ": the run did not fail");
+}
+
+TEST(IntegratorWorkLimits, ExplicitRungeKuttaOnAStiffBoomStopsWithTooMuchWork) {
+  Crane crane(test::reference_scene(), {scene::BoomKind::nodal, 8, 0, false});
+  auto s = settings(Integrator::arkode, 120.0);
+  s.work.max_steps = 20000;
+  const double stable_step = coupling::explicit_stable_step(*crane.equations, crane.z0);
+  std::printf("stable ERK step %.3e s: 120 s need at least %.3g steps\n", stable_step, s.duration / stable_step);
+  ASSERT_GT(s.duration / stable_step, 10.0 * static_cast<double>(s.work.max_steps)) << "the boom is stiff for ERK";
+  const coupling::SolverFailure failure = failure_of(*crane.equations, crane.z0, s);
+  EXPECT_EQ(failure.kind(), FailureKind::too_much_work);
+  EXPECT_NE(failure.cause().find("step limit of 20000 steps"), std::string::npos) << failure.cause();
+  EXPECT_NE(failure.remedy().find("implicit solver (bdf)"), std::string::npos) << failure.remedy();
+  ASSERT_NE(failure.partial(), nullptr);
+  EXPECT_LE(failure.partial()->stats.steps, s.work.max_steps);
+  EXPECT_GE(failure.partial()->stats.steps, s.work.max_steps - 1);
+  // The time reached is what the steps could cover at about the stable step.
+  EXPECT_LT(failure.time(), 5.0 * static_cast<double>(s.work.max_steps) * stable_step);
+}
+
+TEST(IntegratorWorkLimits, EveryIntegratorStopsAtItsStepLimit) {
+  Crane crane(test::reference_scene(), {scene::BoomKind::nodal, 2, 0, false});
+  for (const coupling::IntegratorEntry& entry : coupling::integrator_table()) {
+    auto s = settings(entry.choice, 30.0);
+    s.work.max_steps = 40;  // far fewer than 30 s of waves need (and than 3000 fixed steps)
+    const coupling::SolverFailure failure = failure_of(*crane.equations, crane.z0, s);
+    EXPECT_EQ(failure.kind(), FailureKind::too_much_work) << entry.name;
+    EXPECT_NE(failure.cause().find("step limit of 40"), std::string::npos) << entry.name << ": " << failure.cause();
+    EXPECT_FALSE(failure.remedy().empty());
+    if (failure.partial()) {
+      EXPECT_LE(failure.partial()->stats.steps, 40) << entry.name;
+    }
+  }
+}
+
+TEST(IntegratorWorkLimits, EveryIntegratorStopsAtItsWallClockLimit) {
+  Crane crane(test::reference_scene(), {scene::BoomKind::nodal, 2, 0, false});
+  for (const coupling::IntegratorEntry& entry : coupling::integrator_table()) {
+    auto s = settings(entry.choice, 30.0);
+    s.work.max_wall_seconds = 1e-4;  // a 30 s run takes far longer
+    const coupling::SolverFailure failure = failure_of(*crane.equations, crane.z0, s);
+    EXPECT_EQ(failure.kind(), FailureKind::too_much_work) << entry.name;
+    EXPECT_NE(failure.cause().find("wall-clock limit"), std::string::npos) << entry.name << ": " << failure.cause();
+    EXPECT_LT(failure.time(), 30.0) << entry.name;
+  }
+}
+
+TEST(IntegratorWorkLimits, AStepSizeFloorAboveWhatAWireSnapNeedsIsAStepSizeCollapse) {
+  // The dropped load: releasing the cargo sets the elastic boom vibrating (its highest modes at N = 4
+  // far above 1/0.05 s⁻¹) and the cargo falls onto the slack wire (a kink in the force): at rtol 1e-6
+  // BDF needs steps well below 0.05 s from the start, so a floor of 0.05 s cannot pass the error test.
+  Crane crane(scene::load_scene(FFRF_SOURCE_DIR "/cases/dropped_load.toml"), {scene::BoomKind::nodal, 4, 0, false});
+  Eigen::VectorXd z0 = crane.z0;
+  z0(crane.equations->cargo_offset() + 1) += 0.5;  // simulation.cargo_lift
+  for (const Integrator kind : {Integrator::cvode, Integrator::ida, Integrator::baumgarte, Integrator::arkode}) {
+    auto s = settings(kind, 2.0);
+    s.output_interval = 0.002;
+    s.work.min_step = 0.05;
+    const coupling::SolverFailure failure = failure_of(*crane.equations, z0, s);
+    EXPECT_EQ(failure.kind(), FailureKind::step_size_collapse) << coupling::to_string(kind);
+    EXPECT_NE(failure.cause().find("step-size floor"), std::string::npos) << failure.cause();
+    EXPECT_LT(failure.time(), 2.0);
+  }
+  auto s = settings(Integrator::cvode, 2.0);  // the same run without the floor finishes
+  s.output_interval = 0.002;
+  EXPECT_NO_THROW(coupling::integrate(*crane.equations, z0, s));
+}
+
+}  // namespace
