@@ -10,6 +10,8 @@
 #include <string>
 
 #include "app/cli_options.hpp"
+#include "app/radiation_option.hpp"
+#include "study/radiation_compare.hpp"
 #include "app/commands.hpp"
 #include "report/compare_report.hpp"
 #include "report/crane_charts.hpp"
@@ -25,6 +27,7 @@ struct CompareOptions {
   DynamicsOptions dynamics;
   study::ReferenceOptions reference;
   std::string stiffening;
+  std::string radiation;  // overrides bem.radiation_model
   std::string tolerance = "1%";
   bool json = false;
   std::string out;
@@ -61,6 +64,7 @@ int run_compare(const CompareOptions& options) {
   if (!scene) return exit_bad_input;
   study::CompareRequest request;
   try {
+    apply_radiation_option(*scene, options.radiation);
     request.stiffening = stiffening_option(options.stiffening);
     request.tolerance = parse_tolerance(options.tolerance);
     request.settings = integrator_settings(options.dynamics, *scene);
@@ -90,8 +94,28 @@ int run_compare(const CompareOptions& options) {
   }
   scene->boom.stiffening = comparison.stiffening;  // what every model ran with
   const report::RunContext context = report::make_context(options.scene, *scene, request.settings);
-  if (out) write_outputs(*out, context, comparison);
+  // A scene with BEM coefficients: the radiation models compared on the chosen boom model (or the
+  // most accurate one), like the boom models, against the Cummins convolution.
+  std::optional<study::RadiationComparison> radiation;
+  if (scene->bem) {
+    const auto& verdict = comparison.verdict;
+    const std::size_t boom = verdict.cheapest ? *verdict.cheapest : verdict.most_accurate.value_or(0);
+    try {
+      running = "radiation models";
+      progress("compare", "radiation models (constant, state-space, convolution) ...", true);
+      radiation = study::compare_radiation(*scene, comparison.runs[boom].choice, request.settings, request.tolerance);
+    } catch (const scene::SceneError& error) {
+      return scene_error("compare", options.scene, error, "the radiation-model crane");
+    } catch (const coupling::SolverFailure& failure) {
+      return solver_failure("compare", running, failure, options.out);
+    }
+  }
+  if (out) {
+    if (radiation) out->write("radiation.txt", study::radiation_comparison_text(*radiation));
+    write_outputs(*out, context, comparison);
+  }
   fmt::print("{}", options.json ? report::compare_json(context, comparison) : report::compare_text(context, comparison));
+  if (radiation && !options.json) fmt::print("{}", study::radiation_comparison_text(*radiation));
   if (!options.out.empty() && !options.json) fmt::print("\nwrote {} (report.md)\n", options.out);
   return exit_ok;
 }
@@ -107,6 +131,7 @@ Command add_compare_command(CLI::App& parent) {
   add_dynamics_options(*sub, options->dynamics);
   add_reference_options(*sub, options->reference);
   add_stiffening_option(*sub, options->stiffening);
+  add_radiation_option(*sub, options->radiation);
   add_tolerance_option(*sub, options->tolerance,
                        "a model passes when its worst normalized RMS error over the judged outputs is within it");
   sub->add_flag("--json", options->json, "Print the JSON summary on stdout instead of the text summary");

@@ -13,6 +13,8 @@
 #include <string>
 
 #include "app/cli_options.hpp"
+#include "app/radiation_option.hpp"
+#include "study/radiation_compare.hpp"
 #include "app/commands.hpp"
 #include "app/option_checks.hpp"
 #include "report/output_directory.hpp"
@@ -25,6 +27,7 @@ struct RecommendOptions {
   std::string scene;
   std::string tolerance = "1%";
   std::string outputs;  // empty: the judged outputs of the scene
+  std::string radiation;  // overrides bem.radiation_model
   std::optional<double> duration;
   study::ReferenceOptions reference;
   bool json = false;
@@ -50,15 +53,18 @@ std::vector<coupling::OutputChannel> parse_outputs(const std::string& text) {
 }
 
 int run_recommend(const RecommendOptions& options) {
-  const std::optional<scene::Scene> scene = load_scene(options.scene, "recommend", true);
+  std::optional<scene::Scene> scene = load_scene(options.scene, "recommend", true);
   if (!scene) return exit_bad_input;
   study::RecommendRequest request;
+  coupling::IntegratorSettings radiation_settings;
   try {
+    apply_radiation_option(*scene, options.radiation);
     request.tolerance = parse_tolerance(options.tolerance);
     if (!options.outputs.empty()) request.outputs = parse_outputs(options.outputs);
     DynamicsOptions dynamics;  // checks the duration against the scene
     dynamics.duration = options.duration;
-    request.duration = integrator_settings(dynamics, *scene).duration;
+    radiation_settings = integrator_settings(dynamics, *scene);
+    request.duration = radiation_settings.duration;
     request.reference = options.reference;
     study::validate(request.reference);
   } catch (const BadOption& error) {
@@ -77,6 +83,20 @@ int run_recommend(const RecommendOptions& options) {
   } catch (const coupling::SolverFailure& failure) {
     return solver_failure("recommend", "reference, " + std::string(coupling::to_string(failure.kind())), failure, options.out);
   }
+  // A scene with BEM coefficients: the cheapest radiation model within the tolerance, verified against
+  // the Cummins convolution on the chosen boom model.
+  std::optional<study::RadiationComparison> radiation;
+  if (scene->bem && rec.chosen) {
+    try {
+      progress("recommend", "radiation models (constant, state-space, convolution)");
+      radiation = study::compare_radiation(*scene, rec.candidates[*rec.chosen].choice, radiation_settings, request.tolerance);
+      progress("recommend", "");
+    } catch (const scene::SceneError& error) {
+      return scene_error("recommend", options.scene, error, "the radiation-model crane");
+    } catch (const coupling::SolverFailure& failure) {
+      return solver_failure("recommend", "radiation models", failure, options.out);
+    }
+  }
   const report::RecommendContext context{options.scene, &*scene, request.tolerance};
   if (out) {
     out->write("recommendation.md", report::recommend_markdown(context, rec));
@@ -84,6 +104,7 @@ int run_recommend(const RecommendOptions& options) {
     out->commit();
   }
   fmt::print("{}", options.json ? report::recommend_json(context, rec) : report::recommend_text(context, rec));
+  if (radiation && !options.json) fmt::print("{}", study::radiation_comparison_text(*radiation));
   if (!options.out.empty() && !options.json) fmt::print("\nwrote {}\n", options.out);
   return rec.chosen ? exit_ok : exit_failure;
 }
@@ -105,6 +126,7 @@ Command add_recommend_command(CLI::App& parent) {
   sub->add_option("--duration", options->duration, "Simulated time [s] of every run (default: simulation.duration of the scene)")
       ->check(scene_key_range("simulation.duration"));
   add_reference_options(*sub, options->reference);
+  add_radiation_option(*sub, options->radiation);
   sub->add_flag("--json", options->json, "Print the JSON report on stdout instead of the text report");
   sub->add_option("--out", options->out, "Write recommendation.md and recommendation.json into this directory");
   return {sub, [options] { return run_recommend(*options); }};

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "app/cli_options.hpp"
+#include "app/radiation_option.hpp"
 #include "app/commands.hpp"
 #include "app/option_checks.hpp"
 #include "report/crane_charts.hpp"
@@ -27,6 +28,7 @@ struct RunOptions {
   std::string scene;
   ModelOptions model;
   std::optional<double> spin_rate;  // overrides hub.spin_rate
+  std::string radiation;            // overrides bem.radiation_model
   DynamicsOptions dynamics;
   bool json = false;
   std::string out;
@@ -59,6 +61,7 @@ int run_crane(const RunOptions& options) {
       }
       scene->hub->spin_rate = *options.spin_rate;
     }
+    apply_radiation_option(*scene, options.radiation);
     choice = boom_choice(options.model, default_boom_choice(*scene));
     settings = integrator_settings(options.dynamics, *scene);
   } catch (const BadOption& error) {
@@ -105,6 +108,7 @@ Command add_run_command(CLI::App& parent) {
   add_model_options(*sub, options->model);
   sub->add_option("--spin-rate", options->spin_rate, "Final spin rate of a hub scene [rad/s] (default: hub.spin_rate)")
       ->check(scene_key_range("hub.spin_rate"));
+  add_radiation_option(*sub, options->radiation);
   add_dynamics_options(*sub, options->dynamics);
   sub->add_flag("--json", options->json, "Print the JSON summary on stdout instead of the text report");
   sub->add_option("--out", options->out,

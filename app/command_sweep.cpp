@@ -16,6 +16,8 @@
 #include <thread>
 
 #include "app/cli_options.hpp"
+#include "app/radiation_option.hpp"
+#include "study/radiation_compare.hpp"
 #include "app/commands.hpp"
 #include "app/option_checks.hpp"
 #include "report/output_directory.hpp"
@@ -29,6 +31,7 @@ namespace {
 struct SweepOptions {
   std::string scene;
   std::string out;
+  std::string radiation;  // overrides bem.radiation_model of every configuration
   int jobs = 0;
   std::string shard;
   std::vector<std::string> merge;
@@ -112,6 +115,7 @@ int run_sweep(const SweepOptions& options) {
   std::optional<scene::Scene> scene = load_scene(options.scene, "sweep", true);
   if (!scene) return exit_bad_input;
   try {
+    apply_radiation_option(*scene, options.radiation);
     request.stiffening = stiffening_option(options.stiffening);
     request.tolerance = parse_tolerance(options.tolerance);
     study::validate(request.reference);
@@ -153,6 +157,22 @@ int run_sweep(const SweepOptions& options) {
              rows.size(), options.shard.empty() ? "" : " (shard " + options.shard + ")", study::to_string(request.grid),
              request.duration, request.jobs, rows.size() - failed, failed, report::reference_label(result.reference),
              report::reference_levels_text(result.reference), report::pareto_text(rows, report::context_facts(context)));
+  // A scene with BEM coefficients: a section comparing the radiation models on the scene's default
+  // boom model against the Cummins convolution, at the sweep's duration and tolerance.
+  if (scene->bem && options.shard.empty()) {
+    try {
+      progress("sweep", "radiation models (constant, state-space, convolution) ...", true);
+      DynamicsOptions dynamics;
+      dynamics.duration = request.duration;
+      const auto radiation = study::compare_radiation(*scene, default_boom_choice(*scene), integrator_settings(dynamics, *scene),
+                                                      request.tolerance);
+      fmt::print("{}", study::radiation_comparison_text(radiation));
+    } catch (const scene::SceneError& error) {
+      return scene_error("sweep", options.scene, error, "the radiation-model crane");
+    } catch (const coupling::SolverFailure& failure) {
+      return solver_failure("sweep", "radiation models", failure, options.out);
+    }
+  }
   if (!options.out.empty()) fmt::print("\nwrote {} (report.md)\n", options.out);
   return exit_ok;
 }
@@ -183,6 +203,7 @@ Command add_sweep_command(CLI::App& parent) {
                 "generalized-alpha at 3 steps, explicit RK at 0.5x and 2x its stability limit");
   add_reference_options(*sub, options->reference);
   add_stiffening_option(*sub, options->stiffening);
+  add_radiation_option(*sub, options->radiation);
   add_tolerance_option(*sub, options->tolerance,
                        "a configuration passes when its worst normalized RMS error over the judged outputs is within it");
   return {sub, [options] { return run_sweep(*options); }};

@@ -1,10 +1,12 @@
-// Cost per time step of the three radiation models of the Cummins equation on the WAMIT fixture's
-// barge (surge, heave, pitch; tests/hydro/data): constant A, B; the fitted state-space model (order
-// chosen for a 2 % and a 0.5 % impulse-response error); the convolution with the retardation
-// function (trapezoid over T_c / h samples). One step = the memory force at the new velocity plus
-// pushing that velocity into the model's history or state. Also a whole Newmark step of the hull
-// (bench "cummins_step"). After Google Benchmark's output, a table of ns per step and the ratio to
-// the constant model, all measured in this one run.
+// Cost of the three radiation models (constant A, B; the fitted state-space model for a 2 % and a
+// 0.5 % impulse-response error; the Cummins convolution) on the WAMIT fixture's barge (surge, heave,
+// pitch; tests/hydro/data), measured side by side in one run:
+//  * radiation_force/KIND: one evaluation of the memory force μ(t, ẋ) at a trial time between the
+//    recorded samples (what a right-hand side or residual of the crane costs more), with the history
+//    recorded every 0.05 s;
+//  * crane_run/KIND: the whole crane of cases/bem_barge_crane.toml (nodal N = 12 boom, CVODE,
+//    rtol 1e-6, BEM excitation) over 30 s: wall time per integrator step, and the steps taken.
+// After Google Benchmark's output, a table of the costs and their ratios to the constant model.
 #include <benchmark/benchmark.h>
 #include <fmt/core.h>
 
@@ -13,8 +15,10 @@
 #include <string>
 #include <unistd.h>
 
-#include "hydro/cummins_solver.hpp"
+#include "hydro/radiation_memory.hpp"
 #include "hydro/wamit_reader.hpp"
+#include "scene/scene_loader.hpp"
+#include "study/radiation_compare.hpp"
 
 namespace {
 
@@ -23,11 +27,9 @@ using namespace ffrf::hydro;
 struct Fixture {
   PlanarRadiation radiation;
   RetardationFunction kernel;
-  PlanarMatrix stiffness;
   Fixture() {
     const std::string data = std::string(FFRF_SOURCE_DIR) + "/tests/hydro/data/";
     radiation = read_wamit_radiation(data + "barge.1", {1.0, 1000.0, 9.81});
-    stiffness = read_wamit_hydrostatics(data + "barge.hst", {1.0, 1000.0, 9.81});
     kernel = retardation_function(radiation, {.time_step = 0.05});
   }
 };
@@ -37,43 +39,57 @@ const Fixture& fixture() {
   return f;
 }
 
-std::unique_ptr<RadiationModel> make_model(const std::string& kind) {
+std::shared_ptr<const RadiationMemoryModel> make_model(const std::string& kind) {
   const auto& f = fixture();
-  if (kind == "constant") return std::make_unique<ConstantRadiationModel>(radiation_at(f.radiation, 1.05));
-  if (kind == "convolution") return std::make_unique<ConvolutionRadiationModel>(f.kernel);
+  if (kind == "constant") return std::make_shared<const RadiationMemoryModel>(constant_memory(radiation_at(f.radiation, 1.05)));
+  if (kind == "convolution") return std::make_shared<const RadiationMemoryModel>(convolution_memory(f.kernel));
   const double tolerance = kind == "state_space_2pct" ? 0.02 : 0.005;
-  return std::make_unique<StateSpaceRadiationModel>(fit_state_space(f.kernel, {.tolerance = tolerance}),
-                                                    f.kernel.infinite_frequency_added_mass, f.kernel.time_step);
+  return std::make_shared<const RadiationMemoryModel>(
+      state_space_memory(fit_state_space(f.kernel, {.tolerance = tolerance}), f.kernel.infinite_frequency_added_mass));
 }
 
-void radiation_step(benchmark::State& state, const std::string& kind) {
-  auto model = make_model(kind);
-  PlanarVector velocity(0.1, 0.2, 0.01);
-  const double c = std::cos(0.05), s = std::sin(0.05);
+void radiation_force(benchmark::State& state, const std::string& kind) {
+  const auto model = make_model(kind);
+  RadiationMemory memory(model);
+  const double h = 0.05;
+  for (int n = 0; n <= 1000; ++n) {  // 50 s of history, longer than T_c
+    memory.record(n * h, PlanarVector(0.1 * std::sin(0.05 * n), 0.2 * std::cos(0.05 * n), 0.01));
+  }
+  double t = 1000 * h + 0.37 * h;
+  const PlanarVector velocity(0.1, 0.2, 0.01);
   for (auto _ : state) {
-    const PlanarVector force = model->memory_force(velocity);
+    const PlanarVector force = memory.force(t, velocity);
     benchmark::DoNotOptimize(force.data());
-    model->push(velocity);
-    velocity = PlanarVector(c * velocity(0) - s * velocity(1), s * velocity(0) + c * velocity(1), velocity(2));
+    t += 1e-9;
   }
   state.SetLabel(kind);
-  if (const auto* ss = dynamic_cast<const StateSpaceRadiationModel*>(model.get())) state.counters["order"] = ss->order();
-  if (const auto* cv = dynamic_cast<const ConvolutionRadiationModel*>(model.get()))
-    state.counters["history"] = static_cast<double>(cv->history_length());
+  state.counters["order"] = model->order;
+  state.counters["kernel_samples"] = static_cast<double>(model->kernel.kernel.size());
 }
 
-void cummins_steps(benchmark::State& state, const std::string& kind) {
-  auto model = make_model(kind);
-  const auto& f = fixture();
-  PlanarMatrix mass = PlanarMatrix::Zero();
-  mass.diagonal() << 4.0e6, 4.0e6, 2.166667e9;
-  constexpr std::size_t steps = 2000;  // 100 s
+std::map<std::string, long> crane_steps;
+
+void crane_run(benchmark::State& state, const std::string& kind) {
+  ffrf::scene::Scene scene = ffrf::scene::load_scene(std::string(FFRF_SOURCE_DIR) + "/cases/bem_barge_crane.toml");
+  if (kind != "constant" && kind != "convolution") scene.bem->state_space_tolerance = kind == "state_space_2pct" ? 0.02 : 0.005;
+  RadiationKind radiation = RadiationKind::constant;
+  parse_radiation_kind(kind == "constant" || kind == "convolution" ? kind : "state-space", radiation);
+  const ffrf::scene::Scene modelled = ffrf::study::with_radiation(scene, radiation);
+  ffrf::coupling::IntegratorSettings settings;
+  settings.duration = 30.0;
+  settings.output_interval = 0.05;
+  long steps = 0;
   for (auto _ : state) {
-    const auto rec = integrate_cummins(mass, f.stiffness, *model, PlanarVector(0, 1, 0.01), PlanarVector::Zero(), 0.05, steps);
-    benchmark::DoNotOptimize(rec.position.back().data());
+    state.PauseTiming();
+    auto prepared = ffrf::study::prepare_run(modelled, {ffrf::scene::BoomKind::nodal, 12});  // fit cached, outside the timing
+    state.ResumeTiming();
+    const auto result = ffrf::coupling::integrate(*prepared.equations, prepared.initial_state, settings);
+    steps = result.stats.steps;
+    benchmark::DoNotOptimize(result.time.data());
   }
-  state.SetLabel("cummins_" + kind);
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * steps));
+  crane_steps["crane_" + kind] = steps;
+  state.SetLabel("crane_" + kind);
+  state.counters["steps"] = static_cast<double>(steps);
 }
 
 class Collector : public benchmark::ConsoleReporter {
@@ -84,9 +100,7 @@ class Collector : public benchmark::ConsoleReporter {
     ConsoleReporter::ReportRuns(runs);
     for (const Run& run : runs) {
       if (run.error_occurred || run.run_type != Run::RT_Iteration) continue;
-      double ns = run.GetAdjustedRealTime();  // in run.time_unit
-      if (run.report_label.rfind("cummins_", 0) == 0) ns = ns * 1e6 / 2000.0;  // ms per 2000 steps → ns per step
-      nanoseconds[run.report_label] = ns;
+      nanoseconds[run.report_label] = run.GetAdjustedRealTime();  // in run.time_unit (ns or ms)
     }
   }
 };
@@ -96,8 +110,10 @@ class Collector : public benchmark::ConsoleReporter {
 int main(int argc, char** argv) {
   const std::string kinds[] = {"constant", "state_space_2pct", "state_space_0.5pct", "convolution"};
   for (const auto& kind : kinds) {
-    benchmark::RegisterBenchmark(("radiation_step/" + kind).c_str(), radiation_step, kind)->Unit(benchmark::kNanosecond);
-    benchmark::RegisterBenchmark(("cummins_step/" + kind).c_str(), cummins_steps, kind)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("radiation_force/" + kind).c_str(), radiation_force, kind)->Unit(benchmark::kNanosecond);
+  }
+  for (const auto& kind : kinds) {
+    benchmark::RegisterBenchmark(("crane_run/" + kind).c_str(), crane_run, kind)->Unit(benchmark::kMillisecond)->Iterations(3);
   }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
@@ -105,16 +121,26 @@ int main(int argc, char** argv) {
   benchmark::RunSpecifiedBenchmarks(&table);
   benchmark::Shutdown();
   const auto& f = fixture();
-  fmt::print("\nRadiation models, barge fixture (3 DOF), step h = 0.05 s, kernel T_c = {:.2f} s ({} samples)\n\n",
-             f.kernel.truncation_time, f.kernel.kernel.size() - 1);
-  fmt::print("| model | memory force + push [ns/step] | ratio | Newmark hull step [ns/step] | ratio |\n|---|---:|---:|---:|---:|\n");
+  fmt::print("\nRadiation models, barge fixture (3 DOF), kernel dt = 0.05 s, T_c = {:.2f} s ({} samples); crane: "
+             "cases/bem_barge_crane.toml, nodal N = 12, CVODE rtol 1e-6, 30 s\n\n",
+             f.kernel.truncation_time, f.kernel.kernel.size());
+  fmt::print("| model | memory force [ns/evaluation] | ratio | crane steps | crane [µs/step] | ratio |\n|---|---:|---:|---:|---:|---:|\n");
+  const auto per_step = [&](const std::string& kind) {
+    const auto ms = table.nanoseconds.find("crane_" + kind);
+    const auto steps = crane_steps.find("crane_" + kind);
+    return ms == table.nanoseconds.end() || steps == crane_steps.end() || steps->second == 0
+               ? 0.0
+               : ms->second * 1e3 / static_cast<double>(steps->second);
+  };
   const double base = table.nanoseconds.count("constant") ? table.nanoseconds.at("constant") : 0.0;
-  const double base_step = table.nanoseconds.count("cummins_constant") ? table.nanoseconds.at("cummins_constant") : 0.0;
+  const double base_step = per_step("constant");
   for (const auto& kind : kinds) {
-    const auto force = table.nanoseconds.find(kind), step = table.nanoseconds.find("cummins_" + kind);
-    if (force == table.nanoseconds.end() || step == table.nanoseconds.end()) continue;
-    fmt::print("| {} | {:.1f} | {:.1f} | {:.1f} | {:.1f} |\n", kind, force->second, base > 0 ? force->second / base : 0.0,
-               step->second, base_step > 0 ? step->second / base_step : 0.0);
+    const auto force = table.nanoseconds.find(kind);
+    if (force == table.nanoseconds.end()) continue;
+    const double step = per_step(kind);
+    fmt::print("| {} | {:.1f} | {:.1f} | {} | {:.1f} | {:.2f} |\n", kind, force->second, base > 0 ? force->second / base : 0.0,
+               crane_steps.count("crane_" + kind) ? crane_steps.at("crane_" + kind) : 0L, step,
+               base_step > 0 ? step / base_step : 0.0);
   }
   return 0;
 }

@@ -5,12 +5,15 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <memory>
 #include <optional>
 
+#include "coupling/bem_excitation.hpp"
 #include "coupling/floating_frame_body.hpp"
 #include "coupling/hull_pressure.hpp"
 #include "coupling/prescribed_motion.hpp"
 #include "coupling/wave_field.hpp"
+#include "hydro/radiation_memory.hpp"
 
 namespace ffrf::coupling {
 
@@ -20,6 +23,13 @@ struct HullModel {
   BoxHullSection section{};                                 // box, hull frame at G1
   Eigen::Vector3d added_mass = Eigen::Vector3d::Zero();     // A11, A33, A55 (surge, heave, pitch)
   Eigen::Vector3d radiation_damping = Eigen::Vector3d::Zero();  // B11, B33, B55 [N s/m, N m s/rad]
+  // Radiation from BEM coefficients, referred to G1 (hydro/radiation_memory.hpp): constant A(ω_c),
+  // B(ω_c), Cummins convolution or its state-space fit; its 3 × 3 added mass joins the hull's mass.
+  // Empty: the diagonal added_mass and radiation_damping above.
+  std::shared_ptr<const hydro::RadiationMemoryModel> radiation_memory;
+  // First-order excitation from BEM (Froude–Krylov + diffraction) at G1; when set, the pressure is
+  // integrated in calm water (hydrostatics only), so Froude–Krylov is counted once.
+  std::shared_ptr<const BemExcitation> bem_excitation;
   double mooring_stiffness = 0.0;                           // surge spring [N/m], anchored at x = 0
   bool hydrostatics = true;                                 // pressure integration on/off
   // Linear support springs towards `support_pose` (surge, heave, pitch): test scenes that hold the

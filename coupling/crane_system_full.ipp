@@ -35,7 +35,7 @@ void CraneSystem<Coords>::full_from_minimal(double t, ConstRef z, ConstRef z_dot
 template <fem::ElasticCoordinates Coords>
 void CraneSystem<Coords>::full_mass_times(ConstRef q, ConstRef a, Ref out) {
   const int b = elastic_at_;
-  if (hull_free()) out.head<3>() = hull_rigid_inertia().cwiseProduct(a.head<3>());
+  if (hull_free()) out.head<3>() = hull_rigid_inertia() * a.head<3>();
   if (has_cargo()) out.segment<3>(cargo_at_) = cargo_inertia().cwiseProduct(a.segment<3>(cargo_at_));
   boom_q_ = q.tail(3 + n_);
   m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_);
@@ -48,7 +48,7 @@ template <fem::ElasticCoordinates Coords>
 void CraneSystem<Coords>::full_mass_matrix(ConstRef q, Eigen::MatrixXd& mass) {
   const int size = full_size(), b = elastic_at_;
   mass.setZero(size, size);
-  if (hull_free()) mass.topLeftCorner<3, 3>() = hull_rigid_inertia().asDiagonal();
+  if (hull_free()) mass.topLeftCorner<3, 3>() = hull_rigid_inertia();
   if (has_cargo()) mass.block<3, 3>(cargo_at_, cargo_at_) = cargo_inertia().asDiagonal();
   boom_q_ = q.tail(3 + n_);
   m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_);
@@ -126,6 +126,7 @@ double CraneSystem<Coords>::wire_stretch_full(ConstRef q) {
 
 template <fem::ElasticCoordinates Coords>
 CraneOutputs CraneSystem<Coords>::full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) {
+  if (hull_free()) record_hull_velocity(t, v.head<3>());
   Eigen::VectorXd forces(full_size());
   full_forces(t, q, v, forces);
   const Eigen::Vector3d hull_q = hull_free() ? Eigen::Vector3d(q.head<3>()) : base_pose(t);

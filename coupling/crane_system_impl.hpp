@@ -65,7 +65,12 @@ class CraneSystem final : public CraneEquations {
   Eigen::Vector3d base_acceleration(double t) const {
     return m_.hull.prescribed ? m_.hull.prescribed->acceleration(t) : Eigen::Vector3d::Zero();
   }
-  Eigen::Vector3d hull_rigid_inertia() const;  // (m1 + A11, m1 + A33, I1 + A55)
+  // diag(m1, m1, I1) + the added mass (diagonal constants, or the BEM model's 3 × 3 A).
+  Eigen::Matrix3d hull_rigid_inertia() const;
+  // The hull's velocity history for the radiation memory: an accepted state at an output time.
+  void record_hull_velocity(double t, const Eigen::Vector3d& hull_v) {
+    if (hull_free()) radiation_.record(t, hull_v);
+  }
   Eigen::Vector3d cargo_inertia() const { return {m_.cargo.mass, m_.cargo.mass, m_.cargo.pitch_inertia}; }
   // Boom frame (R_B, θ_B) and its velocity from the hull pose and velocity (the clamp at B).
   void mount_boom(const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v);
@@ -133,6 +138,7 @@ class CraneSystem final : public CraneEquations {
   Eigen::Vector3d frame_known_acc_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d joint_reaction_ = Eigen::Vector3d::Zero();
   WireState wire_;
+  hydro::RadiationMemory radiation_;  // run state of m_.hull.radiation_memory (inactive without one)
   // Newton-matrix structure (bordered band for nodal coordinates, dense for modal ones), the elastic
   // coordinates that move the wire's attachment (nonzero columns of the tip's shape rows), and
   // workspace of the Jacobians (allocated once).

@@ -77,7 +77,7 @@ void CraneSystem<Coords>::minimal_residual(double t, ConstRef z, ConstRef z_dot,
   out.tail(n_).noalias() -= m_.boom.coords().mass_ff() * eta_ddot;
   if (hull_free()) {
     const Eigen::Matrix3d jr = mount_jacobian();
-    const Eigen::Matrix3d hull_mass = Eigen::Matrix3d(hull_rigid_inertia().asDiagonal()) + jr.transpose() * boom_reference_mass_ * jr;
+    const Eigen::Matrix3d hull_mass = hull_rigid_inertia() + jr.transpose() * boom_reference_mass_ * jr;
     const Eigen::Vector3d hull_a = z_ddot.head<3>();
     out.head<3>() = hull_rhs_ - hull_mass * hull_a;
     out.head<3>().noalias() -= hull_elastic_mass_ * eta_ddot;
@@ -185,7 +185,7 @@ void CraneSystem<Coords>::minimal_jacobian(double t, ConstRef z, ConstRef z_dot,
   const Eigen::Matrix3d jr = mount_jacobian();
   Eigen::Vector3d frame_a = frame_known_acc_;
   if (hull_free()) {
-    const Eigen::Matrix3d hull_mass = Eigen::Matrix3d(hull_rigid_inertia().asDiagonal()) + jr.transpose() * boom_reference_mass_ * jr;
+    const Eigen::Matrix3d hull_mass = hull_rigid_inertia() + jr.transpose() * boom_reference_mass_ * jr;
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) out.mass.at(i, j) = hull_mass(i, j);
       for (int j = 0; j < n_; ++j) out.mass.at(i, e + j) = out.mass.at(e + j, i) = hull_elastic_mass_(i, j);
@@ -232,7 +232,10 @@ void CraneSystem<Coords>::full_jacobian(double t, ConstRef q, ConstRef v, ConstR
   const int size = full_size(), b = elastic_at_, e = elastic_at_ + 3;
   out.set_zero();
   if (hull_free()) {
-    for (int i = 0; i < 3; ++i) out.mass.at(i, i) = hull_rigid_inertia()(i);
+    const Eigen::Matrix3d hull_mass = hull_rigid_inertia();
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) out.mass.at(i, j) = hull_mass(i, j);
+    }
   }
   if (has_cargo()) {
     for (int i = 0; i < 3; ++i) out.mass.at(cargo_at_ + i, cargo_at_ + i) = cargo_inertia()(i);
@@ -275,6 +278,7 @@ template <fem::ElasticCoordinates Coords>
 CraneOutputs CraneSystem<Coords>::minimal_outputs_with_accelerations(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot) {
   Eigen::Vector3d hull_q, hull_v;
   split_minimal(t, z, z_dot, hull_q, hull_v);
+  record_hull_velocity(t, hull_v);
   mount_boom(hull_q, hull_v);
   boom_q_.tail(n_) = z.tail(n_);
   boom_v_.tail(n_) = z_dot.tail(n_);

@@ -19,6 +19,7 @@ CraneSystem<Coords>::CraneSystem(CraneModel<Coords> model)
       boom_q_(3 + n_), boom_v_(3 + n_), boom_force_(3 + n_), elastic_rhs_(n_), schur_rhs_column_(n_),
       boom_coupling_(3, n_), hull_elastic_mass_(3, n_), schur_columns_(n_, 3), schur_rhs_(n_),
       boom_a_(3 + n_), wire_boom_force_(3 + n_) {
+  radiation_ = hydro::RadiationMemory(m_.hull.radiation_memory);
   pair_rhs_.resize(n_, 2);
   pair_solution_.resize(n_, 2);
   frame_columns_.resize(n_, 3);
@@ -46,8 +47,10 @@ CraneSystem<Coords>::CraneSystem(CraneModel<Coords> model)
 }
 
 template <fem::ElasticCoordinates Coords>
-Eigen::Vector3d CraneSystem<Coords>::hull_rigid_inertia() const {
-  return Eigen::Vector3d(m_.hull.mass, m_.hull.mass, m_.hull.pitch_inertia) + m_.hull.added_mass;
+Eigen::Matrix3d CraneSystem<Coords>::hull_rigid_inertia() const {
+  Eigen::Matrix3d inertia = (Eigen::Vector3d(m_.hull.mass, m_.hull.mass, m_.hull.pitch_inertia) + m_.hull.added_mass).asDiagonal();
+  if (radiation_.active()) inertia += radiation_.added_mass();
+  return inertia;
 }
 
 template <fem::ElasticCoordinates Coords>
@@ -65,13 +68,18 @@ void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q
   const double g = m_.gravity;
   const HullModel& hull = m_.hull;
   hull_force_ = Eigen::Vector3d(0.0, -hull.mass * g, 0.0);
+  // Froude–Krylov has one owner: the pressure of the incident wave, or the BEM excitation.
   if (hull.hydrostatics) {
-    const WaveField* wave = (with_wave && m_.wave) ? &*m_.wave : nullptr;
+    const WaveField* wave = (with_wave && m_.wave && !hull.bem_excitation) ? &*m_.wave : nullptr;
     const HullLoad load = hull_pressure_load(hull.section, wave, m_.water_density, g, hull_q.head<2>(), hull_q(2), t);
     hull_force_.head<2>() += load.force;
     hull_force_(2) += load.moment;
   }
   hull_force_ -= hull.radiation_damping.cwiseProduct(hull_v);
+  if (with_wave) {  // the dynamic problem (the static one is at rest in calm water)
+    if (hull.bem_excitation && m_.wave) hull_force_ += m_.wave->ramp(t) * hull.bem_excitation->at(t);
+    if (radiation_.active() && hull_free()) hull_force_ -= radiation_.force(t, hull_v);
+  }
   hull_force_(0) -= hull.mooring_stiffness * hull_q(0);
   hull_force_ -= hull.support_stiffness.cwiseProduct(hull_q - hull.support_pose);
   boom_and_wire_loads(cargo_q, cargo_v, !with_wave);
@@ -158,7 +166,7 @@ void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z
   if (n_ > 0 && !hull_free()) schur_rhs_ = elastic_mass_factor_.solve(elastic_rhs_);
   if (hull_free()) {
     const Eigen::Matrix3d jr = mount_jacobian();
-    Eigen::Matrix3d schur = Eigen::Matrix3d(hull_rigid_inertia().asDiagonal()) + jr.transpose() * boom_reference_mass_ * jr;
+    Eigen::Matrix3d schur = hull_rigid_inertia() + jr.transpose() * boom_reference_mass_ * jr;
     Eigen::Vector3d rhs = hull_rhs_;
     if (n_ > 0) {
       // M_ff⁻¹ M_fR = M_ff⁻¹ [S̄ᵀAᵀ, −(cᵀ + S̃ᵀη)] = [(M_ff⁻¹S̄ᵀ) Aᵀ, −(M_ff⁻¹cᵀ + M_ff⁻¹S̃ᵀη)]: the first
@@ -268,6 +276,7 @@ double CraneSystem<Coords>::wire_stretch_minimal(double t, ConstRef z) {
 
 template <fem::ElasticCoordinates Coords>
 CraneOutputs CraneSystem<Coords>::minimal_outputs(double t, ConstRef z, ConstRef z_dot) {
+  if (hull_free()) record_hull_velocity(t, z_dot.head<3>());
   Eigen::VectorXd z_ddot(z.size());
   minimal_accelerations(t, z, z_dot, z_ddot);
   Eigen::Vector3d hull_q, hull_v;
@@ -292,7 +301,7 @@ CraneOutputs CraneSystem<Coords>::common_outputs(const Eigen::Vector3d& hull_q, 
   out.wire_length = wire_.length;
   const double g = m_.gravity;
   const double cargo_on = has_cargo() ? 1.0 : 0.0;
-  out.kinetic_energy = 0.5 * hull_v.dot(hull_rigid_inertia().cwiseProduct(hull_v)) * (hull_free() ? 1.0 : 0.0) +
+  out.kinetic_energy = 0.5 * hull_v.dot(hull_rigid_inertia() * hull_v) * (hull_free() ? 1.0 : 0.0) +
                        cargo_on * 0.5 * cargo_v.dot(cargo_inertia().cwiseProduct(cargo_v)) +
                        m_.boom.kinetic_energy(boom_v_, boom_reference_mass_, boom_coupling_);
   out.gravity_energy = (hull_free() ? m_.hull.mass * g * hull_q(1) : 0.0) + cargo_on * m_.cargo.mass * g * cargo_q(1) +

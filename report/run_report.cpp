@@ -1,6 +1,7 @@
 // Static report, human summary, JSON summary, time series and warnings of a crane run (see
 // run_report.hpp).
 #include "report/run_report.hpp"
+#include "study/radiation_compare.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -103,7 +104,7 @@ std::string static_report(const scene::Scene& scene, const study::ModelRun& run)
 }
 
 Json settings_json(const RunContext& c) {
-  return Json{{"scene", c.scene_file},
+  Json json{{"scene", c.scene_file},
               {"scene_name", c.scene->name},
               {"integrator", coupling::to_string(c.settings.kind)},
               {"max_bdf_order", c.settings.max_order},
@@ -113,6 +114,11 @@ Json settings_json(const RunContext& c) {
               {"output_interval_s", c.settings.output_interval},
               {"ffrf_version", ffrf_version()},
               {"date", c.date}};
+  if (c.scene->bem) {
+    json["radiation"] = study::radiation_label(*c.scene);
+    json["excitation"] = c.scene->bem->excitation == scene::ExcitationModel::bem ? "bem" : "froude-krylov";
+  }
+  return json;
 }
 
 Json model_json(const scene::Scene& scene, const study::ModelRun& run) {
@@ -218,6 +224,12 @@ std::string run_header_text(const RunContext& c, const study::ModelRun& run) {
                       c.settings.kind == coupling::Integrator::cvode || c.settings.kind == coupling::Integrator::ida
                           ? fmt::format(", BDF order <= {}", c.settings.max_order)
                           : std::string());
+  if (c.scene->bem) {  // hull hydrodynamics from BEM files: which model owns which force
+    text.insert(text.size() - 1, fmt::format("hydro       radiation {}; excitation {}\n", study::radiation_label(*c.scene),
+                                             c.scene->bem->excitation == scene::ExcitationModel::bem
+                                                 ? "BEM (Froude-Krylov + diffraction), pressure hydrostatic only"
+                                                 : "Froude-Krylov (wave pressure on the wetted box)"));
+  }
   return text;
 }
 

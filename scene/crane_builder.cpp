@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "scene/irregular_sea.hpp"
+#include "scene/bem_hull_model.hpp"
 #include "scene/scene_loader.hpp"
 #include "fem/analytic_beam.hpp"
 #include "fem/axial_force.hpp"
@@ -179,6 +180,7 @@ coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords
     model.cargo.present = false;
   }
   if (scene.is_crane()) model.wave = scene_wave_field(scene);  // regular: one component; irregular: synthesized
+  if (scene.bem && scene.is_crane()) apply_bem_hydrodynamics(scene, model.hull, model.wave);
   return model;
 }
 

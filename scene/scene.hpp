@@ -14,6 +14,8 @@
 #include "fem/boundary.hpp"
 #include "fem/mesh.hpp"
 #include "hydro/wave_synthesis.hpp"
+#include "hydro/planar_coefficients.hpp"
+#include "hydro/radiation_memory.hpp"
 
 namespace ffrf::scene {
 
@@ -132,6 +134,28 @@ struct Radiation {
   double pitch_damping;        // B55 [-]
 };
 
+// Hull hydrodynamics from WAMIT files ([bem]; docs/hydrodynamics.md §6): the files as read (at the
+// BEM body origin, ffrf's signs), where that origin lies on the hull, and which models use them.
+enum class ExcitationModel { froude_krylov, bem };  // who owns the incident-wave force (§6 table)
+
+struct BemHull {
+  std::string radiation_file;                 // .1, resolved against the scene file's folder
+  std::string excitation_file;                // .3 ("" = none)
+  std::string hydrostatics_file;              // .hst ("" = none)
+  double length_scale = 1.0;                  // ULEN [m]
+  double origin_above_keel = 0.0;             // BEM origin, hull frame [m]
+  double origin_forward_of_mid_length = 0.0;  // [m]
+  hydro::RadiationKind radiation_model = hydro::RadiationKind::convolution;
+  ExcitationModel excitation = ExcitationModel::froude_krylov;
+  std::optional<double> constant_period;      // [s] A, B of the constant model (default: the wave's period)
+  double state_space_tolerance = 0.02;        // impulse-response error e_r of the fit [-]
+  double kernel_time_step = 0.05;             // K(t) sampling [s]
+  double truncation_time = 0.0;               // T_c [s], 0 = automatic
+  hydro::PlanarRadiation radiation;           // A(ω), B(ω), A(0), A∞
+  std::optional<hydro::PlanarExcitation> excitation_table;
+  std::optional<hydro::PlanarMatrix> hydrostatics;  // C
+};
+
 struct Mooring {
   double surge_stiffness;  // [N/m]
 };
@@ -160,6 +184,7 @@ struct Scene {
   std::optional<Wave> wave;  // the regular wave; empty: calm water or an irregular sea
   std::optional<IrregularSea> sea;  // an irregular sea (excludes wave)
   Radiation radiation;
+  std::optional<BemHull> bem;  // hull coefficients from BEM files (replaces [radiation])
   Mooring mooring;
   Simulation simulation;
   // What the loader's physics checks found doubtful but not wrong (scene/scene_checks.hpp), each

@@ -1,6 +1,7 @@
 // Scene loader: walks the TOML document against the schema table, collects every problem, and
 // builds the Scene value. Only this file knows toml++.
 #include "scene/scene_loader.hpp"
+#include "scene/bem_files.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -75,6 +76,7 @@ class SceneReader final : public WrittenKeys {
     if (!problems_.empty()) throw SceneError(sorted(std::move(problems_)));
     Scene scene = build();
     check_physics(scene);
+    if (problems_.empty()) read_bem_files(scene);
     if (!problems_.empty()) throw SceneError(sorted(std::move(problems_)));
     return scene;
   }
@@ -354,6 +356,47 @@ class SceneReader final : public WrittenKeys {
     }
   }
 
+  // [bem]: the keys (the files are read by read_bem_files once every key is valid).
+  BemHull bem_keys() const {
+    BemHull bem;
+    const auto file = [&](std::string_view key) { return has(key) ? resolve_scene_path(file_, text(key)) : std::string(); };
+    bem.radiation_file = file("bem.radiation_file");
+    bem.excitation_file = file("bem.excitation_file");
+    bem.hydrostatics_file = file("bem.hydrostatics_file");
+    bem.length_scale = number("bem.length_scale");
+    bem.origin_above_keel = number("bem.origin_above_keel");
+    bem.origin_forward_of_mid_length = number("bem.origin_forward_of_mid_length");
+    hydro::parse_radiation_kind(text("bem.radiation_model"), bem.radiation_model);
+    bem.excitation = text("bem.excitation") == "bem" ? ExcitationModel::bem : ExcitationModel::froude_krylov;
+    if (has("bem.constant_period")) bem.constant_period = number("bem.constant_period");
+    bem.state_space_tolerance = number("bem.state_space_tolerance");
+    bem.kernel_time_step = number("bem.kernel_time_step");
+    bem.truncation_time = number("bem.truncation_time");
+    return bem;
+  }
+
+  // Reads the WAMIT files of [bem] (scene/bem_files.hpp); a problem is reported at the key that
+  // names the file (or the key the inconsistency concerns), the file's own line in the message.
+  void read_bem_files(Scene& scene) {
+    if (!scene.bem) return;
+    const auto line_of_key = [&](const std::string& key) {
+      if (const auto found = present_.find(key); found != present_.end()) return line_of(*found->second);
+      return line_of(*sections_.at("bem"));
+    };
+    const auto value_of_key = [&](const std::string& key) {
+      const auto found = present_.find(key);
+      return found != present_.end() ? show_value(*found->second) : std::string();
+    };
+    if (sections_.contains("radiation")) {
+      report(line_of(*sections_.at("radiation")), "radiation", "",
+             "conflicts with [bem]: the BEM files give the radiation coefficients; remove one of the two sections");
+      return;
+    }
+    for (const BemProblem& problem : load_bem_files(scene)) {
+      report(line_of_key(problem.key), problem.key, value_of_key(problem.key), problem.message);
+    }
+  }
+
   double boom_mass_per_length() const {
     return has("boom.mass_per_length") ? number("boom.mass_per_length") : number("boom.density") * number("boom.area");
   }
@@ -399,6 +442,7 @@ class SceneReader final : public WrittenKeys {
     scene.radiation = Radiation{number("radiation.surge_added_mass"), number("radiation.heave_added_mass"),
                                 number("radiation.pitch_added_inertia"), number("radiation.surge_damping"),
                                 number("radiation.heave_damping"), number("radiation.pitch_damping")};
+    if (sections_.contains("bem")) scene.bem = bem_keys();
     scene.mooring = Mooring{number("mooring.surge_stiffness")};
     scene.simulation = Simulation{number("simulation.duration"), number("simulation.output_interval"),
                                   text("simulation.initial_state") == "as-built" ? InitialState::as_built

@@ -90,6 +90,11 @@ constexpr std::array kSections{
                 "Linear radiation with constant coefficients in the hull frame at G1: added mass as multiples of "
                 "the displaced mass (surge, heave) or of the hull's pitch inertia I55, damping as fractions of "
                 "critical. Leave the section out for no radiation."},
+    SectionSpec{"bem", SectionRole::optional,
+                "Hull hydrodynamics from WAMIT output files (.1 added mass and damping, .3 excitation, .hst "
+                "hydrostatics) of the same hull, referred to G1: radiation by constant A(ω_c), B(ω_c), the Cummins "
+                "convolution or its state-space fit; excitation by the incident-wave pressure (Froude–Krylov) or the "
+                "BEM file (Froude–Krylov + diffraction). Excludes [radiation]. docs/hydrodynamics.md §6."},
     SectionSpec{"mooring", SectionRole::optional, "Linear mooring springs on the hull."},
     SectionSpec{"simulation", SectionRole::optional, "Time span and output of `ffrf run`."},
 };
@@ -222,6 +227,31 @@ constexpr std::array kKeys{
     defaulted("radiation.surge_damping", ratio, between(0.0, 2.0), 0.0, "B11 as a fraction of critical damping in surge."),
     defaulted("radiation.heave_damping", ratio, between(0.0, 2.0), 0.0, "B33 as a fraction of critical damping in heave."),
     defaulted("radiation.pitch_damping", ratio, between(0.0, 2.0), 0.0, "B55 as a fraction of critical damping in pitch."),
+    // [bem]
+    text("bem.radiation_file",
+         "WAMIT .1 file (added mass and damping with the zero- and infinite-frequency rows), relative to the scene "
+         "file. Required in [bem]."),
+    text("bem.excitation_file", "WAMIT .3 file (excitation per unit amplitude); needed by bem.excitation = \"bem\"."),
+    text("bem.hydrostatics_file", "WAMIT .hst file; checked against the box hull's waterplane (C33 = ρgLB within 2 %)."),
+    defaulted("bem.length_scale", length, between(0.01, 1000.0), 1.0, "WAMIT's ULEN of the run that wrote the files."),
+    defaulted("bem.origin_above_keel", length, between(-100.0, 200.0), 0.0,
+              "Height of the BEM body origin above the keel (WAMIT's origin is usually on the free surface: the "
+              "draft)."),
+    defaulted("bem.origin_forward_of_mid_length", length, between(-500.0, 500.0), 0.0,
+              "Distance of the BEM body origin forward of the hull's mid-length."),
+    choice("bem.radiation_model", "constant|state-space|convolution", "convolution",
+           "constant: A(ω_c), B(ω_c) (cheapest); convolution: Cummins with A∞ and the retardation function K(t) "
+           "(the reference); state-space: a fitted realization of K(t). `--radiation` overrides it."),
+    choice("bem.excitation", "froude-krylov|bem", "froude-krylov",
+           "Incident-wave force: froude-krylov = the wave pressure on the wetted box; bem = Froude–Krylov + "
+           "diffraction from bem.excitation_file (the pressure is then calm water: hydrostatics only)."),
+    optional("bem.constant_period", time, between(0.5, 200.0),
+             "Period at which the constant model takes A and B. Default: the wave's period."),
+    defaulted("bem.state_space_tolerance", ratio, between(1e-4, 0.5), 0.02,
+              "Impulse-response error e_r that fixes the state-space fit's order (smallest stable order within it)."),
+    defaulted("bem.kernel_time_step", time, between(0.005, 0.5), 0.05, "Sampling step of the retardation function K(t)."),
+    defaulted("bem.truncation_time", time, between(0.0, 600.0), 0.0,
+              "Truncation time T_c of K(t) (0: automatic, where every entry stays below 10⁻³ of the peak)."),
     // [mooring]
     defaulted("mooring.surge_stiffness", stiffness, between(0.0, 1e10), 0.0,
               "Surge spring on the hull at G1. A floating hull needs it: nothing else restores surge, so its static "

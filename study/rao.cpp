@@ -95,7 +95,9 @@ std::vector<scene::BoomChoice> rao_models() {
 
 scene::Scene with_regular_wave(const scene::Scene& scene, double height, double period, double ramp_periods) {
   scene::Scene waved = scene;
-  const scene::WaveDirection direction = scene.wave ? scene.wave->direction : scene::WaveDirection::following;
+  scene::WaveDirection direction = scene.wave ? scene.wave->direction : scene::WaveDirection::following;
+  if (scene.sea && scene.sea->heading == hydro::WaveHeading::head) direction = scene::WaveDirection::head;
+  waved.sea.reset();  // a regular wave replaces the scene's irregular sea (the frequency domain is per component)
   waved.wave = scene::Wave{height, period, direction, ramp_periods};
   return waved;
 }
@@ -116,6 +118,7 @@ std::vector<NaturalMode> coupled_natural_modes(const scene::Scene& scene, const 
   require_crane(scene);
   scene::Scene calm = scene;
   calm.wave.reset();
+  calm.sea.reset();
   PreparedRun prepared = prepare_run(calm, choice, modes);
   return natural_modes(coupling::linearise_crane(*prepared.equations, prepared.statics.z));
 }
@@ -132,8 +135,16 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
   if (!(request.excitation_amplitude > 0.0)) throw std::invalid_argument("the excitation amplitude must be positive");
   modal::ModeCache own;
   modal::ModeCache& cache = modes != nullptr ? *modes : own;
+  if (scene.bem && !request.hydrodynamics) {
+    // Linearised at t = 0, a [bem] hull would show only its radiation model's A and ∂μ/∂ẋ(0), not the
+    // files' A(ω), B(ω) and excitation: refuse rather than give RAOs that are not those of the files.
+    throw scene::SceneError({{scene.file, 0, 0, "bem", "",
+                              "the frequency domain does not yet use BEM coefficients (its RAOs would not be those of the "
+                              "files); run the time domain (ffrf run/compare) on this scene, or use [radiation] constants"}});
+  }
   scene::Scene calm = scene;
   calm.wave.reset();
+  calm.sea.reset();
   RaoResult result;
   result.angular_frequencies = request.angular_frequencies;
   result.excitation_amplitude = request.excitation_amplitude;

@@ -32,6 +32,7 @@ struct CliCase {
   std::vector<std::string> words;  // {dir} filled in
   std::string scene_text = {};     // written to {dir}/scene.toml
   bool as_nobody = false;          // run without write permission where the test is root
+  std::vector<std::pair<std::string, std::string>> files = {};  // more files written to {dir}: name, text
 };
 
 std::ostream& operator<<(std::ostream& out, const CliCase& c) { return out << c.name; }
@@ -232,9 +233,70 @@ std::vector<CliCase> misuse_cases() {
   };
 }
 
+// Scenes with WAMIT files ([bem]): the files beside the scene, each case with one file or key wrong.
+std::vector<CliCase> bem_cases() {
+  const std::string scene = replaced(replaced(replaced(read_text(source_file("cases/bem_barge_crane.toml")),
+                                                       "\"../tests/hydro/data/barge.1\"", "\"barge.1\""),
+                                              "\"../tests/hydro/data/barge.3\"", "\"barge.3\""),
+                                     "\"../tests/hydro/data/barge.hst\"", "\"barge.hst\"");
+  const std::string radiation = read_text(source_file("tests/hydro/data/barge.1"));
+  const std::vector<std::pair<std::string, std::string>> fixture{
+      {"barge.1", radiation},
+      {"barge.3", read_text(source_file("tests/hydro/data/barge.3"))},
+      {"barge.hst", read_text(source_file("tests/hydro/data/barge.hst"))}};
+  const auto with_radiation_file = [&](std::string text) {
+    auto files = fixture;
+    files[0].second = std::move(text);
+    return files;
+  };
+  std::string no_infinite, no_heave, reordered;
+  std::vector<std::string> lines;
+  for (std::size_t at = 0, end = 0; at < radiation.size(); at = end + 1) {
+    end = std::min(radiation.find('\n', at), radiation.size());
+    lines.push_back(radiation.substr(at, end - at));
+  }
+  for (const std::string& line : lines) {
+    if (line.rfind("  0.000000E+00", 0) != 0) no_infinite += line + "\n";
+    if (line.rfind("  9.000000E-01     3     3", 0) != 0) no_heave += line + "\n";
+  }
+  for (std::size_t i = 0; i < lines.size(); ++i) {  // the 1.05 s rows before the 0.9 s rows
+    if (lines[i].rfind("  9.000000E-01", 0) == 0) continue;
+    if (lines[i].rfind("  1.200000E+00", 0) == 0 && reordered.find("  9.000000E-01") == std::string::npos) {
+      for (const std::string& row : lines) {
+        if (row.rfind("  9.000000E-01", 0) == 0) reordered += row + "\n";
+      }
+    }
+    reordered += lines[i] + "\n";
+  }
+  const auto check = [&](std::string name, std::string text, std::vector<std::pair<std::string, std::string>> files,
+                         std::vector<std::string> words) {
+    return CliCase{std::move(name), "check {scene}", 2, std::move(words), std::move(text), false, std::move(files)};
+  };
+  return {
+      check("bem_file_not_found", replaced(scene, "\"barge.1\"", "\"nope.1\""), fixture,
+            {"scene.toml:58: bem.radiation_file = \"nope.1\"", "file not found: {dir}/nope.1"}),
+      check("bem_no_infinite_frequency", scene, with_radiation_file(no_infinite),
+            {"bem.radiation_file = \"barge.1\"", "{dir}/barge.1: no infinite-frequency limit (rows with PER = 0)"}),
+      check("bem_missing_heave", scene, with_radiation_file(no_heave),
+            {"{dir}/barge.1:12: period 0.9 s: no diagonal entry for mode 3 (heave)"}),
+      check("bem_periods_not_monotonic", scene, with_radiation_file(reordered),
+            {"{dir}/barge.1:", "the periods are not monotonic"}),
+      check("bem_hydrostatics_of_another_hull", replaced(scene, "width = 10.0 ", "width = 14.0 "), fixture,
+            {"bem.hydrostatics_file = \"barge.hst\"", "C33", "valid: within 2 %", "another hull"}),
+      check("bem_and_radiation_sections", scene + "\n[radiation]\nheave_added_mass = 1.0\n", fixture,
+            {"radiation: conflicts with [bem]"}),
+      check("bem_excitation_without_file", replaced(scene, "excitation_file = \"barge.3\"", ""), fixture,
+            {"bem.excitation = \"bem\"", "needs bem.excitation_file"}),
+      CliCase{"radiation_without_bem", "run {crane} --duration 2 --radiation convolution --out {out}", 2,
+              {"--radiation convolution", "no [bem] section"}},
+      CliCase{"unknown_radiation", "run {scene} --duration 2 --radiation memory --out {out}", 2,
+              {"--radiation memory", "choose one of constant, state-space, convolution"}, scene, false, fixture},
+  };
+}
+
 std::vector<CliCase> all_cli_cases() {
   std::vector<CliCase> cases = scene_cases_through_the_program();
-  for (auto part : {physics_cases(), misuse_cases()}) cases.insert(cases.end(), part.begin(), part.end());
+  for (auto part : {physics_cases(), misuse_cases(), bem_cases()}) cases.insert(cases.end(), part.begin(), part.end());
   return cases;
 }
 
@@ -244,6 +306,7 @@ TEST_P(CorpusCli, ExitCodeNamedMessageNothingLeftBehind) {
   const CliCase& bad = GetParam();
   TempDir dir;
   if (!bad.scene_text.empty()) write_text(dir / "scene.toml", bad.scene_text);
+  for (const auto& [name, text] : bad.files) write_text(dir / name, text);
   std::string prefix;
   if (bad.as_nobody) {
     fs::create_directory(dir / "locked");

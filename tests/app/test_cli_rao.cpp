@@ -48,5 +48,36 @@ TEST(CliRao, OneModelFromTheOptionsAndAFailedCheckExitsOne) {
   EXPECT_FALSE(summary["time_domain_check"][0]["passed"].flag);
 }
 
+// A [bem] hull: the linearisation would see only the radiation model's A and ∂μ/∂ẋ(0), not the
+// files' A(ω), B(ω): the command refuses with exit 2, naming the section, and writes nothing.
+TEST(CliRao, ABemSceneIsRefusedNamingTheSection) {
+  TempDir dir;
+  const RunResult r = run_ffrf("rao '" + source_file("cases/bem_barge_crane.toml") + "' --out '" +
+                                   (dir.path() / "rao").string() + "'", dir.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("bem"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("does not yet use BEM coefficients"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "rao"));
+}
+
+// An irregular-sea scene: the frequency domain takes its components one at a time (a regular wave
+// replaces the sea), so the RAOs equal those of the same crane in a regular wave.
+TEST(CliRao, AnIrregularSceneGivesTheRegularScenesRaos) {
+  TempDir dir;
+  const RunResult irregular = run_ffrf("rao '" + source_file("cases/irregular_sea_crane.toml") +
+                                           "' --boom rigid --frequencies 0.6283 --json", dir.path());
+  const RunResult regular = run_ffrf("rao '" + kCrane + "' --boom rigid --frequencies 0.6283 --json", dir.path());
+  ASSERT_EQ(irregular.exit_code, 0) << irregular.err;
+  ASSERT_EQ(regular.exit_code, 0) << regular.err;
+  const Json a = JsonParser(irregular.out).parse();
+  const Json b = JsonParser(regular.out).parse();
+  for (const char* output : {"hull_heave", "hull_pitch", "cargo_heave"}) {
+    const double irregular_amplitude = a["models"][0]["rao"][output]["amplitude"][0].number;
+    EXPECT_GT(irregular_amplitude, 0.0) << output;
+    EXPECT_NEAR(irregular_amplitude, b["models"][0]["rao"][output]["amplitude"][0].number, 1e-9 * irregular_amplitude)
+        << output;
+  }
+}
+
 }  // namespace
 }  // namespace ffrf::test

@@ -122,6 +122,20 @@ TEST(CliRun, TextReportShowsTheStaticEquilibriumAndSaysTheModelIsLinear) {
                           "ida", "wall time"});
 }
 
+TEST(CliRun, ABemSceneRecordsItsRadiationModelAndTheOptionOverridesIt) {
+  TempDir dir;
+  const std::string scene = source_file("cases/bem_barge_crane.toml");
+  const RunResult text = run_ffrf("run " + scene + " --boom rigid --duration 2", dir.path());
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  expect_mentions(text.out, {"hydro       radiation convolution T_c = 34.9 s (698 samples)",
+                             "excitation BEM (Froude-Krylov + diffraction), pressure hydrostatic only"});
+  const RunResult json = run_ffrf("run " + scene + " --boom rigid --duration 2 --radiation constant --json", dir.path());
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const Json summary = JsonParser(json.out).parse();
+  EXPECT_EQ(summary["provenance"]["radiation"].text, "constant A, B at T = 8 s");
+  EXPECT_EQ(summary["provenance"]["excitation"].text, "bem");
+}
+
 TEST(CliRun, LagrangeMultiplierRunKeepsTheConstraint) {
   TempDir dir;
   const RunResult r = run_ffrf("run " + kScene + " --elements 2 --integrator ida --duration 2 --json", dir.path());

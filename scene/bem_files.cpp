@@ -1,0 +1,81 @@
+// Reading a scene's WAMIT files (see the header).
+#include "scene/bem_files.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "hydro/wamit_reader.hpp"
+
+namespace ffrf::scene {
+
+std::string resolve_scene_path(const std::string& scene_file, const std::string& written) {
+  const std::filesystem::path path(written);
+  if (path.is_absolute() || scene_file.empty()) return written;
+  // Not normalized: "cases/../data" must go through a symlinked cases/ as the OS resolves it.
+  return (std::filesystem::path(scene_file).parent_path() / path).string();
+}
+
+namespace {
+
+// The file's problem, or "" when it exists and is a regular file.
+std::string missing_file(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) return fmt::format("file not found: {}", path);
+  if (!std::filesystem::is_regular_file(path, error)) return fmt::format("not a regular file: {}", path);
+  return {};
+}
+
+}  // namespace
+
+std::vector<BemProblem> load_bem_files(Scene& scene) {
+  std::vector<BemProblem> problems;
+  BemHull& bem = *scene.bem;
+  if (!scene.hull) {
+    problems.push_back({"bem", "belongs to a floating hull: give [hull] (a hub scene has no water)"});
+    return problems;
+  }
+  if (bem.radiation_file.empty()) {
+    problems.push_back({"bem.radiation_file", "missing: [bem] needs the WAMIT .1 file (added mass and damping)"});
+    return problems;
+  }
+  if (bem.excitation == ExcitationModel::bem && bem.excitation_file.empty()) {
+    problems.push_back({"bem.excitation", "\"bem\" needs bem.excitation_file (the WAMIT .3 file); or choose \"froude-krylov\""});
+  }
+  const hydro::WamitScaling scaling{bem.length_scale, scene.environment.water_density, scene.environment.gravity};
+  const auto read = [&](const std::string& key, const std::string& path, auto&& reader) {
+    if (path.empty()) return;
+    if (const std::string missing = missing_file(path); !missing.empty()) {
+      problems.push_back({key, missing});
+      return;
+    }
+    try {
+      reader(path);
+    } catch (const hydro::WamitFileError& error) {
+      problems.push_back({key, error.what()});
+    } catch (const std::invalid_argument& error) {
+      problems.push_back({key, fmt::format("{}: {}", path, error.what())});
+    }
+  };
+  read("bem.radiation_file", bem.radiation_file,
+       [&](const std::string& path) { bem.radiation = hydro::read_wamit_radiation(path, scaling); });
+  read("bem.excitation_file", bem.excitation_file,
+       [&](const std::string& path) { bem.excitation_table = hydro::read_wamit_excitation(path, scaling); });
+  read("bem.hydrostatics_file", bem.hydrostatics_file,
+       [&](const std::string& path) { bem.hydrostatics = hydro::read_wamit_hydrostatics(path, scaling); });
+  if (bem.hydrostatics) {
+    // The pressure integration owns the hydrostatics; the .hst must describe the same waterplane.
+    const Hull& hull = *scene.hull;
+    const double box = scene.environment.water_density * scene.environment.gravity * hull.length * hull.width;
+    const double file = (*bem.hydrostatics)(1, 1);
+    if (!(std::abs(file - box) <= 0.02 * box)) {
+      problems.push_back({"bem.hydrostatics_file",
+                          fmt::format("{}: C33 = {:.6g} N/m differs from the box hull's ρ·g·L·B = {:.6g} N/m by {:.1f} % "
+                                      "(valid: within 2 %): the BEM files describe another hull than [hull]",
+                                      bem.hydrostatics_file, file, box, 100.0 * (file - box) / box)});
+    }
+  }
+  return problems;
+}
+
+}  // namespace ffrf::scene
