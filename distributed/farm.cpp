@@ -91,7 +91,13 @@ FarmResult run_farm(Session& session, const std::vector<Task>& tasks, const Work
   ProgressMeter progress(options.progress_label, ProgressCounts{positions.size(), result.resumed, 0, resumed_failures},
                          options.progress_on_terminal);
   std::exception_ptr failure;  // a journal that cannot be written: stop handing out, then report
+  std::optional<std::string> abandoned;  // a task given up on a stop request: hand out nothing more
   const auto record = [&](TaskOutcome outcome) {
+    if (outcome.abandoned) {
+      if (!abandoned) abandoned = outcome.error;
+      pending.clear();
+      return;
+    }
     if (!failure) {
       try {
         journal->append(outcome);
@@ -138,6 +144,7 @@ FarmResult run_farm(Session& session, const std::vector<Task>& tasks, const Work
   if (ranks) ranks->release();
   progress.close();
   if (failure) std::rethrow_exception(failure);
+  if (abandoned) throw TaskAbandoned(*abandoned);
 
   for (std::size_t position : positions) {
     TaskOutcome& outcome = *known[position];

@@ -5,6 +5,8 @@
 
 #include <stdexcept>
 
+#include "coupling/stop_request.hpp"
+#include "distributed/errors.hpp"
 #include "study/operability.hpp"
 
 namespace ffrf::study {
@@ -80,7 +82,11 @@ OperabilityStudy run_operability(distributed::Session& session, const scene::Sce
   const distributed::WorkFunction work = [&](const distributed::Task& task) {
     const RecordTask& r = records[task.index];
     const CellModel& model = r.converged ? converged[r.cell] : recommended[r.cell];
-    return encode(run_record(scene, cells[r.cell], r.seed, model, request, &modes));
+    try {
+      return encode(run_record(scene, cells[r.cell], r.seed, model, request, &modes));
+    } catch (const coupling::Interrupted& stop) {  // not a result: the rerun computes it again
+      throw distributed::TaskAbandoned(fmt::format("{}: interrupted by signal {}", task.key, stop.signal));
+    }
   };
   if (farm_options.progress_label == "tasks") farm_options.progress_label = "operability records";
   study.farm = distributed::run_farm(session, tasks, work, farm_options);

@@ -49,6 +49,7 @@ struct SweepRequest {
 
 struct SweepStudy {
   double tolerance = 0.01;  // of the verdict
+  scene::Scene scene;       // the scene as every run models it (the stiffening decided)
   scene::Stiffening stiffening = scene::Stiffening::none;
   bool stiffening_from_physics = false;
   ConvergedReference reference;
@@ -71,7 +72,12 @@ struct SweepSetup {
 // One configuration (thread-safe).
 SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config);
 
-// The reference, then the shard's configurations over request.jobs threads. `on_reference` is
+// The reference and what the runs are measured over (everything but the results). Throws as sweep().
+SweepStudy sweep_reference(const scene::Scene& scene, const SweepRequest& request, modal::ModeCache* modes);
+// The shard's configurations, in grid order.
+std::vector<SweepConfig> sweep_configurations(const SweepRequest& request);
+
+// The reference, then the shard's configurations over request.jobs threads (in this process). `on_reference` is
 // called once the reference is known; `progress` (serialized) after each configuration with the
 // number done and the total. Throws scene::SceneError, coupling::SolverFailure (the reference),
 // SettingError.
