@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "scene/irregular_sea.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace ffrf::app {
@@ -33,6 +34,19 @@ std::string summary(const scene::Scene& scene) {
   if (scene.wave) {
     text += fmt::format(", wave {:g} m / {:g} s {}", scene.wave->height, scene.wave->period,
                         scene.wave->direction == scene::WaveDirection::following ? "following" : "head");
+  } else if (scene.sea) {
+    const scene::IrregularSea& sea = *scene.sea;
+    const char* heading = sea.heading == hydro::WaveHeading::following ? "following" : "head";
+    if (sea.spectrum == scene::SeaSpectrum::components) {
+      text += fmt::format(", {} wave components {}", sea.component_frequencies.size(), heading);
+    } else {
+      const hydro::WaveComponents components = scene::sea_components(scene);
+      text += fmt::format(", {} sea Hs {:g} m / Tp {:g} s {}, seed {}, {} components (repeats after {:.6g} s)",
+                          sea.spectrum == scene::SeaSpectrum::jonswap ? fmt::format("JONSWAP (γ {:g})", sea.peak_enhancement)
+                                                                      : std::string("Pierson-Moskowitz"),
+                          sea.significant_height, sea.peak_period, heading, sea.seed, components.size(),
+                          components.repeat_period());
+    }
   } else {
     text += ", calm water";
   }

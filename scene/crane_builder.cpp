@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "scene/irregular_sea.hpp"
 #include "scene/scene_loader.hpp"
 #include "fem/analytic_beam.hpp"
 #include "fem/axial_force.hpp"
@@ -177,11 +178,7 @@ coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords
   } else {
     model.cargo.present = false;
   }
-  if (scene.wave && scene.is_crane()) {
-    const double direction = scene.wave->direction == WaveDirection::following ? 1.0 : -1.0;
-    model.wave = coupling::WaveField::regular(scene.wave->height, scene.wave->period, direction,
-                                              scene.wave->ramp_periods, env.water_depth, env.gravity);
-  }
+  if (scene.is_crane()) model.wave = scene_wave_field(scene);  // regular: one component; irregular: synthesized
   return model;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -12,6 +13,7 @@
 
 #include "fem/boundary.hpp"
 #include "fem/mesh.hpp"
+#include "hydro/wave_synthesis.hpp"
 
 namespace ffrf::scene {
 
@@ -96,6 +98,30 @@ struct Wave {
   double ramp_periods;  // ramp-in length in periods [-]
 };
 
+// An irregular long-crested sea ([wave] with spectrum ≠ regular; docs/hydrodynamics.md §2.2): a
+// parametric spectrum synthesized with random phases (scene/irregular_sea.hpp), or user components
+// η(0, t) = Σ a_n cos(ω_n t + φ_n). Exclusive with Scene::wave (the regular wave).
+enum class SeaSpectrum { jonswap, pierson_moskowitz, components };
+
+struct IrregularSea {
+  SeaSpectrum spectrum = SeaSpectrum::jonswap;
+  double significant_height = 0.0;  // Hs [m] (jonswap, pierson-moskowitz)
+  double peak_period = 0.0;         // Tp [s]
+  double peak_enhancement = 3.3;    // γ [-] (jonswap)
+  double sigma_below = 0.07;        // σa, ω ≤ ωp (jonswap)
+  double sigma_above = 0.09;        // σb, ω > ωp (jonswap)
+  hydro::WaveHeading heading = hydro::WaveHeading::following;
+  std::uint64_t seed = 1;
+  int component_count = 0;          // 0: Δω = 2π / simulation.duration over the band
+  double frequency_min = 0.0;       // band [rad/s]; both 0: the band holding all but 0.1 % of m0
+  double frequency_max = 0.0;
+  bool random_amplitudes = false;   // Rayleigh-distributed amplitudes
+  std::vector<double> component_frequencies;  // ω_n [rad/s] (components)
+  std::vector<double> component_amplitudes;   // a_n [m]
+  std::vector<double> component_phases;       // φ_n [rad]
+  double ramp_periods = 2.0;        // ramp-in over this many Tp (components: the longest period)
+};
+
 // Constant radiation coefficients (hull frame at G1) as multiples / fractions of critical.
 struct Radiation {
   double surge_added_mass;     // A11 / displaced mass [-]
@@ -131,7 +157,8 @@ struct Scene {
   std::optional<Cargo> cargo;
   std::optional<Wire> wire;
   Environment environment;
-  std::optional<Wave> wave;  // empty: calm water
+  std::optional<Wave> wave;  // the regular wave; empty: calm water or an irregular sea
+  std::optional<IrregularSea> sea;  // an irregular sea (excludes wave)
   Radiation radiation;
   Mooring mooring;
   Simulation simulation;

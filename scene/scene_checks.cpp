@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "coupling/wave_field.hpp"
+#include "scene/irregular_sea.hpp"
 
 namespace ffrf::scene {
 namespace {
@@ -197,6 +198,62 @@ void check_wave(const Scene& scene, Findings& found) {
   }
 }
 
+// An irregular sea: below DNV-RP-C205's mean-steepness limit (§3.5.5: Sp = 2π Hs / (g Tp²) ≤ 1/15
+// for Tp ≤ 8 s, 1/25 for Tp ≥ 15 s, linear between), every user component below Michell's limit
+// (H/λ = a k / π < 1/7), and a warning when the synthesized sea repeats within the record.
+void check_sea(const Scene& scene, Findings& found) {
+  const IrregularSea& sea = *scene.sea;
+  const double g = scene.environment.gravity, depth = scene.environment.water_depth;
+  if (g <= 0.0) return;
+  if (sea.spectrum == SeaSpectrum::components) {
+    for (std::size_t n = 0; n < sea.component_frequencies.size() && n < sea.component_amplitudes.size(); ++n) {
+      const double k = coupling::WaveField::wave_number_from_dispersion(sea.component_frequencies[n], depth, g);
+      const double limit = std::numbers::pi / (7.0 * k);
+      if (sea.component_amplitudes[n] >= limit) {
+        found.error({"wave.component_amplitudes", "wave.component_frequencies"},
+                    fmt::format("component {} breaks: amplitude {:g} m at ω = {:g} rad/s (λ = {:.4g} m) is a steepness "
+                                "H/λ = {:.3g}, not below 1/7 (valid range [0, {:.4g}) m)",
+                                n + 1, sea.component_amplitudes[n], sea.component_frequencies[n],
+                                2.0 * std::numbers::pi / k, sea.component_amplitudes[n] * k / std::numbers::pi, limit));
+        return;
+      }
+    }
+    return;
+  }
+  const double tp = sea.peak_period;
+  const double wavelength = g * tp * tp / (2.0 * std::numbers::pi);  // deep-water λp, DNV's definition of Sp
+  const double limit = tp <= 8.0 ? 1.0 / 15.0 : (tp >= 15.0 ? 1.0 / 25.0 : 1.0 / 15.0 + (tp - 8.0) / 7.0 * (1.0 / 25.0 - 1.0 / 15.0));
+  if (sea.significant_height / wavelength > limit) {
+    found.error({"wave.significant_height", "wave.peak_period"},
+                fmt::format("the sea is too steep: Hs/λp = 2π Hs/(g Tp²) = {:.3g} exceeds DNV-RP-C205's limit {:.4g} "
+                            "for Tp = {:g} s (λp = {:.4g} m; valid range (0, {:.4g}] m)",
+                            sea.significant_height / wavelength, limit, tp, wavelength, limit * wavelength));
+  }
+  if (!std::isinf(depth) && 1.86 * sea.significant_height >= 0.78 * depth) {
+    found.warning({"wave.significant_height", "environment.water_depth"},
+                  fmt::format("the largest waves of a 3-hour storm (about 1.86 Hs = {:.3g} m) reach the depth-limited "
+                              "breaking height 0.78 d = {:.3g} m: linear waves are indicative only",
+                              1.86 * sea.significant_height, 0.78 * depth));
+  }
+  if (sea.component_count > 0) {
+    double lo = sea.frequency_min, hi = sea.frequency_max;
+    if (lo == 0.0 && hi == 0.0) {
+      const hydro::FrequencyBand band = hydro::energy_band(sea_spectrum(sea), 1e-3);
+      lo = band.lower;
+      hi = band.upper;
+    }
+    const double repeat = 2.0 * std::numbers::pi * sea.component_count / (hi - lo);
+    if (repeat < scene.simulation.duration * (1.0 - 1e-12)) {
+      found.warning({"wave.components", "simulation.duration"},
+                    fmt::format("the synthesized sea repeats after 2π/Δω = {:.6g} s, shorter than the record "
+                                "simulation.duration = {:g} s: statistics over the record count the same waves again; "
+                                "use wave.components >= {:.0f} (or 0: Δω = 2π / duration)",
+                                repeat, scene.simulation.duration,
+                                std::ceil(scene.simulation.duration * (hi - lo) / (2.0 * std::numbers::pi))));
+    }
+  }
+}
+
 }  // namespace
 
 RestingHydrostatics resting_hydrostatics(const Scene& scene) {
@@ -252,6 +309,7 @@ std::vector<SceneFinding> physics_findings(const Scene& scene) {
                   "N/m) (valid range (0, 1e+10] N/m with a [hull])");
     }
     if (scene.wave) check_wave(scene, found);
+    if (scene.sea) check_sea(scene, found);
   }
   const Simulation& simulation = scene.simulation;
   if (simulation.output_interval > simulation.duration) {

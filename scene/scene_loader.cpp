@@ -21,6 +21,7 @@ namespace {
 struct Resolved {
   double number = 0.0;
   std::string text;
+  std::vector<double> list;  // number_list keys
 };
 
 int line_of(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
@@ -162,7 +163,7 @@ class SceneReader {
   }
 
   static Resolved default_of(const KeySpec& key) {
-    return {key.default_value, std::string(key.default_text)};
+    return {key.default_value, std::string(key.default_text), {}};
   }
 
   void resolve_absent(const KeySpec& key, int section_line) {
@@ -202,7 +203,7 @@ class SceneReader {
                  fmt::format("out of range (valid range {}){}", range,
                              did_you_mean(unit_slips(key, written.number, written.unit))));
         } else {
-          resolved_[name] = {value, {}};
+          resolved_[name] = {value, {}, {}};
         }
         return;
       }
@@ -214,7 +215,7 @@ class SceneReader {
         } else if (!key.range.contains(*value)) {
           report(line, name, shown, fmt::format("out of range (valid range {})", range));
         } else {
-          resolved_[name] = {*value, {}};
+          resolved_[name] = {*value, {}, {}};
         }
         return;
       }
@@ -230,18 +231,51 @@ class SceneReader {
         if (!known) {
           report(line, name, shown, fmt::format("unknown choice; choose one of {}", join_names(key.choices)));
         } else {
-          resolved_[name] = {0.0, s->get()};
+          resolved_[name] = {0.0, s->get(), {}};
         }
         return;
       }
+      case ValueKind::number_list:
+        resolve_list(key, node);
+        return;
       case ValueKind::text:
         if (const auto* s = node.as_string()) {
-          resolved_[name] = {0.0, s->get()};
+          resolved_[name] = {0.0, s->get(), {}};
         } else {
           report(line, name, shown, "expected a text string");
         }
         return;
     }
+  }
+
+  // An array of quantities: each an SI number or a "value unit" string, each in the key's range.
+  void resolve_list(const KeySpec& key, const toml::node& node) {
+    const std::string name(key.name);
+    const std::string range = format_range(key);
+    const auto* array = node.as_array();
+    if (array == nullptr || array->empty()) {
+      report(line_of(node), name, show_value(node), fmt::format("expected a non-empty array of numbers (valid range {})", range));
+      return;
+    }
+    std::vector<double> values;
+    for (std::size_t i = 0; i < array->size(); ++i) {
+      const toml::node& element = *array->get(i);
+      QuantityResult result = QuantityError{"expected a number"};
+      if (const auto* s = element.as_string()) {
+        result = parse_quantity(s->get(), key.dimension, false);
+      } else if (element.is_number()) {
+        result = check_number(element.value<double>().value_or(0.0), false);
+      }
+      const double* value = std::get_if<double>(&result);
+      if (value == nullptr || !accepts(key, *value)) {
+        const std::string why = value == nullptr ? std::get<QuantityError>(result).message : "out of range";
+        report(line_of(node), name, show_value(node),
+               fmt::format("element {} = {}: {} (valid range {})", i + 1, show_parsed_value(element), why, range));
+        return;
+      }
+      values.push_back(*value);
+    }
+    resolved_[name] = {0.0, {}, std::move(values)};
   }
 
   void check_one_of_groups() {
@@ -272,9 +306,11 @@ class SceneReader {
   double number(std::string_view name) const { return resolved_.at(std::string(key_spec(name).name)).number; }
   const std::string& text(std::string_view name) const { return resolved_.at(std::string(key_spec(name).name)).text; }
   bool has(std::string_view name) const { return resolved_.contains(std::string(key_spec(name).name)); }
+  const std::vector<double>& list(std::string_view name) const { return resolved_.at(std::string(key_spec(name).name)).list; }
 
   // Checks that involve several keys (only run when every key is valid on its own).
   void check_scene() {
+    if (sections_.contains("wave")) check_wave_keys();
     if (hub_) {
       for (const char* key : {"boom.angle", "boom.root_x", "boom.root_y"}) {
         if (present_.contains(key)) {
@@ -282,6 +318,64 @@ class SceneReader {
                  "belongs to a hull crane; a hub scene clamps the boom at hub.radius along hub.angle");
         }
       }
+    }
+  }
+
+  // The keys a [wave] spectrum needs, and no keys of another spectrum.
+  void check_wave_keys() {
+    const std::string& spectrum = text("wave.spectrum");
+    const int wave_line = line_of(*sections_.at("wave"));
+    const auto need = [&](const char* key) {
+      if (!present_.contains(key)) {
+        report(wave_line, key, "",
+               fmt::format("missing key: wave.spectrum = \"{}\" needs it ({}; valid range {})", spectrum,
+                           key_spec(key).help, format_range(key_spec(key))));
+      }
+    };
+    const auto refuse = [&](const char* key, std::string_view owner) {
+      if (const auto found = present_.find(key); found != present_.end()) {
+        report(line_of(*found->second), key, show_value(*found->second),
+               fmt::format("belongs to wave.spectrum = {}, not \"{}\"; remove it or change wave.spectrum", owner,
+                           spectrum));
+      }
+    };
+    const bool regular = spectrum == "regular", components = spectrum == "components";
+    const bool parametric = !regular && !components;
+    for (const char* key : {"wave.height", "wave.period"}) regular ? need(key) : refuse(key, "\"regular\"");
+    for (const char* key : {"wave.significant_height", "wave.peak_period"}) {
+      parametric ? need(key) : refuse(key, "\"jonswap\" or \"pierson-moskowitz\"");
+    }
+    if (spectrum != "jonswap") {
+      for (const char* key : {"wave.peak_enhancement", "wave.sigma_below", "wave.sigma_above"}) refuse(key, "\"jonswap\"");
+    }
+    for (const char* key : {"wave.component_frequencies", "wave.component_amplitudes", "wave.component_phases"}) {
+      components ? need(key) : refuse(key, "\"components\"");
+    }
+    if (!parametric) {
+      for (const char* key : {"wave.seed", "wave.components", "wave.frequency_min", "wave.frequency_max", "wave.amplitudes"}) {
+        refuse(key, "\"jonswap\" or \"pierson-moskowitz\"");
+      }
+    }
+    if (components && has("wave.component_frequencies") && has("wave.component_amplitudes") &&
+        has("wave.component_phases")) {
+      const std::size_t count = list("wave.component_frequencies").size();
+      for (const char* key : {"wave.component_amplitudes", "wave.component_phases"}) {
+        if (list(key).size() != count) {
+          report(line_of(*present_.at(key)), key, show_value(*present_.at(key)),
+                 fmt::format("{} values for {} component frequencies (valid: one per frequency)", list(key).size(), count));
+        }
+      }
+    }
+    if (parametric && has("wave.frequency_min") && has("wave.frequency_max") &&
+        !(number("wave.frequency_max") > number("wave.frequency_min"))) {
+      report(line_of(*present_.at("wave.frequency_max")), "wave.frequency_max", show_value(*present_.at("wave.frequency_max")),
+             fmt::format("not above wave.frequency_min = {:g} rad/s (valid range ({:g}, 100] rad/s)",
+                         number("wave.frequency_min"), number("wave.frequency_min")));
+    }
+    if (parametric && has("wave.frequency_min") != has("wave.frequency_max")) {
+      const char* given = has("wave.frequency_min") ? "wave.frequency_min" : "wave.frequency_max";
+      report(line_of(*present_.at(given)), given, show_value(*present_.at(given)),
+             "give both wave.frequency_min and wave.frequency_max (a band), or neither (the energy band)");
     }
   }
 
@@ -355,11 +449,7 @@ class SceneReader {
     }
     scene.environment = Environment{number("environment.water_density"), number("environment.gravity"),
                                     number("environment.water_depth")};
-    if (sections_.contains("wave")) {
-      scene.wave = Wave{number("wave.height"), number("wave.period"),
-                        text("wave.direction") == "head" ? WaveDirection::head : WaveDirection::following,
-                        number("wave.ramp_periods")};
-    }
+    if (sections_.contains("wave")) build_wave(scene);
     scene.radiation = Radiation{number("radiation.surge_added_mass"), number("radiation.heave_added_mass"),
                                 number("radiation.pitch_added_inertia"), number("radiation.surge_damping"),
                                 number("radiation.heave_damping"), number("radiation.pitch_damping")};
@@ -370,6 +460,39 @@ class SceneReader {
                                   number("simulation.cargo_lift"), number("simulation.deflection_limit"),
                                   number("simulation.constraint_drift_limit")};
     return scene;
+  }
+
+  void build_wave(Scene& scene) const {
+    const std::string& spectrum = text("wave.spectrum");
+    const bool head = text("wave.direction") == "head";
+    if (spectrum == "regular") {
+      scene.wave = Wave{number("wave.height"), number("wave.period"), head ? WaveDirection::head : WaveDirection::following,
+                        number("wave.ramp_periods")};
+      return;
+    }
+    IrregularSea sea;
+    sea.spectrum = spectrum == "jonswap"             ? SeaSpectrum::jonswap
+                   : spectrum == "pierson-moskowitz" ? SeaSpectrum::pierson_moskowitz
+                                                     : SeaSpectrum::components;
+    sea.heading = head ? hydro::WaveHeading::head : hydro::WaveHeading::following;
+    sea.ramp_periods = number("wave.ramp_periods");
+    if (sea.spectrum == SeaSpectrum::components) {
+      sea.component_frequencies = list("wave.component_frequencies");
+      sea.component_amplitudes = list("wave.component_amplitudes");
+      sea.component_phases = list("wave.component_phases");
+    } else {
+      sea.significant_height = number("wave.significant_height");
+      sea.peak_period = number("wave.peak_period");
+      sea.peak_enhancement = sea.spectrum == SeaSpectrum::jonswap ? number("wave.peak_enhancement") : 1.0;
+      sea.sigma_below = number("wave.sigma_below");
+      sea.sigma_above = number("wave.sigma_above");
+      sea.seed = static_cast<std::uint64_t>(number("wave.seed"));
+      sea.component_count = static_cast<int>(number("wave.components"));
+      if (has("wave.frequency_min")) sea.frequency_min = number("wave.frequency_min");
+      if (has("wave.frequency_max")) sea.frequency_max = number("wave.frequency_max");
+      sea.random_amplitudes = text("wave.amplitudes") == "rayleigh";
+    }
+    scene.sea = std::move(sea);
   }
 
   static fem::Boundary boundary_of(const std::string& keyword) {

@@ -28,7 +28,7 @@ std::string presence_text(const KeySpec& key) {
 }
 
 std::string unit_text(const KeySpec& key) {
-  if (key.kind != ValueKind::number) return "–";
+  if (key.kind != ValueKind::number && key.kind != ValueKind::number_list) return "–";
   const std::string_view si = si_unit(key.dimension);
   return si.empty() ? "– (ratio)" : fmt::format("{}", si);
 }

@@ -54,6 +54,9 @@ constexpr KeySpec text(std::string_view name, std::string_view help) {
 constexpr KeySpec integer(std::string_view name, Range range, double value, std::string_view help) {
   return {name, ValueKind::integer, Dimension::ratio, range, Presence::defaulted, value, {}, {}, help};
 }
+constexpr KeySpec number_list(std::string_view name, Dimension dimension, Range range, std::string_view help) {
+  return {name, ValueKind::number_list, dimension, range, Presence::optional, 0.0, {}, {}, help};
+}
 constexpr KeySpec with_infinity(KeySpec key) {
   key.allow_infinity = true;
   return key;
@@ -78,7 +81,11 @@ constexpr std::array kSections{
                 "Wire rope from the boom tip A′ to the hook C: axial spring–damper, tension only."},
     SectionSpec{"environment", SectionRole::optional, "Sea water and gravity."},
     SectionSpec{"wave", SectionRole::optional,
-                "Regular Airy wave, ramped in over the first periods. Leave the section out for calm water."},
+                "Waves, ramped in over the first periods: a regular Airy wave (`spectrum = \"regular\"`, height and "
+                "period) or a long-crested irregular sea: a JONSWAP or Pierson–Moskowitz spectrum (significant height, "
+                "peak period) synthesized with random phases from `seed`, or user components. The components lie on "
+                "ω_n = n Δω with Δω = 2π / simulation.duration unless `components` asks for another count, so the sea "
+                "does not repeat within the record (a warning when it does). Leave the section out for calm water."},
     SectionSpec{"radiation", SectionRole::optional,
                 "Linear radiation with constant coefficients in the hull frame at G1: added mass as multiples of "
                 "the displaced mass (surge, heave) or of the hull's pitch inertia I55, damping as fractions of "
@@ -166,12 +173,47 @@ constexpr std::array kKeys{
     with_infinity(defaulted("environment.water_depth", length, between(0.5, 11000.0), kInf,
                             "Water depth, more than the hull's draft; `inf` (or \"inf\") is deep water.")),
     // [wave]
-    required("wave.height", length, between(0.0, 30.0),
-             "Wave height H, trough to crest; below the breaking limits H/λ < 1/7 and H < 0.78 × water depth."),
-    required("wave.period", time, between(1.0, 40.0), "Wave period T."),
+    choice("wave.spectrum", "regular|jonswap|pierson-moskowitz|components", "regular",
+           "regular: one Airy wave (height, period); jonswap, pierson-moskowitz: an irregular sea from the spectrum "
+           "(significant_height, peak_period; JONSWAP also peak_enhancement, sigma_below, sigma_above) with random "
+           "phases; components: the user's component_frequencies, component_amplitudes, component_phases."),
+    optional("wave.height", length, between(0.0, 30.0),
+             "Regular wave: height H, trough to crest (required with spectrum = regular); below the breaking limits "
+             "H/λ < 1/7 and H < 0.78 × water depth."),
+    optional("wave.period", time, between(1.0, 40.0), "Regular wave: period T (required with spectrum = regular)."),
     choice("wave.direction", "following|head", "following",
-           "following: the wave travels +x (the boom overhangs the bow at +x); head: it travels −x."),
-    defaulted("wave.ramp_periods", ratio, between(0.0, 100.0), 2.0, "The wave is ramped in over this many periods."),
+           "following: the waves travel +x (the boom overhangs the bow at +x); head: they travel −x."),
+    defaulted("wave.ramp_periods", ratio, between(0.0, 100.0), 2.0,
+              "The waves are ramped in over this many periods: T (regular), Tp (spectra) or the longest component "
+              "period (components)."),
+    optional("wave.significant_height", length, above(0.0, 30.0),
+             "Irregular sea: significant wave height Hs = 4 √m0 (required with jonswap and pierson-moskowitz); the "
+             "mean steepness Hs/λp must stay below DNV-RP-C205's limit (1/15 for Tp ≤ 8 s, 1/25 for Tp ≥ 15 s)."),
+    optional("wave.peak_period", time, between(1.0, 40.0),
+             "Irregular sea: spectral peak period Tp = 2π/ωp (required with jonswap and pierson-moskowitz)."),
+    defaulted("wave.peak_enhancement", ratio, between(1.0, 20.0), 3.3,
+              "JONSWAP peak-enhancement factor γ (1: Pierson–Moskowitz; 3.3: the mean JONSWAP sea)."),
+    defaulted("wave.sigma_below", ratio, above(0.0, 0.5), 0.07, "JONSWAP spectral width σa for ω ≤ ωp."),
+    defaulted("wave.sigma_above", ratio, above(0.0, 0.5), 0.09, "JONSWAP spectral width σb for ω > ωp."),
+    integer("wave.seed", between(0.0, 4294967295.0), 1.0,
+            "Random seed of the phases (and amplitudes): the same seed gives the same sea on any machine, thread "
+            "or process count; another seed another realisation."),
+    integer("wave.components", between(0.0, 2e6), 0.0,
+            "Number of spectral components over the band (0: Δω = 2π / simulation.duration, the coarsest step "
+            "that does not repeat within the record; a count that makes Δω coarser is warned about)."),
+    optional("wave.frequency_min", angular_velocity, between(0.0, 100.0),
+             "Lowest component frequency ω [rad/s] (default: the band holding all but 0.1 % of the variance)."),
+    optional("wave.frequency_max", angular_velocity, above(0.0, 100.0),
+             "Highest component frequency ω [rad/s] (default: the band holding all but 0.1 % of the variance)."),
+    choice("wave.amplitudes", "deterministic|rayleigh", "deterministic",
+           "deterministic: a_n = √(2 S(ω_n) Δω); rayleigh: a_n = √(2 S(ω_n) Δω E_n) with E_n unit exponential "
+           "(a Gaussian sea also in its energy)."),
+    number_list("wave.component_frequencies", angular_velocity, above(0.0, 100.0),
+                "components: angular frequencies ω_n (an array, numbers in rad/s)."),
+    number_list("wave.component_amplitudes", length, between(0.0, 15.0),
+                "components: amplitudes a_n (an array, numbers in m), each below the breaking limit a k < π/7."),
+    number_list("wave.component_phases", angle, between(-100.0, 100.0),
+                "components: phases φ_n of η(0, t) = Σ a_n cos(ω_n t + φ_n) (an array, numbers in rad)."),
     // [radiation]
     defaulted("radiation.surge_added_mass", ratio, between(0.0, 10.0), 0.0, "A11 as a multiple of the displaced mass."),
     defaulted("radiation.heave_added_mass", ratio, between(0.0, 10.0), 0.0, "A33 as a multiple of the displaced mass."),
@@ -260,6 +302,11 @@ const KeySpec& key_spec(std::string_view dotted_name) {
 std::string format_range(const KeySpec& key) {
   if (key.kind == ValueKind::choice) return std::string(key.choices);
   if (key.kind == ValueKind::text) return "any text";
+  if (key.kind == ValueKind::number_list) {
+    const KeySpec element{key.name, ValueKind::number, key.dimension, key.range, key.presence, 0.0, {}, {}, key.help,
+                          key.display_unit};
+    return format_range(element) + " each";
+  }
   const double factor = display_factor(key);
   std::string range = fmt::format("{}{}, {}{}", key.range.lower.closed ? '[' : '(',
                                   format_bound(key.range.lower.value, factor),

@@ -30,6 +30,7 @@ enum class ValueKind {
   integer,  // a whole number
   choice,   // one keyword of `choices`
   text,     // free text
+  number_list,  // an array of physical quantities (SI numbers or "value unit" strings), each in range
 };
 
 // Whether a key must appear when its section is present.

@@ -11,6 +11,7 @@
 
 #include "coupling/error_metrics.hpp"
 #include "fem/boundary.hpp"
+#include "scene/irregular_sea.hpp"
 #include "study/error_measure.hpp"
 #include "study/modes.hpp"
 #include "study/output_series.hpp"
@@ -74,7 +75,7 @@ std::string output_columns() {
 
 int history_decimation(const scene::Scene& scene, double output_interval, double first_boom_hz) {
   double shortest = INFINITY;
-  if (scene.wave && scene.wave->height > 0.0) shortest = std::min(shortest, scene.wave->period);
+  if (scene::has_waves(scene)) shortest = std::min(shortest, scene::shortest_wave_period(scene));
   if (scene.hub && scene.hub->motion != scene::HubMotion::fixed && scene.hub->spin_rate != 0.0) {
     shortest = std::min(shortest, 2.0 * std::numbers::pi / std::abs(scene.hub->spin_rate));
   }

@@ -3,9 +3,11 @@
 
 #include <cmath>
 
+#include "scene/irregular_sea.hpp"
+
 namespace ffrf::study {
 
-double ramp_end(const scene::Scene& scene) { return scene.wave ? scene.wave->ramp_periods * scene.wave->period : 0.0; }
+double ramp_end(const scene::Scene& scene) { return scene::wave_ramp_duration(scene); }
 
 double error_window(const scene::Scene& scene, double duration) {
   const double ramp = ramp_end(scene);

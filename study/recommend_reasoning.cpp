@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 
+#include "scene/irregular_sea.hpp"
 #include "study/error_measure.hpp"
 #include "study/modes.hpp"
 #include "fem/analytic_beam.hpp"
@@ -30,12 +31,16 @@ scene::Stiffening combine(scene::Stiffening a, scene::Stiffening b) {
 }
 
 void excitation(const scene::Scene& scene, RecommendReasoning& r) {
-  if (scene.wave && scene.wave->height > 0.0) r.wave_frequency = 2.0 * std::numbers::pi / scene.wave->period;
+  if (scene::has_waves(scene)) r.wave_frequency = 2.0 * std::numbers::pi / scene::shortest_wave_period(scene);
   if (scene.hub && scene.hub->motion != scene::HubMotion::fixed) r.spin_rate = std::abs(scene.hub->spin_rate);
   r.excitation_top = std::max(r.wave_frequency, r.spin_rate);
   std::string band;
-  if (r.wave_frequency > 0.0) {
+  if (r.wave_frequency > 0.0 && scene.wave) {
     band = fmt::format("the wave (T = {:g} s) drives the crane at ω_w = {:.4g} rad/s", scene.wave->period, r.wave_frequency);
+  } else if (r.wave_frequency > 0.0) {
+    band = fmt::format("the irregular sea (characteristic period {:g} s) drives the crane up to its highest component "
+                       "ω_w = {:.4g} rad/s",
+                       scene::characteristic_wave_period(scene), r.wave_frequency);
   }
   if (r.spin_rate > 0.0) {
     band += fmt::format("{}the hub spins at up to Ω = {:.4g} rad/s", band.empty() ? "" : "; ", r.spin_rate);
@@ -86,12 +91,12 @@ void loads(const scene::Scene& scene, const std::vector<coupling::OutputChannel>
   if (contains(outputs, coupling::OutputChannel::tip_deflection)) {
     r.rigid_error = 1.0;
     r.statements.push_back("Rigid boom: the tip deflection is a chosen output and a rigid boom has none (error 100 %).");
-  } else if (scene.wave && scene.wave->height > 0.0) {
-    const double rms_heave = scene.wave->height / (2.0 * std::numbers::sqrt2);
+  } else if (scene::has_waves(scene)) {
+    const double rms_heave = std::sqrt(scene::sea_components(scene).variance());
     r.rigid_error = r.static_tip_deflection * std::cos(phi) / rms_heave;
     r.statements.push_back(fmt::format(
         "Rigid boom: it misses the static tip deflection δ = F⊥L³/(3EI) + q⊥L⁴/(8EI) = {:.3g} m under the cargo and its own "
-        "weight; its vertical part δ cos φ = {:.3g} m against the cargo's RMS heave H/(2√2) = {:.3g} m estimates its error "
+        "weight; its vertical part δ cos φ = {:.3g} m against the cargo's RMS heave (the waves' RMS elevation) {:.3g} m estimates its error "
         "at {:.2g} (τ = {:g}).",
         r.static_tip_deflection, r.static_tip_deflection * std::cos(phi), rms_heave, r.rigid_error, r.tolerance));
   } else {

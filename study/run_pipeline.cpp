@@ -9,6 +9,7 @@
 
 #include "coupling/planar.hpp"
 #include "fem/analytic_beam.hpp"
+#include "scene/irregular_sea.hpp"
 #include "scene/scene_checks.hpp"
 #include "study/work_limits.hpp"
 
@@ -56,7 +57,7 @@ coupling::MonitorLimits monitor_limits(const scene::Scene& scene) {
       limits.water.cargo_half_length = 0.5 * scene.cargo->length;
       limits.water.cargo_half_height = 0.5 * scene.cargo->height;
     }
-    limits.water.wave_amplitude = scene.wave ? 0.5 * scene.wave->height : 0.0;
+    limits.water.wave_amplitude = scene::wave_amplitude_bound(scene);
   }
   return limits;
 }
