@@ -32,6 +32,7 @@ struct OperabilityOptions {
   int seeds = 3;
   double duration = 10800.0;
   double gamma = 3.3;
+  int components = 0;
   int threads = 0;
   int verify = 2;
   int converged_elements = 32;
@@ -86,6 +87,7 @@ int run_operability_command(const OperabilityOptions& options) {
   request.seeds = options.seeds;
   request.duration = options.duration;
   request.peak_enhancement = options.gamma;
+  request.components = options.components;
   request.verify_cells = options.verify;
   request.converged_elements = options.converged_elements;
   request.criteria = options.criteria;
@@ -110,9 +112,9 @@ int run_operability_command(const OperabilityOptions& options) {
   farm.output_directory = options.out;
   farm.study = "ffrf " + options.command_line;
   // Everything besides the task keys that a record depends on.
-  farm.settings = fmt::format("{}\n{}\nseeds={} duration={:.17g} gamma={:.17g} tolerance={:.17g} converged={} verify={}\n",
+  farm.settings = fmt::format("{}\n{}\nseeds={} duration={:.17g} gamma={:.17g} components={} tolerance={:.17g} converged={} verify={}\n",
                               version_text(), read_text(options.scene), request.seeds, request.duration,
-                              request.peak_enhancement, request.tolerance, request.converged_elements, request.verify_cells);
+                              request.peak_enhancement, request.components, request.tolerance, request.converged_elements, request.verify_cells);
   farm.threads = options.threads;
   farm.retry_failed = options.retry_failed;
   farm.progress_label = "operability records";
@@ -125,7 +127,9 @@ int run_operability_command(const OperabilityOptions& options) {
   if (!result.farm.root) return exit_ok;
   report::OperabilityContext context{options.scene, options.command_line, request.duration, request.seeds,
                                      request.peak_enhancement, request.tolerance,
-                                     "regular-wave stand-in (H = Hs, T = Tp) until the crane runs in irregular seas"};
+                                     fmt::format("irregular, JONSWAP γ = {:g}, long-crested, {}", request.peak_enhancement,
+                                                 request.components > 0 ? fmt::format("{} components", request.components)
+                                                                        : std::string("components every 2π/duration (never repeats)"))};
   report::write_operability_outputs(options.out, result, context);
   fmt::print("{}\nwrote {} (report.md, operability.csv, operability.png, summary.json; journal {})\n",
              report::operability_text(result), options.out, result.farm.journal.string());
@@ -148,6 +152,9 @@ Command add_operability_command(CLI::App& parent) {
       ->check(finite_number(0.0, 86400.0, "s", true));
   sub->add_option("--gamma", options->gamma, "JONSWAP peak enhancement of every cell")->capture_default_str()
       ->check(finite_number(1.0, 20.0));
+  sub->add_option("--components", options->components,
+                  "Wave components per record (0: dw = 2 pi / duration, a sea that never repeats; fewer are cheaper but repeat)")
+      ->capture_default_str()->check(whole_number(0, 100000));
   sub->add_option("--out", options->out, "Output directory: journal.tsv, operability.csv, report.md, operability.png, summary.json");
   sub->add_option("--threads", options->threads, "Compute threads of the process that schedules (0: one per core alone, 1 beside MPI ranks)")
       ->capture_default_str()->check(whole_number(0, 1024));

@@ -9,6 +9,7 @@
 
 #include "distributed/stable_hash.hpp"
 #include "hydro/wave_spectrum.hpp"
+#include "scene/irregular_sea.hpp"
 #include "study/error_measure.hpp"
 #include "study/recommend.hpp"
 #include "study/recommend_reasoning.hpp"
@@ -41,6 +42,9 @@ void validate(const OperabilityRequest& r) {
   }
   for (double tp : r.peak_periods) {
     if (!(tp >= 2.0 && tp <= 30.0)) bad(fmt::format("operability: Tp = {} s out of range (valid range [2, 30] s)", tp));
+  }
+  if (r.components < 0 || r.components > 100000) {
+    bad(fmt::format("operability: {} wave components (valid range [0, 100000], 0: a sea that never repeats)", r.components));
   }
   if (r.seeds < 1 || r.seeds > 1000) bad(fmt::format("operability: {} seeds per cell (valid range [1, 1000])", r.seeds));
   if (!(r.duration > 0.0 && r.duration <= 86400.0)) {
@@ -84,20 +88,28 @@ OperabilityCriteria resolve_criteria(const scene::Scene& scene, const Operabilit
 }
 
 std::uint64_t record_seed(const SeaCell& cell, int index) {
-  return distributed::StableHash().add_field(cell.key()).add_field(fmt::format("seed={}", index)).value();
+  // 32 bits: the range of wave.seed.
+  return distributed::StableHash().add_field(cell.key()).add_field(fmt::format("seed={}", index)).value() & 0xffffffffULL;
 }
 
 scene::Scene record_scene(const scene::Scene& scene, const SeaCell& cell, std::uint64_t seed, const OperabilityRequest& request) {
-  // Regular-wave stand-in until the crane runs in irregular seas: H = Hs, T = Tp (the seed is unused).
-  (void)seed;
-  (void)request;
-  scene::Scene s = scene;
-  const double ramp = scene.wave ? scene.wave->ramp_periods : 2.0;
-  s.wave = scene::Wave{cell.significant_height, cell.peak_period,
-                       cell.heading == hydro::WaveHeading::head ? scene::WaveDirection::head : scene::WaveDirection::following,
-                       ramp};
-  s.simulation.duration = request.duration;
-  return s;
+  scene::IrregularSeaState sea;
+  sea.spectrum = "jonswap";
+  sea.significant_height = cell.significant_height;
+  sea.peak_period = cell.peak_period;
+  sea.peak_enhancement = request.peak_enhancement;
+  sea.heading = cell.heading;
+  sea.seed = seed;
+  sea.duration = request.duration;
+  if (request.components == 0) return scene::in_irregular_sea(scene, sea);
+  // in_irregular_sea keeps the base's component count (and warns when the sea repeats within the record).
+  scene::Scene base = scene;
+  if (!base.sea) {
+    base.sea = scene::IrregularSea{};
+    base.wave.reset();
+  }
+  base.sea->component_count = request.components;
+  return scene::in_irregular_sea(base, sea);
 }
 
 CellModel recommended_model(const scene::Scene& scene, const SeaCell& cell, const OperabilityRequest& request,
@@ -106,8 +118,12 @@ CellModel recommended_model(const scene::Scene& scene, const SeaCell& cell, cons
   // cell excites with more than band_tail/2 of its variance above it.
   const hydro::WaveSpectrum spectrum = hydro::jonswap(cell.significant_height, cell.peak_period, request.peak_enhancement);
   const double top = hydro::energy_band(spectrum, band_tail).upper;
-  scene::Scene reasoning_scene = record_scene(scene, cell, 0, request);
-  reasoning_scene.wave->period = 2.0 * std::numbers::pi / top;
+  scene::Scene reasoning_scene = scene;
+  reasoning_scene.sea.reset();
+  reasoning_scene.wave = scene::Wave{cell.significant_height, 2.0 * std::numbers::pi / top,
+                                     cell.heading == hydro::WaveHeading::head ? scene::WaveDirection::head
+                                                                              : scene::WaveDirection::following,
+                                     2.0};
   const RecommendReasoning reasoning = reason_about(reasoning_scene, request.tolerance, judged_outputs(reasoning_scene));
   const std::vector<Candidate> ladder = candidate_ladder(reasoning_scene, reasoning, modes);
   CellModel model;
@@ -155,7 +171,7 @@ SeedExtremes run_record(const scene::Scene& scene, const SeaCell& cell, int seed
     axial[i] = o.root_axial_force;
   }
   const coupling::CraneOutputs& at_rest = run.static_outputs();
-  SeedExtremes extremes = seed_extremes(run.result.time, tension, heave, moment, axial, ramp_end(record),
+  SeedExtremes extremes = seed_extremes(run.result.time, tension, heave, moment, axial, scene::wave_ramp_duration(record),
                                         at_rest.wire_tension, at_rest.joint_reaction.z());
   extremes.work = run.work();
   extremes.rhs_evaluations = static_cast<double>(run.result.stats.function_evaluations);

@@ -37,6 +37,7 @@ struct OperabilityRequest {
   int seeds = 3;                 // records per cell
   double duration = 10800.0;     // of each record [s]
   double peak_enhancement = 3.3; // JONSWAP γ of every cell
+  int components = 0;            // wave components per record (0: Δω = 2π / duration, a sea that never repeats)
   OperabilityCriteria criteria;  // limits (0 fields: scene defaults)
   double tolerance = 0.01;       // of the model choice (recommend's τ)
   int verify_cells = 2;          // cells run again with the converged model (0: none)
@@ -63,7 +64,7 @@ CellModel recommended_model(const scene::Scene& scene, const SeaCell& cell, cons
                             modal::ModeCache* modes);
 CellModel converged_model(const scene::Scene& scene, const OperabilityRequest& request, const CellModel& recommended);
 
-// The scene of one record: the cell's sea with the seed's random phases.
+// The scene of one record: the cell's JONSWAP sea (scene::in_irregular_sea) with the seed's random phases.
 scene::Scene record_scene(const scene::Scene& scene, const SeaCell& cell, std::uint64_t seed,
                           const OperabilityRequest& request);
 // The seed of record `index` of a cell: from the cell's key and the index only, the same for both models.
