@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "coupling/stop_request.hpp"
+#include "distributed/atomic_file.hpp"
 #include "distributed/errors.hpp"
 #include "study/operability.hpp"
 
@@ -89,6 +90,43 @@ OperabilityStudy run_operability(distributed::Session& session, const scene::Sce
     }
   };
   if (farm_options.progress_label == "tasks") farm_options.progress_label = "operability records";
+  // Cells as they complete (rank 0): the count on the progress line, and each finished cell's verdict
+  // appended to cells_finished.csv (in order of completion; the table at the end is in grid order).
+  std::vector<std::size_t> records_left(cells.size(), 0);
+  for (const RecordTask& r : records) ++records_left[r.cell];
+  std::vector<std::vector<distributed::TaskOutcome>> arrived(cells.size());
+  std::size_t cells_complete = 0;
+  std::string finished = "hs_m,tp_s,heading,status,verdict,governing,utilisation\n";
+  const std::filesystem::path finished_file = farm_options.output_directory / "cells_finished.csv";
+  farm_options.on_outcome = [&](const distributed::TaskOutcome& outcome) -> std::string {
+    const RecordTask& r = records[outcome.index];
+    if (!r.converged) arrived[r.cell].push_back(outcome);
+    if (--records_left[r.cell] == 0) {
+      ++cells_complete;
+      std::vector<const distributed::TaskOutcome*> mine;
+      for (const distributed::TaskOutcome& o : arrived[r.cell]) mine.push_back(&o);
+      bool ok = false;
+      std::string failure;
+      CellStatistics statistics;
+      CellVerdict verdict;
+      double wall = 0.0;
+      try {
+        judge_records(mine, study.criteria, recommended[r.cell].euler_load, ok, failure, statistics, verdict, wall);
+      } catch (const std::exception&) {  // a damaged record: the final table names it
+        ok = false;
+      }
+      const SeaCell& cell = cells[r.cell];
+      finished += fmt::format("{:g},{:g},{},{},{},{},{}\n", cell.significant_height, cell.peak_period,
+                              cell.heading == hydro::WaveHeading::head ? "head" : "following", ok ? "ok" : "failed",
+                              ok ? (verdict.pass ? "pass" : "FAIL") : "", ok ? std::string(to_string(verdict.governing)) : "",
+                              ok ? fmt::format("{:.4f}", verdict[verdict.governing].utilisation) : "");
+      try {
+        distributed::write_file_atomically(finished_file, finished);
+      } catch (const std::exception&) {  // a progress file: the journal is what counts
+      }
+    }
+    return fmt::format("{}/{} cells complete", cells_complete, cells.size());
+  };
   study.farm = distributed::run_farm(session, tasks, work, farm_options);
   if (!study.farm.root) return study;
 
