@@ -108,11 +108,11 @@ void draw_chart(const StagedDirectory& out, const study::OperabilityStudy& s) {
     for (std::size_t i = 0; i < series.size(); ++i) panel += (i ? ", \\\n     " : "") + series[i];
     panels.push_back(panel + "\n");
   }
-  const int width = 760 * static_cast<int>(headings.size());
+  const int width = 960 * static_cast<int>(headings.size());
   std::string script = fmt::format(
       "# Operability map: Hs over Tp, each cell coloured by its governing criterion (filled circle: pass,\n"
       "# square: fail), labelled with the governing utilisation (1 = at the limit). Data: operability.dat.\n"
-      "set terminal {} size {},600 font ',11'\nset output 'operability.png'\nset grid\nset key outside bottom center horizontal\n"
+      "set terminal {} size {},600 font ',11' noenhanced\nset output 'operability.png'\nset grid\nset key outside right top vertical\n"
       "set xlabel 'peak period Tp [s]'\nset ylabel 'significant wave height Hs [m]'\nset offsets graph 0.08, graph 0.08, graph 0.12, graph 0.08\n"
       "set multiplot layout 1,{}\n",
       png_terminal(), width, headings.size());
