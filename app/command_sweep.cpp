@@ -1,6 +1,7 @@
-// `ffrf sweep SCENE`: the accuracy–speed study (study::sweep). The converged reference first, then
-// every configuration of the grid (--quick by default, --medium, --full), or the slice --shard
-// i/n, over --jobs threads; one CSV row per run, the accuracy–speed and mode-count charts and
+// `ffrf sweep SCENE`: the accuracy–speed study on the distributed engine (study::sweep_on_engine). The
+// converged reference first, then every configuration of the grid (--quick by default, --medium,
+// --full), or the slice --shard i/n, as farm tasks over --jobs threads and, under mpirun or srun, the
+// MPI ranks; finished rows journaled in --out (journal.tsv) and resumed on a rerun; one CSV row per run, the accuracy–speed and mode-count charts and
 // report.md naming the Pareto-optimal configurations and the verdict against --tolerance (default
 // 1 %). `--merge A.csv B.csv ... --out DIR` joins shard CSVs into the same outputs. Exit 2 for bad
 // input, 3 when the reference fails; a failing configuration is a row, not an error.
@@ -15,11 +16,16 @@
 #include <string>
 #include <thread>
 
+#include <unistd.h>
+
 #include "app/cli_options.hpp"
 #include "app/radiation_option.hpp"
 #include "study/radiation_compare.hpp"
 #include "app/commands.hpp"
 #include "app/option_checks.hpp"
+#include "app/version.hpp"
+#include "distributed/errors.hpp"
+#include "distributed/session.hpp"
 #include "report/output_directory.hpp"
 #include "report/gnuplot.hpp"
 #include "report/reference_report.hpp"
@@ -132,31 +138,51 @@ int run_sweep(const SweepOptions& options) {
     report::check_output_directory(options.out, "report.md");  // or when DIR cannot be written
   }
 
-  study::SweepStudy result;
+  // On the distributed engine: the journal goes to --out (or a temporary directory removed after).
+  distributed::Session session;
+  const bool temporary = options.out.empty();
+  const std::filesystem::path journal_dir =
+      temporary ? std::filesystem::temp_directory_path() / fmt::format("ffrf-sweep-journal-{}", ::getpid())
+                : std::filesystem::path(options.out);
+  distributed::FarmOptions farm;
+  farm.output_directory = journal_dir;
+  farm.study = fmt::format("ffrf sweep {} --{}", options.scene, study::to_string(request.grid));
+  farm.settings = fmt::format("{}\n{}\ngrid={} duration={:.17g} reference={} {:.17g} {:.17g} {} stiffening={} tolerance={:.17g} "
+                              "max_explicit_steps={}\n",
+                              version_text(), read_file(options.scene), study::to_string(request.grid), request.duration,
+                              request.reference.start_elements, request.reference.start_relative_tolerance,
+                              request.reference.bound, request.reference.max_levels, options.stiffening, request.tolerance,
+                              request.max_explicit_steps);
+  farm.threads = options.jobs;
+  farm.progress_label = "sweep configurations";
+  study::SweepOnEngine result;
   try {
-    progress("sweep", "converged reference (nodal, refined level by level) ...", true);
-    result = study::sweep(*scene, request, {}, [&](const study::SweepResult& r, std::size_t done, std::size_t total) {
-      progress("sweep", fmt::format("[{}/{}] {} {}: {}", done, total, r.config.choice.label(),
-                                    study::integrator_label(r.config), study::to_string(r.status)),
-               done == total);
-    });
+    if (session.is_root()) progress("sweep", "converged reference (nodal, refined level by level) ...", true);
+    result = study::sweep_on_engine(session, *scene, request, farm,
+                                    [](const study::SweepResult& r) { return report::sweep_csv_line(r); });
   } catch (const scene::SceneError& error) {
     return scene_error("sweep", options.scene, error, "the reference crane");
   } catch (const coupling::SolverFailure& failure) {
     return solver_failure("sweep", "reference", failure, options.out);
+  } catch (const distributed::JournalError& error) {
+    return bad_input("sweep", error.what());
   }
+  if (temporary && session.is_root()) std::filesystem::remove_all(journal_dir);
+  if (!result.farm.root) return exit_ok;
   std::string csv = report::sweep_csv_header();
-  for (const study::SweepResult& r : result.results) csv += report::sweep_csv_line(r);
+  for (const std::string& line : result.records) csv += line;
   std::vector<report::SweepRow> rows = report::read_sweep_csv(csv, "sweep.csv");
-  const std::string context = report::sweep_context(options.scene, *scene, request.grid, request.duration, result);
+  const std::string context = report::sweep_context(options.scene, *scene, request.grid, request.duration, result.study);
   if (!options.out.empty()) report::write_sweep_outputs(options.out, rows, context);
   std::size_t failed = 0;
   for (const report::SweepRow& row : rows) failed += row.ok() ? 0 : 1;
-  fmt::print("{} configurations{} of the {} grid, {} s simulated, {} threads: {} ok, {} failed or skipped\n"
+  fmt::print("{} configurations{} of the {} grid, {} s simulated, {}, {} threads on rank 0 ({} computed, {} resumed): {} ok, "
+             "{} failed or skipped\n"
              "reference: {}\n{}\nPareto-optimal (worst normalized RMS error vs wall time):\n{}",
              rows.size(), options.shard.empty() ? "" : " (shard " + options.shard + ")", study::to_string(request.grid),
-             request.duration, request.jobs, rows.size() - failed, failed, report::reference_label(result.reference),
-             report::reference_levels_text(result.reference), report::pareto_text(rows, report::context_facts(context)));
+             request.duration, result.farm.engine, result.farm.root_threads, result.farm.computed, result.farm.resumed,
+             rows.size() - failed, failed, report::reference_label(result.study.reference),
+             report::reference_levels_text(result.study.reference), report::pareto_text(rows, report::context_facts(context)));
   // A scene with BEM coefficients: a section comparing the radiation models on the scene's default
   // boom model against the Cummins convolution, at the sweep's duration and tolerance.
   if (scene->bem && options.shard.empty()) {

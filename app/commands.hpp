@@ -31,5 +31,6 @@ Command add_recommend_command(CLI::App& parent);        // command_recommend.cpp
 Command add_scene_reference_command(CLI::App& parent);  // command_scene_reference.cpp
 Command add_baseline_command(CLI::App& parent);         // command_baseline.cpp
 Command add_rao_command(CLI::App& parent);              // command_rao.cpp
+Command add_operability_command(CLI::App& parent);      // command_operability.cpp
 
 }  // namespace ffrf::app

@@ -74,7 +74,8 @@ int main(int argc, char** argv) {
                                 add_recommend_command(app),
                                 add_scene_reference_command(app),
                                 add_baseline_command(app),
-                                add_rao_command(app)};
+                                add_rao_command(app),
+                                add_operability_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& success) {

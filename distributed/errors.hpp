@@ -20,4 +20,13 @@ class EngineError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Thrown by a work function that gives a task up because the program was asked to stop (SIGINT,
+// SIGTERM: a Ctrl-C, a batch system's time limit): the task is neither a result nor a failure. The
+// farm journals nothing for it, hands out nothing more, awaits the tasks in progress (journaling
+// those that finish) and rethrows it, so that a rerun computes the task again.
+class TaskAbandoned : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 }  // namespace ffrf::distributed

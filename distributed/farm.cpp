@@ -90,8 +90,19 @@ FarmResult run_farm(Session& session, const std::vector<Task>& tasks, const Work
   for (std::size_t position : positions) resumed_failures += known[position] && !known[position]->ok ? 1 : 0;
   ProgressMeter progress(options.progress_label, ProgressCounts{positions.size(), result.resumed, 0, resumed_failures},
                          options.progress_on_terminal);
+  if (options.on_outcome) {
+    for (std::size_t position : positions) {
+      if (known[position]) progress.set_detail(options.on_outcome(*known[position]));
+    }
+  }
   std::exception_ptr failure;  // a journal that cannot be written: stop handing out, then report
+  std::optional<std::string> abandoned;  // a task given up on a stop request: hand out nothing more
   const auto record = [&](TaskOutcome outcome) {
+    if (outcome.abandoned) {
+      if (!abandoned) abandoned = outcome.error;
+      pending.clear();
+      return;
+    }
     if (!failure) {
       try {
         journal->append(outcome);
@@ -100,6 +111,7 @@ FarmResult run_farm(Session& session, const std::vector<Task>& tasks, const Work
         pending.clear();
       }
     }
+    if (options.on_outcome) progress.set_detail(options.on_outcome(outcome));
     progress.finished(outcome.ok);
     ++result.computed;
     known[outcome.index] = std::move(outcome);
@@ -138,6 +150,7 @@ FarmResult run_farm(Session& session, const std::vector<Task>& tasks, const Work
   if (ranks) ranks->release();
   progress.close();
   if (failure) std::rethrow_exception(failure);
+  if (abandoned) throw TaskAbandoned(*abandoned);
 
   for (std::size_t position : positions) {
     TaskOutcome& outcome = *known[position];

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +29,11 @@ struct FarmOptions {
   int threads = 0;       // compute threads on rank 0: 0 = one per core when alone, 1 beside other ranks
   bool retry_failed = false;  // recompute the tasks the journal holds as failed
   std::string progress_label = "tasks";
+  // Called on rank 0's scheduling thread with every outcome of the run's tasks: first those resumed
+  // from the journal, then each computed one once it is journaled (never an abandoned one). What it
+  // returns is shown after the progress line's counts (e.g. "5/12 cells complete"); it may write
+  // files of its own (partial results a user can watch) but must not throw.
+  std::function<std::string(const TaskOutcome&)> on_outcome;
   std::optional<bool> progress_on_terminal;  // show progress (default: when stderr is a terminal)
 };
 

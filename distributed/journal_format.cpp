@@ -116,6 +116,7 @@ std::optional<JournalContents> parse_journal(std::string_view text, const std::s
     const std::string_view line = text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
     const std::optional<std::string_view> body = end == std::string_view::npos ? std::nullopt : verified_body(line);
     std::optional<TaskOutcome> outcome = body ? decode_outcome(*body) : std::nullopt;
+    if (outcome && outcome->abandoned) outcome.reset();  // never journaled: the line was altered
     if (!outcome) {
       if (last) {
         contents.torn_tail = true;

@@ -1,6 +1,8 @@
 // Running a task and the text form of its outcome (see outcome.hpp).
 #include "distributed/outcome.hpp"
 
+#include "distributed/errors.hpp"
+
 #include <fmt/format.h>
 
 #include <chrono>
@@ -32,6 +34,9 @@ TaskOutcome run_task(const Task& task, const WorkFunction& work, int rank) {
   try {
     outcome.record = work(task);
     outcome.ok = true;
+  } catch (const TaskAbandoned& stop) {
+    outcome.abandoned = true;
+    outcome.error = stop.what();
   } catch (const std::exception& error) {
     outcome.error = error.what();
   } catch (...) {
@@ -42,7 +47,7 @@ TaskOutcome run_task(const Task& task, const WorkFunction& work, int rank) {
 }
 
 std::string encode_outcome(const TaskOutcome& outcome) {
-  return join_fields({outcome.ok ? "ok" : "failed", std::to_string(outcome.index), outcome.key,
+  return join_fields({outcome.ok ? "ok" : outcome.abandoned ? "abandoned" : "failed", std::to_string(outcome.index), outcome.key,
                       outcome.ok ? outcome.record : outcome.error, fmt::format("{:.6g}", outcome.wall_seconds),
                       std::to_string(outcome.rank)});
 }
@@ -51,13 +56,14 @@ std::optional<TaskOutcome> decode_outcome(std::string_view line) {
   const std::optional<std::vector<std::string>> fields = split_fields(line);
   if (!fields || fields->size() != 6) return std::nullopt;
   const std::vector<std::string>& f = *fields;
-  if (f[0] != "ok" && f[0] != "failed") return std::nullopt;
+  if (f[0] != "ok" && f[0] != "failed" && f[0] != "abandoned") return std::nullopt;
   const auto index = parse_number<std::size_t>(f[1]);
   const auto wall = parse_number<double>(f[4]);
   const auto rank = parse_number<int>(f[5]);
   if (!index || !wall || !rank || f[2].empty()) return std::nullopt;
   TaskOutcome outcome;
   outcome.ok = f[0] == "ok";
+  outcome.abandoned = f[0] == "abandoned";
   outcome.index = *index;
   outcome.key = f[2];
   (outcome.ok ? outcome.record : outcome.error) = f[3];

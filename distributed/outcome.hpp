@@ -3,7 +3,7 @@
 // kept apart from the result because they differ from run to run. The text form (one line of
 // escaped tab-separated fields, text_fields.hpp) is both a journal line's body and the message a
 // rank sends to rank 0:
-//   ok|failed  index  key  record-or-message  wall_s  rank
+//   ok|failed|abandoned  index  key  record-or-message  wall_s  rank   (abandoned: rank messages only)
 #pragma once
 
 #include <cstddef>
@@ -31,6 +31,7 @@ struct TaskOutcome {
   double wall_seconds = 0.0;
   int rank = 0;          // the process that computed it
   bool resumed = false;  // read back from the journal rather than computed in this run
+  bool abandoned = false;  // the work function threw TaskAbandoned (errors.hpp): never journaled
 };
 
 // Calls work(task), timing it; an exception becomes a failed outcome with its message.

@@ -23,12 +23,14 @@ std::string format_duration(double seconds) {
   return fmt::format("{}h{:02}m", total / 3600, (total % 3600) / 60);
 }
 
-std::string progress_line(const std::string& label, const ProgressCounts& counts, double elapsed_seconds) {
+std::string progress_line(const std::string& label, const ProgressCounts& counts, double elapsed_seconds,
+                          const std::string& detail) {
   std::string line = fmt::format("{}: {}/{} done", label, counts.resumed + counts.computed, counts.total);
   if (counts.resumed > 0) line += fmt::format(" ({} resumed)", counts.resumed);
   line += fmt::format(", {} failed, elapsed {}", counts.failed, format_duration(elapsed_seconds));
   const std::optional<double> left = estimated_seconds_left(counts, elapsed_seconds);
   line += left ? ", ETA " + format_duration(*left) : std::string(", ETA ?");
+  if (!detail.empty()) line += "; " + detail;
   return line;
 }
 
@@ -58,7 +60,7 @@ void ProgressMeter::draw(bool force) {
   if (!force && now - last_draw_ < std::chrono::milliseconds(250)) return;
   last_draw_ = now;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  fmt::print(stderr, "\r\033[K{}", progress_line(label_, counts_, elapsed));
+  fmt::print(stderr, "\r\033[K{}", progress_line(label_, counts_, elapsed, detail_));
   std::fflush(stderr);
 }
 

@@ -22,8 +22,9 @@ struct ProgressCounts {
 // Seconds to go, from the rate of this run's completions; std::nullopt before the first one.
 std::optional<double> estimated_seconds_left(const ProgressCounts& counts, double elapsed_seconds);
 std::string format_duration(double seconds);  // "42s", "3m05s", "2h07m"
-// "label: 12/40 done (3 resumed), 1 failed, elapsed 1m02s, ETA 2m10s"
-std::string progress_line(const std::string& label, const ProgressCounts& counts, double elapsed_seconds);
+// "label: 12/40 done (3 resumed), 1 failed, elapsed 1m02s, ETA 2m10s" (then "; detail" when given)
+std::string progress_line(const std::string& label, const ProgressCounts& counts, double elapsed_seconds,
+                          const std::string& detail = {});
 
 class ProgressMeter {
  public:
@@ -34,12 +35,14 @@ class ProgressMeter {
   ProgressMeter& operator=(const ProgressMeter&) = delete;
   void finished(bool ok);  // one more task computed
   void tick();             // redraws (at most every 0.25 s) so that the elapsed time moves
+  void set_detail(std::string detail) { detail_ = std::move(detail); }  // the study's own count
   void close();            // last redraw and a line end
   const ProgressCounts& counts() const { return counts_; }
 
  private:
   void draw(bool force);
   std::string label_;
+  std::string detail_;
   ProgressCounts counts_;
   bool shown_;
   bool closed_ = false;

@@ -72,30 +72,44 @@ SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config
   return r;
 }
 
+SweepStudy sweep_reference(const scene::Scene& scene, const SweepRequest& request, modal::ModeCache* modes) {
+  if (request.jobs < 0) {
+    throw SettingError(Setting::jobs, fmt::format("{}", request.jobs), "not a thread count (valid range [1, inf), 0: one per core)");
+  }
+  if (!(request.tolerance > 0.0 && request.tolerance < 1.0)) {
+    throw SettingError(Setting::tolerance, fmt::format("{}", request.tolerance), "not a tolerance (valid range (0, 1))");
+  }
+  SweepStudy study;
+  study.tolerance = request.tolerance;
+  study.stiffening_from_physics = !request.stiffening;
+  study.stiffening = request.stiffening.value_or(physics_stiffening(scene, request.tolerance));
+  study.scene = scene;
+  study.scene.boom.stiffening = study.stiffening;
+  study.reference = converged_reference(study.scene, request.reference, request.duration, modes);
+  study.window_start = error_window(study.scene, request.duration);
+  study.judged = judged_outputs(study.scene);
+  return study;
+}
+
+std::vector<SweepConfig> sweep_configurations(const SweepRequest& request) {
+  std::vector<SweepConfig> configs;
+  for (const SweepConfig& config : sweep_grid(request.grid)) {
+    if (request.shard.contains(config)) configs.push_back(config);
+  }
+  return configs;
+}
+
 SweepStudy sweep(const scene::Scene& scene, const SweepRequest& request,
                  const std::function<void(const ConvergedReference&)>& on_reference,
                  const std::function<void(const SweepResult&, std::size_t, std::size_t)>& progress) {
   if (request.jobs < 1) {
     throw SettingError(Setting::jobs, fmt::format("{}", request.jobs), "not a thread count (valid range [1, inf))");
   }
-  if (!(request.tolerance > 0.0 && request.tolerance < 1.0)) {
-    throw SettingError(Setting::tolerance, fmt::format("{}", request.tolerance), "not a tolerance (valid range (0, 1))");
-  }
   modal::ModeCache modes;
-  SweepStudy study;
-  study.tolerance = request.tolerance;
-  study.stiffening_from_physics = !request.stiffening;
-  study.stiffening = request.stiffening.value_or(physics_stiffening(scene, request.tolerance));
-  scene::Scene modelled = scene;
-  modelled.boom.stiffening = study.stiffening;
-  study.reference = converged_reference(modelled, request.reference, request.duration, &modes);
+  SweepStudy study = sweep_reference(scene, request, &modes);
   if (on_reference) on_reference(study.reference);
-  study.window_start = error_window(modelled, request.duration);
-  study.judged = judged_outputs(modelled);
-  std::vector<SweepConfig> configs;
-  for (const SweepConfig& config : sweep_grid(request.grid)) {
-    if (request.shard.contains(config)) configs.push_back(config);
-  }
+  const std::vector<SweepConfig> configs = sweep_configurations(request);
+  const scene::Scene& modelled = study.scene;
   const SweepSetup setup{&modelled, &study.reference, study.window_start, study.judged, request.duration,
                          request.max_explicit_steps, &modes};
   study.results.resize(configs.size());

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "coupling/error_metrics.hpp"
+#include "distributed/farm.hpp"
 #include "scene/scene.hpp"
 #include "study/error_measure.hpp"
 #include "study/reference.hpp"
@@ -49,6 +50,7 @@ struct SweepRequest {
 
 struct SweepStudy {
   double tolerance = 0.01;  // of the verdict
+  scene::Scene scene;       // the scene as every run models it (the stiffening decided)
   scene::Stiffening stiffening = scene::Stiffening::none;
   bool stiffening_from_physics = false;
   ConvergedReference reference;
@@ -71,12 +73,31 @@ struct SweepSetup {
 // One configuration (thread-safe).
 SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config);
 
-// The reference, then the shard's configurations over request.jobs threads. `on_reference` is
+// The reference and what the runs are measured over (everything but the results). Throws as sweep().
+SweepStudy sweep_reference(const scene::Scene& scene, const SweepRequest& request, modal::ModeCache* modes);
+// The shard's configurations, in grid order.
+std::vector<SweepConfig> sweep_configurations(const SweepRequest& request);
+
+// The reference, then the shard's configurations over request.jobs threads (in this process). `on_reference` is
 // called once the reference is known; `progress` (serialized) after each configuration with the
 // number done and the total. Throws scene::SceneError, coupling::SolverFailure (the reference),
 // SettingError.
 SweepStudy sweep(const scene::Scene& scene, const SweepRequest& request,
                  const std::function<void(const ConvergedReference&)>& on_reference = {},
                  const std::function<void(const SweepResult&, std::size_t done, std::size_t total)>& progress = {});
+
+// The sweep on the distributed engine (study/sweep_farm.cpp): the reference on every process, then the
+// shard's configurations as farm tasks (threads: farm_options.threads; request.jobs is not used),
+// journaled in farm_options.output_directory and resumed on a rerun. Every process calls it; on ranks
+// > 0 farm.root is false and records is empty. records: record_of(result) of the shard's
+// configurations in grid order (a work function that threw becomes a failed result with its message).
+struct SweepOnEngine {
+  SweepStudy study;                   // reference, window, judged outputs (results empty)
+  std::vector<std::string> records;   // the shard's rows, grid order
+  distributed::FarmResult farm;       // engine, counts, journal (outcomes dropped)
+};
+SweepOnEngine sweep_on_engine(distributed::Session& session, const scene::Scene& scene, const SweepRequest& request,
+                              distributed::FarmOptions farm_options,
+                              const std::function<std::string(const SweepResult&)>& record_of);
 
 }  // namespace ffrf::study

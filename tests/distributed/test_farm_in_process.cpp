@@ -161,6 +161,31 @@ TEST(Farm, AJournalOfOtherTasksOrSettingsIsRefusedAndLeftAsItWas) {
   EXPECT_EQ(work.total_calls(), 30u);
 }
 
+TEST(Farm, AnAbandonedTaskIsNotJournaledAndTheRerunComputesIt) {
+  // A stop request (Ctrl-C, a time limit) makes the work function give task 4 up: the farm hands out
+  // nothing more, rethrows, and journals neither a result nor a failure for it; the rerun computes
+  // every task the journal lacks (task 4 among them) and equals an uninterrupted run.
+  ScratchDirectory dir;
+  const std::vector<Task> tasks = numbered_tasks(12);
+  CountingWork work(tasks.size());
+  Session serial(LaunchInfo{});
+  const auto stopping = [&](const Task& task) {
+    if (task.index == 4) throw TaskAbandoned("interrupted by SIGINT");
+    return work(task);
+  };
+  EXPECT_THROW(run_farm(serial, tasks, stopping, options_for(dir.path(), 1)), TaskAbandoned);
+  EXPECT_LT(work.total_calls(), tasks.size());
+  EXPECT_EQ(work.calls(4), 0);
+  CountingWork again(tasks.size());
+  const FarmResult rerun = farm(tasks, again, options_for(dir.path(), 2));
+  EXPECT_EQ(again.calls(4), 1);
+  EXPECT_EQ(rerun.failed, 0u);
+  EXPECT_EQ(rerun.computed + rerun.resumed, tasks.size());
+  EXPECT_EQ(rerun.resumed, work.total_calls());
+  CountingWork fresh(tasks.size());
+  EXPECT_EQ(records(rerun), records(farm(tasks, fresh, options_for(dir / "uninterrupted", 2))));
+}
+
 TEST(Farm, FailedTasksAreRetriedOnlyOnRequest) {
   ScratchDirectory dir;
   const std::vector<Task> tasks = numbered_tasks(12);

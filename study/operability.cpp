@@ -1,0 +1,181 @@
+// Sea-state cells, the boom model per cell and one record's run (see operability.hpp).
+#include "study/operability.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "distributed/stable_hash.hpp"
+#include "hydro/wave_spectrum.hpp"
+#include "scene/irregular_sea.hpp"
+#include "study/error_measure.hpp"
+#include "study/recommend.hpp"
+#include "study/recommend_reasoning.hpp"
+#include "study/run_pipeline.hpp"
+
+namespace ffrf::study {
+namespace {
+
+constexpr double band_tail = 0.01;  // the excitation band holds all but 1 % of the sea's variance
+
+std::string_view heading_name(hydro::WaveHeading heading) {
+  return heading == hydro::WaveHeading::head ? "head" : "following";
+}
+
+}  // namespace
+
+std::string SeaCell::key() const {
+  return fmt::format("Hs={:.17g} Tp={:.17g} heading={}", significant_height, peak_period, heading_name(heading));
+}
+
+std::string CellModel::label() const {
+  return fmt::format("{}, {} rtol {:.0e}", choice.label(), coupling::to_string(integrator), relative_tolerance);
+}
+
+void validate(const OperabilityRequest& r) {
+  const auto bad = [](const std::string& what) { throw std::invalid_argument(what); };
+  if (r.significant_heights.empty() || r.peak_periods.empty() || r.headings.empty()) bad("operability: an empty grid axis");
+  for (double hs : r.significant_heights) {
+    if (!(hs > 0.0 && hs <= 20.0)) bad(fmt::format("operability: Hs = {} m out of range (valid range (0, 20] m)", hs));
+  }
+  for (double tp : r.peak_periods) {
+    if (!(tp >= 2.0 && tp <= 30.0)) bad(fmt::format("operability: Tp = {} s out of range (valid range [2, 30] s)", tp));
+  }
+  if (r.components < 0 || r.components > 100000) {
+    bad(fmt::format("operability: {} wave components (valid range [0, 100000], 0: a sea that never repeats)", r.components));
+  }
+  if (r.seeds < 1 || r.seeds > 1000) bad(fmt::format("operability: {} seeds per cell (valid range [1, 1000])", r.seeds));
+  if (!(r.duration > 0.0 && r.duration <= 86400.0)) {
+    bad(fmt::format("operability: record length {} s out of range (valid range (0, 86400] s)", r.duration));
+  }
+  if (!(r.peak_enhancement >= 1.0 && r.peak_enhancement <= 20.0)) {
+    bad(fmt::format("operability: peak enhancement {} out of range (valid range [1, 20])", r.peak_enhancement));
+  }
+  if (!(r.tolerance > 0.0 && r.tolerance < 1.0)) bad(fmt::format("operability: tolerance {} (valid range (0, 1))", r.tolerance));
+  if (r.verify_cells < 0) bad(fmt::format("operability: {} verified cells (valid range [0, cells])", r.verify_cells));
+  if (r.converged_elements < 2 || r.converged_elements > 256) {
+    bad(fmt::format("operability: converged model with {} elements (valid range [2, 256])", r.converged_elements));
+  }
+  validate(r.criteria);
+}
+
+std::vector<SeaCell> sea_cells(const OperabilityRequest& request) {
+  std::vector<SeaCell> cells;
+  for (hydro::WaveHeading heading : request.headings) {
+    for (double tp : request.peak_periods) {
+      for (double hs : request.significant_heights) cells.push_back({hs, tp, heading});
+    }
+  }
+  return cells;
+}
+
+std::vector<std::size_t> verified_cells(std::size_t cells, int count) {
+  std::vector<std::size_t> chosen;
+  const std::size_t n = std::min(cells, static_cast<std::size_t>(std::max(count, 0)));
+  for (std::size_t i = 0; i < n; ++i) chosen.push_back((2 * i + 1) * cells / (2 * n));  // the middles of n equal blocks
+  return chosen;
+}
+
+OperabilityCriteria resolve_criteria(const scene::Scene& scene, const OperabilityCriteria& criteria) {
+  OperabilityCriteria resolved = criteria;
+  if (resolved.daf_limit == 0.0) {
+    if (!scene.has_cargo()) throw std::invalid_argument("operability: the scene has no cargo (a lift needs one)");
+    resolved.daf_limit = offshore_daf_limit(scene.cargo->mass / 1000.0);
+  }
+  return resolved;
+}
+
+std::uint64_t record_seed(const SeaCell& cell, int index) {
+  // 31 bits: the range of wave.seed, [0, 2^31 − 1].
+  return distributed::StableHash().add_field(cell.key()).add_field(fmt::format("seed={}", index)).value() & 0x7fffffffULL;
+}
+
+scene::Scene record_scene(const scene::Scene& scene, const SeaCell& cell, std::uint64_t seed, const OperabilityRequest& request) {
+  scene::IrregularSeaState sea;
+  sea.spectrum = "jonswap";
+  sea.significant_height = cell.significant_height;
+  sea.peak_period = cell.peak_period;
+  sea.peak_enhancement = request.peak_enhancement;
+  sea.heading = cell.heading;
+  sea.seed = seed;
+  sea.duration = request.duration;
+  if (request.components == 0) return scene::in_irregular_sea(scene, sea);
+  // in_irregular_sea keeps the base's component count (and warns when the sea repeats within the record).
+  scene::Scene base = scene;
+  if (!base.sea) {
+    base.sea = scene::IrregularSea{};
+    base.wave.reset();
+  }
+  base.sea->component_count = request.components;
+  return scene::in_irregular_sea(base, sea);
+}
+
+CellModel recommended_model(const scene::Scene& scene, const SeaCell& cell, const OperabilityRequest& request,
+                            modal::ModeCache* modes) {
+  // The reasoning sees a regular wave at the top of the sea's energy band: the highest frequency the
+  // cell excites with more than band_tail/2 of its variance above it.
+  const hydro::WaveSpectrum spectrum = hydro::jonswap(cell.significant_height, cell.peak_period, request.peak_enhancement);
+  const double top = hydro::energy_band(spectrum, band_tail).upper;
+  scene::Scene reasoning_scene = scene;
+  reasoning_scene.sea.reset();
+  reasoning_scene.wave = scene::Wave{cell.significant_height, 2.0 * std::numbers::pi / top,
+                                     cell.heading == hydro::WaveHeading::head ? scene::WaveDirection::head
+                                                                              : scene::WaveDirection::following,
+                                     2.0};
+  const RecommendReasoning reasoning = reason_about(reasoning_scene, request.tolerance, judged_outputs(reasoning_scene));
+  const std::vector<Candidate> ladder = candidate_ladder(reasoning_scene, reasoning, modes);
+  CellModel model;
+  model.relative_tolerance = reasoning.relative_tolerance;
+  model.excitation_top = top;
+  model.dynamic_modes = reasoning.dynamic_modes;
+  model.euler_load = reasoning.euler_load;
+  for (const Candidate& candidate : ladder) {
+    if (candidate.prune_reason.empty() && candidate.integrator != coupling::Integrator::arkode) {
+      model.choice = candidate.choice;
+      model.integrator = candidate.integrator;
+      return model;
+    }
+  }
+  throw std::runtime_error(fmt::format("operability: recommend's reasoning kept no model for {}", cell.key()));
+}
+
+CellModel converged_model(const scene::Scene& scene, const OperabilityRequest& request, const CellModel& recommended) {
+  CellModel model = recommended;
+  model.choice = scene::BoomChoice{};
+  model.choice.kind = scene::BoomKind::nodal;
+  model.choice.elements = request.converged_elements;
+  model.choice.stiffening = physics_stiffening(scene, request.tolerance);
+  model.integrator = coupling::Integrator::cvode;
+  model.relative_tolerance = request.tolerance / 1000.0;
+  return model;
+}
+
+SeedExtremes run_record(const scene::Scene& scene, const SeaCell& cell, int seed_index, const CellModel& model,
+                        const OperabilityRequest& request, modal::ModeCache* modes) {
+  const scene::Scene record = record_scene(scene, cell, record_seed(cell, seed_index), request);
+  DynamicsRequest dynamics;
+  dynamics.integrator = model.integrator;
+  dynamics.relative_tolerance = dynamics.absolute_tolerance = model.relative_tolerance;
+  dynamics.duration = request.duration;
+  const coupling::IntegratorSettings settings = integrator_settings(record, dynamics);
+  const ModelRun run = run_model(record, model.choice, settings, modes);
+  const std::size_t n = run.result.time.size();
+  std::vector<double> tension(n), heave(n), moment(n), axial(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const coupling::CraneOutputs& o = run.result.samples[i];
+    tension[i] = o.wire_tension;
+    heave[i] = o.cargo.y();
+    moment[i] = o.joint_reaction.z();
+    axial[i] = o.root_axial_force;
+  }
+  const coupling::CraneOutputs& at_rest = run.static_outputs();
+  SeedExtremes extremes = seed_extremes(run.result.time, tension, heave, moment, axial, scene::wave_ramp_duration(record),
+                                        at_rest.wire_tension, at_rest.joint_reaction.z());
+  extremes.work = run.work();
+  extremes.rhs_evaluations = static_cast<double>(run.result.stats.function_evaluations);
+  return extremes;
+}
+
+}  // namespace ffrf::study

@@ -1,0 +1,108 @@
+// The operability table (`ffrf operability`, docs/operability.md): a grid of sea states Hs × Tp
+// (× heading), N seeds per cell, one record of `duration` seconds per seed. Each (cell, seed) is one
+// task of the distributed engine (distributed/farm.hpp), so that cells and seeds are balanced over
+// threads and MPI ranks, journaled as they finish and resumed on a rerun. Per cell the seeds'
+// extremes become statistics and a verdict (operability_criteria.hpp).
+// The boom model per cell is recommend's reasoning (recommend_reasoning.hpp) applied to the cell's
+// excitation band (the spectrum's upper band edge): the first candidate of the ladder that the
+// physics does not prune. A sample of cells is run again, same seeds, with the converged model (a
+// fine nodal mesh at a tight tolerance) to verify that choice and to measure what it saved.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "coupling/simulation.hpp"
+#include "distributed/farm.hpp"
+#include "hydro/wave_synthesis.hpp"
+#include "modal/mode_cache.hpp"
+#include "scene/crane_builder.hpp"
+#include "scene/scene.hpp"
+#include "study/operability_criteria.hpp"
+
+namespace ffrf::study {
+
+struct SeaCell {
+  double significant_height = 0.0;  // Hs [m]
+  double peak_period = 0.0;         // Tp [s]
+  hydro::WaveHeading heading = hydro::WaveHeading::following;
+  std::string key() const;  // "Hs=2.5 Tp=9 heading=following" (exact: %.17g)
+};
+
+struct OperabilityRequest {
+  std::vector<double> significant_heights, peak_periods;  // the grid's axes [m], [s]
+  std::vector<hydro::WaveHeading> headings{hydro::WaveHeading::following};
+  int seeds = 3;                 // records per cell
+  double duration = 10800.0;     // of each record [s]
+  double peak_enhancement = 3.3; // JONSWAP γ of every cell
+  int components = 0;            // wave components per record (0: Δω = 2π / duration, a sea that never repeats)
+  OperabilityCriteria criteria;  // limits (0 fields: scene defaults)
+  double tolerance = 0.01;       // of the model choice (recommend's τ)
+  int verify_cells = 2;          // cells run again with the converged model (0: none)
+  int converged_elements = 32;   // the converged model: nodal N at rtol τ/1000
+};
+// Throws SettingError / std::invalid_argument naming the first setting out of range.
+void validate(const OperabilityRequest& request);
+
+std::vector<SeaCell> sea_cells(const OperabilityRequest& request);  // Hs fastest, then Tp, then heading
+// The cells verified against the converged model: `count` cells spread evenly over the list.
+std::vector<std::size_t> verified_cells(std::size_t cells, int count);
+
+// The model the reasoning picks for a cell, and why.
+struct CellModel {
+  scene::BoomChoice choice;
+  coupling::Integrator integrator = coupling::Integrator::cvode;
+  double relative_tolerance = 1e-4;
+  double excitation_top = 0.0;  // [rad/s] the upper edge of the sea's energy band
+  int dynamic_modes = 0;
+  double euler_load = 0.0;      // [N] of the boom
+  std::string label() const;    // "modal k=1+static (N=8), cvode rtol 1e-04"
+};
+CellModel recommended_model(const scene::Scene& scene, const SeaCell& cell, const OperabilityRequest& request,
+                            modal::ModeCache* modes);
+CellModel converged_model(const scene::Scene& scene, const OperabilityRequest& request, const CellModel& recommended);
+
+// The scene of one record: the cell's JONSWAP sea (scene::in_irregular_sea) with the seed's random phases.
+scene::Scene record_scene(const scene::Scene& scene, const SeaCell& cell, std::uint64_t seed,
+                          const OperabilityRequest& request);
+// The seed of record `index` of a cell: from the cell's key and the index only, the same for both models.
+std::uint64_t record_seed(const SeaCell& cell, int index);
+
+// One record: prepare, integrate, reduce (statistics after the wave ramp). Throws on a solver failure.
+SeedExtremes run_record(const scene::Scene& scene, const SeaCell& cell, int seed_index, const CellModel& model,
+                        const OperabilityRequest& request, modal::ModeCache* modes);
+
+struct CellResult {
+  SeaCell cell;
+  CellModel model;
+  bool ok = false;
+  std::string failure;  // the first failed seed's message
+  CellStatistics statistics;
+  CellVerdict verdict;
+  double wall_seconds = 0.0;  // timing: the seeds' task times summed
+  // The verification with the converged model (verified cells only).
+  bool verified = false, converged_ok = false;
+  std::string converged_failure;
+  CellModel converged;
+  CellStatistics converged_statistics;
+  CellVerdict converged_verdict;
+  double converged_wall_seconds = 0.0;
+};
+
+struct OperabilityStudy {
+  OperabilityCriteria criteria;  // as resolved (DAF limit from the hook load)
+  std::vector<CellResult> cells;
+  distributed::FarmResult farm;  // engine, counts, journal, wall time (outcomes dropped)
+};
+
+// Runs every (cell, seed) task and the verification tasks on the engine and judges the cells.
+// Every process calls it; on ranks > 0 the result has farm.root == false and no cells.
+OperabilityStudy run_operability(distributed::Session& session, const scene::Scene& scene,
+                                 const OperabilityRequest& request, distributed::FarmOptions farm_options);
+
+// The criteria with the scene's defaults filled in (DAF limit from the cargo's mass).
+OperabilityCriteria resolve_criteria(const scene::Scene& scene, const OperabilityCriteria& criteria);
+
+}  // namespace ffrf::study

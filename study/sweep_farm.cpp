@@ -1,0 +1,53 @@
+// The accuracy–speed sweep on the distributed engine (see sweep.hpp): every process computes the
+// converged reference (the same deterministic runs), then the grid's configurations are the farm's
+// tasks — one configuration per task, keyed by its id and labels, journaled as they finish, the
+// shard's slice for array jobs. A task's record is the caller's text form of its SweepResult (the
+// CSV line), so the journal holds exactly the rows of the table.
+#include <fmt/format.h>
+
+#include "coupling/stop_request.hpp"
+#include "distributed/errors.hpp"
+#include "study/sweep.hpp"
+
+namespace ffrf::study {
+
+SweepOnEngine sweep_on_engine(distributed::Session& session, const scene::Scene& scene, const SweepRequest& request,
+                              distributed::FarmOptions farm_options,
+                              const std::function<std::string(const SweepResult&)>& record_of) {
+  modal::ModeCache modes;
+  SweepOnEngine out;
+  out.study = sweep_reference(scene, request, &modes);
+  const std::vector<SweepConfig> grid = sweep_grid(request.grid);
+  std::vector<std::string> keys;
+  for (const SweepConfig& config : grid) {
+    keys.push_back(fmt::format("id={} {} {}", config.id, config.choice.label(), integrator_label(config)));
+  }
+  const std::vector<distributed::Task> tasks = distributed::make_tasks(keys);
+  const SweepSetup setup{&out.study.scene, &out.study.reference, out.study.window_start, out.study.judged, request.duration,
+                         request.max_explicit_steps, &modes};
+  const distributed::WorkFunction work = [&](const distributed::Task& task) {
+    try {
+      return record_of(run_configuration(setup, grid[task.index]));
+    } catch (const coupling::Interrupted& stop) {  // not a row: the rerun computes it again
+      throw distributed::TaskAbandoned(fmt::format("{}: interrupted by signal {}", task.key, stop.signal));
+    }
+  };
+  farm_options.shard = distributed::Shard{static_cast<std::size_t>(request.shard.index),
+                                          static_cast<std::size_t>(request.shard.count)};
+  out.farm = distributed::run_farm(session, tasks, work, farm_options);
+  for (const distributed::TaskOutcome& outcome : out.farm.outcomes) {
+    if (outcome.ok) {
+      out.records.push_back(outcome.record);
+      continue;
+    }
+    SweepResult failed;  // the work function itself threw (run_configuration turns solver failures into rows)
+    failed.config = grid[outcome.index];
+    failed.status = RunStatus::failed;
+    failed.reason = outcome.error;
+    out.records.push_back(record_of(failed));
+  }
+  out.farm.outcomes.clear();
+  return out;
+}
+
+}  // namespace ffrf::study
