@@ -23,6 +23,7 @@
 #include "modal/mode_cache.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
+#include "study/rao_bem.hpp"
 
 namespace ffrf::study {
 
@@ -47,6 +48,12 @@ struct NaturalMode {
 
 // M, C, K: the natural modes, lowest first (one per complex pair; overdamped ones as real roots).
 std::vector<NaturalMode> natural_modes(const coupling::LinearisedCrane& linear);
+// With a hull impedance Z(s) (a memory hull, study/rao_bem.hpp): the roots of
+// det(s²M + sC + K + Z(s)) = 0, each found by Newton's method on log det, s ← s − 1/tr(D⁻¹D′), from
+// the constant system's eigenvalue (modes up to `refine_below` rad/s; faster ones, which the hull's
+// frequency-dependent part barely moves, stay the constant system's).
+std::vector<NaturalMode> natural_modes(const coupling::LinearisedCrane& linear, const HullImpedance& impedance,
+                                       double refine_below);
 
 // X = (−ω²M + iωC + K)⁻¹ F by Eigen's complex LU; throws std::runtime_error when singular (at an
 // undamped resonance).
@@ -62,7 +69,13 @@ std::vector<NaturalMode> coupled_natural_modes(const scene::Scene& scene, const 
 struct RaoRequest {
   std::vector<scene::BoomChoice> models;  // empty: rao_models()
   std::vector<double> angular_frequencies;  // [rad/s], each > 0
-  HullHydrodynamics hydrodynamics;        // empty: the constant coefficients of the scene
+  HullHydrodynamics hydrodynamics;        // empty: the constant coefficients of the scene, or its [bem] files
+  // A [bem] scene without `hydrodynamics`: the hull's radiation from the files (the physical RAO) or as
+  // the scene's radiation model realises it (the time domain's own; study/rao_bem.hpp).
+  BemRadiationSource bem_radiation = BemRadiationSource::file;
+  // false: a [bem] hull's natural modes are the constant system's (A_model, ∂μ/∂ẋ(0) only: wrong for a
+  // memory hull; kept to show what the time-domain check's fit needs, docs/hydrodynamics.md §6.1).
+  bool memory_natural_modes = true;
   double excitation_amplitude = 0.01;     // wave amplitude of the excitation's central difference [m]
 };
 
@@ -82,6 +95,10 @@ struct RaoResult {
   std::vector<double> angular_frequencies;  // [rad/s], as requested
   double excitation_amplitude = 0.0;
   bool frequency_dependent_hydrodynamics = false;
+  // [bem] scenes: where A(ω), B(ω) came from, and the time domain's radiation model (whose kernel gives
+  // the natural modes).
+  std::optional<BemRadiationSource> bem_radiation;
+  std::string bem_radiation_model;  // "convolution", "state-space", "constant"; empty without [bem]
   std::vector<ModelRao> models;
 };
 
