@@ -227,6 +227,8 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
   if (impedance) {
     result.bem_radiation = request.bem_radiation;
     result.bem_radiation_model = std::string(hydro::to_string(scene.bem->radiation_model));
+    result.bem_radiation_file = scene.bem->radiation_file;
+    if (scene.bem->excitation == scene::ExcitationModel::bem) result.bem_excitation_file = scene.bem->excitation_file;
   }
   const double a = request.excitation_amplitude;
   for (const scene::BoomChoice& choice : request.models.empty() ? rao_models() : request.models) {

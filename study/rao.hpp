@@ -5,8 +5,10 @@
 // per metre of wave amplitude, phase relative to the elevation at x = 0 (ζ = a cos ωt; response
 // Re(Y e^{iωt}) a: a positive phase leads the wave). A'(ω), B'(ω) are frequency-dependent hull
 // terms added to the model's constant added mass and radiation damping, and F̂ may be replaced by a
-// given excitation, through a provider (HullHydrodynamics): constant coefficients by default, BEM
-// data when a provider gives them. Natural frequencies and damping ratios of the coupled system from
+// given excitation, through a provider (HullHydrodynamics): constant coefficients by default; a [bem]
+// hull adds its impedance Z(iω) beyond the linearisation's constant part (study/rao_bem.hpp: the
+// files' A(ω), B(ω), or the radiation model's kernel), its excitation is the .3 file's through the
+// waved crane, and its natural modes are the memory hull's roots of det(s²M + sC + K + Z(s)). Natural frequencies and damping ratios of the coupled system from
 // the eigenvalues λ of the first-order form of M ẍ + C ẋ + K x = 0: ω_n = |λ|, ζ = −Re λ / |λ|.
 // Rigid, nodal and modal booms side by side (rao_models()).
 #pragma once
@@ -99,6 +101,8 @@ struct RaoResult {
   // the natural modes).
   std::optional<BemRadiationSource> bem_radiation;
   std::string bem_radiation_model;  // "convolution", "state-space", "constant"; empty without [bem]
+  std::string bem_radiation_file;   // the .1 file
+  std::string bem_excitation_file;  // the .3 file when it owns the excitation (excitation = "bem"), else empty
   std::vector<ModelRao> models;
 };
 

@@ -76,6 +76,23 @@ TEST(RaoBem, TheCheckMustFitTheMemoryHullsOwnFreeModes) {
   EXPECT_GT(constant.worst_deviation(), 0.05);
 }
 
+// The state-space radiation (fit within 2 %): the run against the RAO of its own kernel, C(iω − A)⁻¹B,
+// and against the files' (apart by the fit's error only).
+TEST(RaoBem, StateSpaceRadiationRunsReproduceTheirOwnRao) {
+  scene::Scene scene = test::scene_file("bem_barge_crane.toml");
+  scene.bem->radiation_model = hydro::RadiationKind::state_space;
+  study::TimeDomainCheckRequest request = linear_check();
+  request.periods = {8.0, 12.0};
+  const study::TimeDomainCheck check = study::check_time_domain(scene, {scene::BoomKind::rigid, 1}, request);
+  print(check);
+  for (const auto& period : check.periods) {
+    for (const auto& c : period.channels) {
+      EXPECT_LT(std::abs(c.model_deviation()), 0.01) << period.period << " " << coupling::to_string(c.output);
+      EXPECT_LT(std::abs(c.deviation()), 0.02) << period.period << " " << coupling::to_string(c.output);
+    }
+  }
+}
+
 TEST(RaoBem, LongWavesLiftTheHullAndTheCargoWithTheSurface) {
   const scene::Scene scene = test::scene_file("bem_barge_crane.toml");
   study::RaoRequest request;
