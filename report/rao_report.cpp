@@ -90,16 +90,40 @@ std::string natural_modes_csv(const study::RaoResult& result) {
   return out;
 }
 
+namespace {
+
+// Where the hull's radiation (and excitation) came from, for the report's prose.
+std::string hull_hydrodynamics(const study::RaoResult& result) {
+  if (result.bem_radiation) {
+    const std::string excitation = result.bem_excitation_file.empty()
+                                       ? "wave excitation from the Froude–Krylov pressure on the wetted box"
+                                       : fmt::format("wave excitation X(ω) of `{}` (linear between its frequencies)", result.bem_excitation_file);
+    const std::string radiation =
+        *result.bem_radiation == study::BemRadiationSource::file
+            ? fmt::format("A(ω), B(ω) of `{}` (linear between its frequencies)", result.bem_radiation_file)
+            : fmt::format("A(ω), B(ω) as the {} radiation model realises them", result.bem_radiation_model);
+    return fmt::format("{}, moved to G1; {}; hydrostatic restoring of the calm-water pressure on the wetted box (the time "
+                       "domain's); natural modes of the {} model's memory (roots of det(s²M + sC + K + Z(s)))",
+                       radiation, excitation, result.bem_radiation_model);
+  }
+  return result.frequency_dependent_hydrodynamics ? "frequency-dependent coefficients from the provider"
+                                                  : "the scene's constant added mass and damping";
+}
+
+}  // namespace
+
 std::string time_domain_check_csv(const std::vector<study::TimeDomainCheck>& checks) {
   std::string out = "model,period_s,output,rao_amplitude,time_domain_amplitude,deviation,phase_difference_rad,fit_residual,"
-                    "steps,wall_s,passed\n";
+                    "steps,wall_s,passed,model_rao_amplitude,model_deviation\n";
   for (const study::TimeDomainCheck& check : checks) {
     for (const study::PeriodCheck& p : check.periods) {
       for (const study::ChannelCheck& c : p.channels) {
-        out += fmt::format("{},{:g},{},{:.10g},{:.10g},{:.6e},{:.6e},{:.3e},{},{:.4f},{}\n", check.choice.label(), p.period,
+        out += fmt::format("{},{:g},{},{:.10g},{:.10g},{:.6e},{:.6e},{:.3e},{},{:.4f},{},{}\n", check.choice.label(), p.period,
                            name_of(c.output), c.frequency_domain, c.time_domain, c.deviation(), c.phase_difference,
                            c.fit_residual, p.stats.steps, p.stats.wall_seconds,
-                           std::abs(c.deviation()) <= check.request.tolerance ? "yes" : "no");
+                           std::abs(c.deviation()) <= check.request.tolerance ? "yes" : "no",
+                           c.model_frequency_domain > 0.0 ? fmt::format("{:.10g},{:.6e}", c.model_frequency_domain, c.model_deviation())
+                                                          : std::string(","));
       }
     }
   }
@@ -159,9 +183,7 @@ std::string rao_markdown(const study::RaoResult& result, const std::vector<study
                      "{} frequencies, periods {:.4g}–{:.4g} s. Hull radiation: {}. Wall time {:.3g} s.\n\n",
                      context.scene_file, result.excitation_amplitude, omegas.size(), period_of(*std::max_element(omegas.begin(), omegas.end())),
                      period_of(*std::min_element(omegas.begin(), omegas.end())),
-                     result.frequency_dependent_hydrodynamics ? "frequency-dependent coefficients from the provider"
-                                                              : "the scene's constant added mass and damping",
-                     context.wall_seconds);
+                     hull_hydrodynamics(result), context.wall_seconds);
   out += "| model | coordinates | wall time [s] |\n|---|---:|---:|\n";
   for (const study::ModelRao& m : result.models) {
     out += fmt::format("| {} | {} | {:.3g} |\n", m.choice.label(), m.coordinates, m.wall_seconds);
@@ -217,8 +239,15 @@ std::string rao_markdown(const study::RaoResult& result, const std::vector<study
                      "worst amplitude deviation {} against the tolerance {}.\n\n",
                      passed ? "PASS" : "FAIL", request.relative_tolerance, request.wave_height, request.ramp_periods,
                      request.window_periods, percent(worst), percent(request.tolerance));
-  out += "| model | period [s] | output | RAO | time domain | deviation | phase diff. [rad] | fit residual | steps | wall [s] | |\n"
-         "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+  const bool memory = checks.front().periods.front().channels.front().model_frequency_domain > 0.0;
+  if (memory) {
+    out += "A [bem] hull: the RAO is the files' (physical); the run's radiation model realises A(ω), B(ω) from its own "
+           "kernel, whose RAO and the deviation from it are the last two columns (the consistent comparison; "
+           "docs/hydrodynamics.md §6.1).\n\n";
+  }
+  out += "| model | period [s] | output | RAO | time domain | deviation | phase diff. [rad] | fit residual | steps | wall [s] | |";
+  out += memory ? " RAO (model's radiation) | deviation from it |\n|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|\n"
+                : "\n|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
   for (const auto& check : checks) {
     for (const auto& p : check.periods) {
       for (const auto& c : p.channels) {
@@ -226,6 +255,10 @@ std::string rao_markdown(const study::RaoResult& result, const std::vector<study
                            check.choice.label(), p.period, name_of(c.output), c.frequency_domain, c.time_domain,
                            100.0 * c.deviation(), c.phase_difference, c.fit_residual, p.stats.steps, p.stats.wall_seconds,
                            std::abs(c.deviation()) <= request.tolerance ? "pass" : "**FAIL**");
+        if (memory) {
+          out.pop_back();
+          out += fmt::format(" {:.6g} | {:+.3f} % |\n", c.model_frequency_domain, 100.0 * c.model_deviation());
+        }
       }
     }
   }
@@ -238,6 +271,7 @@ std::string rao_json(const study::RaoResult& result, const std::vector<study::Ti
             {"wall_s", context.wall_seconds},
             {"excitation_amplitude_m", result.excitation_amplitude},
             {"frequency_dependent_hydrodynamics", result.frequency_dependent_hydrodynamics},
+            {"hull_hydrodynamics", hull_hydrodynamics(result)},
             {"angular_frequencies_rad_per_s", result.angular_frequencies}};
   json["models"] = Json::array();
   for (const study::ModelRao& m : result.models) {
@@ -273,7 +307,8 @@ std::string rao_json(const study::RaoResult& result, const std::vector<study::Ti
       for (const auto& c : p.channels) {
         period["channels"].push_back({{"output", name_of(c.output)}, {"rao_amplitude", c.frequency_domain},
                                       {"time_domain_amplitude", c.time_domain}, {"deviation", c.deviation()},
-                                      {"phase_difference_rad", c.phase_difference}, {"fit_residual", c.fit_residual}});
+                                      {"phase_difference_rad", c.phase_difference}, {"fit_residual", c.fit_residual},
+                                      {"model_rao_amplitude", c.model_frequency_domain}, {"model_deviation", c.model_deviation()}});
       }
       entry["periods"].push_back(std::move(period));
     }
@@ -284,11 +319,11 @@ std::string rao_json(const study::RaoResult& result, const std::vector<study::Ti
 }
 
 std::string rao_text(const study::RaoResult& result, const std::vector<study::TimeDomainCheck>& checks, const RaoContext& context) {
-  std::string out = fmt::format("scene      {}{}\nfrequencies {} (periods {:.4g}-{:.4g} s), wall time {:.3g} s\n", context.scene_file,
+  std::string out = fmt::format("scene      {}{}\nfrequencies {} (periods {:.4g}-{:.4g} s), wall time {:.3g} s\nhull       {}\n", context.scene_file,
                                 context.scene_name.empty() ? "" : " (" + context.scene_name + ")", result.angular_frequencies.size(),
                                 period_of(*std::max_element(result.angular_frequencies.begin(), result.angular_frequencies.end())),
                                 period_of(*std::min_element(result.angular_frequencies.begin(), result.angular_frequencies.end())),
-                                context.wall_seconds);
+                                context.wall_seconds, hull_hydrodynamics(result));
   for (const study::ModelRao& m : result.models) {
     out += fmt::format("\n{} ({} coordinates): coupled natural modes\n", m.choice.label(), m.coordinates);
     for (std::size_t j = 0; j < std::min<std::size_t>(shown_modes, m.modes.size()); ++j) {

@@ -64,7 +64,10 @@ std::shared_ptr<const hydro::RadiationMemoryModel> bem_radiation_model(const Sce
   const std::string key = fmt::format("{}|{}|{}|{}|{}|{}|{}|{}|{}|{}|{}", bem.radiation_file, hydro::to_string(bem.radiation_model),
                                       bem.length_scale, scene.environment.water_density, scene.environment.gravity,
                                       bem.kernel_time_step, bem.truncation_time, bem.state_space_tolerance, origin.x(),
-                                      origin.y(), constant_radiation_frequency(scene));
+                                      origin.y(),
+                                      // ω_c depends on the wave: only the constant model needs it (a memory
+                                      // model's kernel is the same for every wave, computed once)
+                                      bem.radiation_model == hydro::RadiationKind::constant ? constant_radiation_frequency(scene) : 0.0);
   static std::mutex mutex;
   static std::map<std::string, std::shared_ptr<const hydro::RadiationMemoryModel>> cache;
   {

@@ -3,6 +3,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -49,9 +50,17 @@ std::string dominant_coordinate(const LinearisedCrane& linear, const Eigen::Vect
 
 double NaturalMode::period() const { return 2.0 * std::numbers::pi / angular_frequency; }
 
-std::vector<NaturalMode> natural_modes(const LinearisedCrane& linear) {
+namespace {
+
+struct RootAndShape {
+  std::complex<double> root;
+  Eigen::VectorXcd shape;
+};
+
+// The constant system's eigenvalues (Im λ ≥ 0) and shapes, from its first-order form
+// y = (x, ẋ): ẏ = [0 I; −M⁻¹K −M⁻¹C] y.
+std::vector<RootAndShape> constant_roots(const LinearisedCrane& linear) {
   const int n = linear.size();
-  // First-order form y = (x, ẋ): ẏ = [0 I; −M⁻¹K −M⁻¹C] y.
   const Eigen::PartialPivLU<Eigen::MatrixXd> mass(linear.mass);
   Eigen::MatrixXd state = Eigen::MatrixXd::Zero(2 * n, 2 * n);
   state.topRightCorner(n, n).setIdentity();
@@ -59,18 +68,80 @@ std::vector<NaturalMode> natural_modes(const LinearisedCrane& linear) {
   state.bottomRightCorner(n, n) = -mass.solve(linear.damping);
   const Eigen::EigenSolver<Eigen::MatrixXd> solver(state, true);
   if (solver.info() != Eigen::Success) throw std::runtime_error("natural_modes: the eigenvalue solver did not converge");
-  std::vector<NaturalMode> modes;
+  std::vector<RootAndShape> roots;
   for (int i = 0; i < 2 * n; ++i) {
     const std::complex<double> lambda = solver.eigenvalues()(i);
-    const double magnitude = std::abs(lambda);
-    if (lambda.imag() < 0.0 || magnitude == 0.0) continue;  // one of each complex pair
+    if (lambda.imag() < 0.0 || std::abs(lambda) == 0.0) continue;  // one of each complex pair
     // A real (overdamped) root: its partner is another real root; both are listed.
-    modes.push_back({magnitude, -lambda.real() / magnitude,
-                     dominant_coordinate(linear, solver.eigenvectors().col(i).head(n))});
+    roots.push_back({lambda, solver.eigenvectors().col(i).head(n)});
+  }
+  return roots;
+}
+
+std::vector<NaturalMode> to_modes(const LinearisedCrane& linear, const std::vector<RootAndShape>& roots) {
+  std::vector<NaturalMode> modes;
+  for (const RootAndShape& r : roots) {
+    const double magnitude = std::abs(r.root);
+    modes.push_back({magnitude, -r.root.real() / magnitude, dominant_coordinate(linear, r.shape)});
   }
   std::sort(modes.begin(), modes.end(),
             [](const NaturalMode& a, const NaturalMode& b) { return a.angular_frequency < b.angular_frequency; });
   return modes;
+}
+
+// D(s) = s²M + sC + K + Z(s) (Z in the hull's rows and columns).
+Eigen::MatrixXcd dynamic_matrix(const LinearisedCrane& linear, const HullImpedance& impedance, std::complex<double> s) {
+  Eigen::MatrixXcd d = (s * s) * linear.mass.cast<std::complex<double>>() + s * linear.damping.cast<std::complex<double>>() +
+                       linear.stiffness.cast<std::complex<double>>();
+  d.block<3, 3>(linear.hull_at, linear.hull_at) += impedance(s);
+  return d;
+}
+
+// Newton on log det D(s) from `root`, deflated by the roots already found (and their conjugates) so
+// that two starts do not converge to one root: s ← s − 1/(tr(D⁻¹D′) − Σ_j 1/(s − r_j)). False when it
+// does not converge (non-finite, or 40 steps).
+bool refine_root(const LinearisedCrane& linear, const HullImpedance& impedance, const std::vector<std::complex<double>>& found,
+                 std::complex<double>& root, Eigen::VectorXcd& shape) {
+  std::complex<double> s = root;
+  for (int iteration = 0; iteration < 40; ++iteration) {
+    const double h = 1e-6 * std::abs(s);
+    const Eigen::MatrixXcd d = dynamic_matrix(linear, impedance, s);
+    const Eigen::MatrixXcd slope = (dynamic_matrix(linear, impedance, s + h) - dynamic_matrix(linear, impedance, s - h)) / (2.0 * h);
+    const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(d);
+    std::complex<double> log_slope = lu.solve(slope).trace();
+    for (const std::complex<double> r : found) log_slope -= 1.0 / (s - r) + 1.0 / (s - std::conj(r));
+    if (!std::isfinite(log_slope.real()) || !std::isfinite(log_slope.imag()) || std::abs(log_slope) == 0.0) return false;
+    const std::complex<double> step = 1.0 / log_slope;
+    s -= step;
+    if (!std::isfinite(s.real()) || !std::isfinite(s.imag())) return false;
+    if (std::abs(step) < 1e-11 * std::abs(s)) {
+      const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(dynamic_matrix(linear, impedance, s), Eigen::ComputeFullV);
+      shape = svd.matrixV().col(svd.matrixV().cols() - 1);
+      root = s.imag() < 0.0 ? std::conj(s) : s;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<NaturalMode> natural_modes(const LinearisedCrane& linear) { return to_modes(linear, constant_roots(linear)); }
+
+std::vector<NaturalMode> natural_modes(const LinearisedCrane& linear, const HullImpedance& impedance, double refine_below) {
+  std::vector<RootAndShape> roots = constant_roots(linear);
+  if (impedance && linear.hull_at >= 0) {
+    std::vector<std::complex<double>> found;
+    for (RootAndShape& r : roots) {
+      if (std::abs(r.root) > refine_below) continue;
+      RootAndShape refined = r;
+      if (refine_root(linear, impedance, found, refined.root, refined.shape)) {
+        r = refined;
+        found.push_back(r.root);
+      }
+    }
+  }
+  return to_modes(linear, roots);
 }
 
 Eigen::VectorXcd frequency_response(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& damping,
@@ -135,12 +206,16 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
   if (!(request.excitation_amplitude > 0.0)) throw std::invalid_argument("the excitation amplitude must be positive");
   modal::ModeCache own;
   modal::ModeCache& cache = modes != nullptr ? *modes : own;
+  // A [bem] hull: its impedance beyond the linearisation's constant part (study/rao_bem.hpp), from the
+  // files or from the radiation model; the natural modes always from the model's own kernel (the
+  // files' A, B are known on the real axis only) — the modes of the time domain.
+  HullImpedance impedance, model_impedance;
+  double refine_below = 0.0;
   if (scene.bem && !request.hydrodynamics) {
-    // Linearised at t = 0, a [bem] hull would show only its radiation model's A and ∂μ/∂ẋ(0), not the
-    // files' A(ω), B(ω) and excitation: refuse rather than give RAOs that are not those of the files.
-    throw scene::SceneError({{scene.file, 0, 0, "bem", "",
-                              "the frequency domain does not yet use BEM coefficients (its RAOs would not be those of the "
-                              "files); run the time domain (ffrf run/compare) on this scene, or use [radiation] constants"}});
+    require_bem_band(scene, request.angular_frequencies);
+    impedance = bem_hull_impedance(scene, request.bem_radiation);
+    model_impedance = bem_hull_impedance(scene, BemRadiationSource::model);
+    refine_below = 2.0 * scene.bem->radiation.frequency.back();
   }
   scene::Scene calm = scene;
   calm.wave.reset();
@@ -148,7 +223,13 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
   RaoResult result;
   result.angular_frequencies = request.angular_frequencies;
   result.excitation_amplitude = request.excitation_amplitude;
-  result.frequency_dependent_hydrodynamics = static_cast<bool>(request.hydrodynamics);
+  result.frequency_dependent_hydrodynamics = static_cast<bool>(request.hydrodynamics) || static_cast<bool>(impedance);
+  if (impedance) {
+    result.bem_radiation = request.bem_radiation;
+    result.bem_radiation_model = std::string(hydro::to_string(scene.bem->radiation_model));
+    result.bem_radiation_file = scene.bem->radiation_file;
+    if (scene.bem->excitation == scene::ExcitationModel::bem) result.bem_excitation_file = scene.bem->excitation_file;
+  }
   const double a = request.excitation_amplitude;
   for (const scene::BoomChoice& choice : request.models.empty() ? rao_models() : request.models) {
     if (progress) progress(choice.label());
@@ -159,7 +240,7 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
     ModelRao model;
     model.choice = choice;
     model.coordinates = linear.size();
-    model.modes = natural_modes(linear);
+    model.modes = model_impedance && request.memory_natural_modes ? natural_modes(linear, model_impedance, refine_below) : natural_modes(linear);
     for (const double omega : request.angular_frequencies) {
       const auto waved = scene::build_crane(with_regular_wave(scene, 2.0 * a, 2.0 * std::numbers::pi / omega, 0.0), choice, &cache);
       Eigen::VectorXcd force = coupling::wave_excitation(*waved, linear, omega, a);
@@ -172,6 +253,11 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
           force.setZero();
           force.segment<3>(linear.hull_at) = *terms.excitation;
         }
+      }
+      if (impedance && linear.hull_at >= 0) {  // Z(iω) = −ω²ΔA + iωΔB
+        const Eigen::Matrix3cd z = impedance(std::complex<double>(0.0, omega));
+        mass.block<3, 3>(linear.hull_at, linear.hull_at) -= z.real() / (omega * omega);
+        damping.block<3, 3>(linear.hull_at, linear.hull_at) += z.imag() / omega;
       }
       const Eigen::VectorXcd motion = frequency_response(mass, damping, linear.stiffness, force, omega);
       const Eigen::VectorXcd response = outputs.position.cast<std::complex<double>>() * motion +

@@ -5,8 +5,10 @@
 // per metre of wave amplitude, phase relative to the elevation at x = 0 (ζ = a cos ωt; response
 // Re(Y e^{iωt}) a: a positive phase leads the wave). A'(ω), B'(ω) are frequency-dependent hull
 // terms added to the model's constant added mass and radiation damping, and F̂ may be replaced by a
-// given excitation, through a provider (HullHydrodynamics): constant coefficients by default, BEM
-// data when a provider gives them. Natural frequencies and damping ratios of the coupled system from
+// given excitation, through a provider (HullHydrodynamics): constant coefficients by default; a [bem]
+// hull adds its impedance Z(iω) beyond the linearisation's constant part (study/rao_bem.hpp: the
+// files' A(ω), B(ω), or the radiation model's kernel), its excitation is the .3 file's through the
+// waved crane, and its natural modes are the memory hull's roots of det(s²M + sC + K + Z(s)). Natural frequencies and damping ratios of the coupled system from
 // the eigenvalues λ of the first-order form of M ẍ + C ẋ + K x = 0: ω_n = |λ|, ζ = −Re λ / |λ|.
 // Rigid, nodal and modal booms side by side (rao_models()).
 #pragma once
@@ -23,6 +25,7 @@
 #include "modal/mode_cache.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
+#include "study/rao_bem.hpp"
 
 namespace ffrf::study {
 
@@ -47,6 +50,12 @@ struct NaturalMode {
 
 // M, C, K: the natural modes, lowest first (one per complex pair; overdamped ones as real roots).
 std::vector<NaturalMode> natural_modes(const coupling::LinearisedCrane& linear);
+// With a hull impedance Z(s) (a memory hull, study/rao_bem.hpp): the roots of
+// det(s²M + sC + K + Z(s)) = 0, each found by Newton's method on log det, s ← s − 1/tr(D⁻¹D′), from
+// the constant system's eigenvalue (modes up to `refine_below` rad/s; faster ones, which the hull's
+// frequency-dependent part barely moves, stay the constant system's).
+std::vector<NaturalMode> natural_modes(const coupling::LinearisedCrane& linear, const HullImpedance& impedance,
+                                       double refine_below);
 
 // X = (−ω²M + iωC + K)⁻¹ F by Eigen's complex LU; throws std::runtime_error when singular (at an
 // undamped resonance).
@@ -62,7 +71,13 @@ std::vector<NaturalMode> coupled_natural_modes(const scene::Scene& scene, const 
 struct RaoRequest {
   std::vector<scene::BoomChoice> models;  // empty: rao_models()
   std::vector<double> angular_frequencies;  // [rad/s], each > 0
-  HullHydrodynamics hydrodynamics;        // empty: the constant coefficients of the scene
+  HullHydrodynamics hydrodynamics;        // empty: the constant coefficients of the scene, or its [bem] files
+  // A [bem] scene without `hydrodynamics`: the hull's radiation from the files (the physical RAO) or as
+  // the scene's radiation model realises it (the time domain's own; study/rao_bem.hpp).
+  BemRadiationSource bem_radiation = BemRadiationSource::file;
+  // false: a [bem] hull's natural modes are the constant system's (A_model, ∂μ/∂ẋ(0) only: wrong for a
+  // memory hull; kept to show what the time-domain check's fit needs, docs/hydrodynamics.md §6.1).
+  bool memory_natural_modes = true;
   double excitation_amplitude = 0.01;     // wave amplitude of the excitation's central difference [m]
 };
 
@@ -82,6 +97,12 @@ struct RaoResult {
   std::vector<double> angular_frequencies;  // [rad/s], as requested
   double excitation_amplitude = 0.0;
   bool frequency_dependent_hydrodynamics = false;
+  // [bem] scenes: where A(ω), B(ω) came from, and the time domain's radiation model (whose kernel gives
+  // the natural modes).
+  std::optional<BemRadiationSource> bem_radiation;
+  std::string bem_radiation_model;  // "convolution", "state-space", "constant"; empty without [bem]
+  std::string bem_radiation_file;   // the .1 file
+  std::string bem_excitation_file;  // the .3 file when it owns the excitation (excitation = "bem"), else empty
   std::vector<ModelRao> models;
 };
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -107,15 +108,24 @@ TimeDomainCheck check_time_domain(const scene::Scene& scene, const scene::BoomCh
   check.request = request;
   RaoRequest linear_request;
   linear_request.models = {choice};
+  linear_request.memory_natural_modes = request.memory_free_modes;
   for (const double period : request.periods) linear_request.angular_frequencies.push_back(2.0 * std::numbers::pi / period);
   const RaoResult linear = response_amplitude_operators(scene, linear_request, {}, &cache);
   const ModelRao& rao = linear.models.front();
+  std::optional<RaoResult> model_linear;
+  if (scene.bem) {
+    linear_request.bem_radiation = BemRadiationSource::model;
+    model_linear = response_amplitude_operators(scene, linear_request, {}, &cache);
+  }
   const double amplitude = 0.5 * request.wave_height;
   for (std::size_t p = 0; p < request.periods.size(); ++p) {
     const double period = request.periods[p], omega = linear.angular_frequencies[p];
     if (progress) progress(period);
     scene::Scene waved = with_regular_wave(scene, request.wave_height, period, request.ramp_periods);
     waved.simulation.output_interval = period / samples_per_period;
+    if (scene.bem) {  // the memory's recording step: no coarser than the kernel's
+      waved.simulation.output_interval = period / std::ceil(period / std::min(period / samples_per_period, scene.bem->kernel_time_step));
+    }
     waved.simulation.cargo_lift = 0.0;
     waved.simulation.initial_state = scene::InitialState::static_equilibrium;
     DynamicsRequest dynamics;
@@ -153,6 +163,7 @@ TimeDomainCheck check_time_domain(const scene::Scene& scene, const scene::BoomCh
       ChannelCheck channel;
       channel.output = output;
       channel.frequency_domain = std::abs(expected);
+      if (model_linear) channel.model_frequency_domain = std::abs(model_linear->models.front().response[static_cast<std::size_t>(output)][p]);
       channel.time_domain = std::abs(fitted) / amplitude;
       channel.phase_difference = wrapped(std::arg(fitted) - std::arg(expected));
       channel.fit_residual = residual / std::abs(fitted);

@@ -9,6 +9,10 @@
 // because after the ramp a linear system's response is exactly the steady harmonic plus its free
 // modes: the transients need not have died out (the cargo swing and the moored surge decay over
 // hundreds of seconds). The fit's residual (RMS over the amplitude) is reported beside each value.
+// A [bem] hull: the RAO is the files' (the physical one, study/rao_bem.hpp), the free modes are the
+// roots of the radiation model's own det(s²M + sC + K + Z(s)) (a memory hull's transient is not that of
+// the constant system), the runs sample (and record the memory) at the kernel's time step or finer,
+// and each channel also carries the RAO of the model's own radiation (the consistent comparison).
 #pragma once
 
 #include <functional>
@@ -30,6 +34,7 @@ struct TimeDomainCheckRequest {
   double window_periods = 12.0;  // fitted periods after the ramp [-]
   double relative_tolerance = 1e-8;  // of the integrator (CVODE BDF, minimal coordinates)
   double tolerance = 0.01;     // relative amplitude deviation that passes
+  bool memory_free_modes = true;  // [bem]: fit the memory hull's own free modes (false: the constant system's)
 };
 
 // The judged channels: hull heave and pitch, cargo heave.
@@ -37,11 +42,15 @@ std::vector<coupling::LinearOutput> checked_outputs();
 
 struct ChannelCheck {
   coupling::LinearOutput output;
-  double frequency_domain = 0.0;  // |RAO| per metre of wave amplitude
+  double frequency_domain = 0.0;  // |RAO| per metre of wave amplitude (as `ffrf rao` gives it)
+  // [bem] scenes: |RAO| with the hull's radiation as the run's radiation model realises it (A∞ and the
+  // transform of its kernel; study/rao_bem.hpp) — the consistent comparison; 0 without [bem].
+  double model_frequency_domain = 0.0;
   double time_domain = 0.0;       // fitted amplitude / wave amplitude
   double phase_difference = 0.0;  // time-domain phase − RAO phase [rad], wrapped to (−π, π]
   double fit_residual = 0.0;      // RMS of the fit's residual / fitted amplitude [-]
   double deviation() const { return time_domain / frequency_domain - 1.0; }
+  double model_deviation() const { return model_frequency_domain > 0.0 ? time_domain / model_frequency_domain - 1.0 : 0.0; }
 };
 
 struct PeriodCheck {

@@ -48,15 +48,39 @@ TEST(CliRao, OneModelFromTheOptionsAndAFailedCheckExitsOne) {
   EXPECT_FALSE(summary["time_domain_check"][0]["passed"].flag);
 }
 
-// A [bem] hull: the linearisation would see only the radiation model's A and ∂μ/∂ẋ(0), not the
-// files' A(ω), B(ω): the command refuses with exit 2, naming the section, and writes nothing.
-TEST(CliRao, ABemSceneIsRefusedNamingTheSection) {
+// A [bem] hull (issue 15): the files' A(ω), B(ω), X(ω); rigid, nodal and modal side by side with the
+// charts, and the time-domain check (convolution radiation) within 1 % — the physics is asserted in
+// tests/study/test_rao_bem.cpp; here the command's files, report and exit code.
+TEST(CliRao, ABemSceneGivesTheFilesRaosAndPassesItsTimeDomainCheck) {
   TempDir dir;
-  const RunResult r = run_ffrf("rao '" + source_file("cases/bem_barge_crane.toml") + "' --out '" +
+  const fs::path out = dir / "rao";
+  const RunResult r = run_ffrf("rao '" + source_file("cases/bem_barge_crane.toml") +
+                                   "' --periods 4:20:17 --check-time-domain --check-wave-height 0.02 --out '" + out.string() + "'",
+                               dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* file : {"rao_rigid.csv", "rao_nodal_N16.csv", "rao_modal_k2_static_N16.csv", "time_domain_check.csv",
+                           "report.md", "rao_hull.png", "rao_cargo.png", "rao_boom_wire.png"}) {
+    EXPECT_TRUE(fs::exists(out / file)) << file;
+  }
+  const std::string report = read_text(out / "report.md");
+  EXPECT_NE(report.find("**PASS**"), std::string::npos) << report;
+  EXPECT_NE(report.find("barge.1"), std::string::npos) << report;
+  EXPECT_NE(report.find("RAO (model's radiation)"), std::string::npos) << report;
+  const Json summary = JsonParser(read_text(out / "summary.json")).parse();
+  ASSERT_EQ(summary["time_domain_check"].items.size(), 3u);
+  for (std::size_t m = 0; m < 3; ++m) EXPECT_LT(summary["time_domain_check"][m]["worst_deviation"].number, 0.01);
+}
+
+// Periods beyond the files' band: a named error (scene file, key, file, value, valid range), exit 2,
+// nothing written — no silent extrapolation of BEM data.
+TEST(CliRao, ABemSceneRefusesPeriodsOutsideItsFiles) {
+  TempDir dir;
+  const RunResult r = run_ffrf("rao '" + source_file("cases/bem_barge_crane.toml") + "' --periods 0.5:10:5 --out '" +
                                    (dir.path() / "rao").string() + "'", dir.path());
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("bem"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("does not yet use BEM coefficients"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("bem.radiation_file"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(period 0.5 s)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("valid range 0.0418879 … 6.98132 rad/s"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir.path() / "rao"));
 }
 
