@@ -66,11 +66,11 @@ void check_concurrent_runs(const scene::Scene& scene, const scene::BoomChoice& c
 }
 
 TEST(SharedModel, ThreadsOnOneNodalModelMatchSerialRunsBitwise) {
-  check_concurrent_runs(test::scene_file("paper_floating_crane.toml"), {scene::BoomKind::nodal, 8}, 4.0, 3);
+  check_concurrent_runs(test::scene_file("paper_floating_crane.toml"), {scene::BoomKind::nodal, 8}, 10.0, 3);
 }
 
 TEST(SharedModel, ThreadsOnOneModalModelMatchSerialRunsBitwise) {
-  check_concurrent_runs(test::scene_file("paper_floating_crane.toml"), {scene::BoomKind::modal, 16, 4, true}, 4.0, 3);
+  check_concurrent_runs(test::scene_file("paper_floating_crane.toml"), {scene::BoomKind::modal, 16, 4, true}, 10.0, 3);
 }
 
 TEST(SharedModel, ThreadsWithConvolutionRadiationMemoryMatchSerialRunsBitwise) {
