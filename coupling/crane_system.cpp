@@ -1,4 +1,5 @@
-// Instantiates the crane equations for the nodal and the modal elastic coordinates.
+// Instantiates the crane equations and their shared model for the nodal and the modal elastic
+// coordinates.
 #include "coupling/crane_system_impl.hpp"
 
 #include "modal/modal_coordinates.hpp"
@@ -6,11 +7,27 @@
 
 namespace ffrf::coupling {
 
+namespace detail {
+
 template <fem::ElasticCoordinates Coords>
-std::unique_ptr<CraneEquations> make_crane_equations(CraneModel<Coords> model) {
-  return std::make_unique<detail::CraneSystem<Coords>>(std::move(model));
+std::unique_ptr<CraneEquations> CraneConstants<Coords>::equations() const {
+  return std::make_unique<CraneSystem<Coords>>(this->shared_from_this());
 }
 
+}  // namespace detail
+
+template <fem::ElasticCoordinates Coords>
+std::shared_ptr<const SharedCraneModel> make_shared_crane_model(CraneModel<Coords> model) {
+  return std::make_shared<const detail::CraneConstants<Coords>>(std::move(model));
+}
+
+template <fem::ElasticCoordinates Coords>
+std::unique_ptr<CraneEquations> make_crane_equations(CraneModel<Coords> model) {
+  return make_shared_crane_model(std::move(model))->equations();
+}
+
+template std::shared_ptr<const SharedCraneModel> make_shared_crane_model(CraneModel<nodal::NodalCoordinates>);
+template std::shared_ptr<const SharedCraneModel> make_shared_crane_model(CraneModel<modal::ModalCoordinates>);
 template std::unique_ptr<CraneEquations> make_crane_equations(CraneModel<nodal::NodalCoordinates>);
 template std::unique_ptr<CraneEquations> make_crane_equations(CraneModel<modal::ModalCoordinates>);
 

@@ -38,7 +38,7 @@ void CraneSystem<Coords>::full_mass_times(ConstRef q, ConstRef a, Ref out) {
   if (hull_free()) out.head<3>() = hull_rigid_inertia() * a.head<3>();
   if (has_cargo()) out.segment<3>(cargo_at_) = cargo_inertia().cwiseProduct(a.segment<3>(cargo_at_));
   boom_q_ = q.tail(3 + n_);
-  m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_);
+  m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_, boom_work_);
   out.segment<3>(b) = boom_reference_mass_ * a.segment<3>(b) + boom_coupling_ * a.tail(n_);
   out.tail(n_).noalias() = m_.boom.coords().mass_ff() * a.tail(n_);
   out.tail(n_).noalias() += boom_coupling_.transpose() * a.segment<3>(b);
@@ -51,11 +51,11 @@ void CraneSystem<Coords>::full_mass_matrix(ConstRef q, Eigen::MatrixXd& mass) {
   if (hull_free()) mass.topLeftCorner<3, 3>() = hull_rigid_inertia();
   if (has_cargo()) mass.block<3, 3>(cargo_at_, cargo_at_) = cargo_inertia().asDiagonal();
   boom_q_ = q.tail(3 + n_);
-  m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_);
+  m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_, boom_work_);
   mass.block<3, 3>(b, b) = boom_reference_mass_;
   mass.block(b, b + 3, 3, n_) = boom_coupling_;
   mass.block(b + 3, b, n_, 3) = boom_coupling_.transpose();
-  mass.bottomRightCorner(n_, n_) = elastic_mass_dense_;
+  mass.bottomRightCorner(n_, n_) = shared_->elastic_mass_dense;
 }
 
 template <fem::ElasticCoordinates Coords>

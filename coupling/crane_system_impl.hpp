@@ -1,26 +1,23 @@
 // Template definitions of the crane equations (coupling/crane_system.hpp); included only by
 // coupling/crane_system.cpp, which instantiates them for the nodal and the modal coordinates.
+// CraneSystem is the per-instance half (Pinocchio's Data): it reads the shared, immutable
+// CraneConstants (coupling/crane_constants.hpp) and owns only its workspace (the vectors and
+// matrices one evaluation fills, allocated once) and its run state (the radiation memory).
 #pragma once
 
-#include <Eigen/SparseCholesky>
 #include <cmath>
-#include <stdexcept>
-#include <type_traits>
+#include <memory>
 #include <vector>
 
-#include "coupling/crane_system.hpp"
+#include "coupling/crane_constants.hpp"
 #include "coupling/wire_rope.hpp"
 
 namespace ffrf::coupling::detail {
 
-template <class Matrix>
-using MassFactor = std::conditional_t<std::is_base_of_v<Eigen::SparseMatrixBase<Matrix>, Matrix>,
-                                      Eigen::SimplicialLDLT<Matrix>, Eigen::LDLT<Eigen::MatrixXd>>;
-
 template <fem::ElasticCoordinates Coords>
 class CraneSystem final : public CraneEquations {
  public:
-  explicit CraneSystem(CraneModel<Coords> model);
+  explicit CraneSystem(std::shared_ptr<const CraneConstants<Coords>> shared);
 
   int minimal_size() const override { return elastic_at_ + n_; }
   Eigen::VectorXd initial_guess() const override;
@@ -45,11 +42,11 @@ class CraneSystem final : public CraneEquations {
   double wire_stretch_full(ConstRef q) override;
   int cargo_offset() const override { return has_cargo() ? cargo_at_ : -1; }
   int elastic_size() const override { return n_; }
-  BandStructure minimal_structure() const override { return minimal_structure_; }
+  BandStructure minimal_structure() const override { return shared_->minimal_structure; }
   void minimal_jacobian(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, SecondOrderJacobian& out) override;
   // The hull and cargo columns by differences (twice: positions, velocities) plus the base residual.
   int minimal_jacobian_evaluations() const override { return 2 * elastic_at_ + 1; }
-  BandStructure full_structure() const override { return full_structure_; }
+  BandStructure full_structure() const override { return shared_->full_structure; }
   int full_jacobian_evaluations() const override { return 2 * (elastic_at_ + 3) + 1; }
   void full_jacobian(double t, ConstRef q, ConstRef v, ConstRef v_dot, SecondOrderJacobian& out) override;
   CraneOutputs minimal_outputs_with_accelerations(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot) override;
@@ -93,8 +90,6 @@ class CraneSystem final : public CraneEquations {
   void full_wire_residual(ConstRef q, ConstRef v, Ref out);
   // Known part of the boom frame's acceleration (see frame_known_acc_) at t for the hull's velocity.
   Eigen::Vector3d frame_known_acceleration(double t, const Eigen::Vector3d& hull_v) const;
-  // The structures of the Newton blocks and the elastic coordinates the wire's attachment moves.
-  void find_structures();
   // J_r of the clamp (hull velocities → boom frame velocities) for the current mount_offset_.
   Eigen::Matrix3d mount_jacobian() const;
   // Minimal-coordinate generalized forces (hull rows through Jᵀ, convective term included).
@@ -108,24 +103,21 @@ class CraneSystem final : public CraneEquations {
                               const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v);
   void boom_tip_kinematics(const Eigen::Vector3d& cargo_q, Eigen::Vector2d& tip, Eigen::Vector2d& hook) const;
 
-  CraneModel<Coords> m_;
-  int n_;
-  int cargo_at_;    // index of the cargo block (0 with a fixed hull, 3 otherwise)
-  int elastic_at_;  // minimal: index of η; full: index of the boom frame (R_B, θ_B) (cargo_at_ + 3 or + 0)
-  MassFactor<typename Coords::Matrix> elastic_mass_factor_;
-  Eigen::MatrixXd elastic_mass_dense_;  // M_ff as a dense block of the full mass matrix (constant)
-  Eigen::VectorXd elastic_scale_;  // typical size of each elastic coordinate (see the constructor)
+  // The shared model (read-only) and, for brevity, its CraneModel and layout.
+  std::shared_ptr<const CraneConstants<Coords>> shared_;
+  const CraneModel<Coords>& m_;
+  const int n_;
+  const int cargo_at_;    // index of the cargo block (0 with a fixed hull, 3 otherwise)
+  const int elastic_at_;  // minimal: index of η; full: index of the boom frame (R_B, θ_B) (cargo_at_ + 3 or + 0)
   // workspace (allocated once)
+  BodyWorkspace boom_work_;  // the boom's own scratch vectors (coupling/floating_frame_body.hpp)
   Eigen::VectorXd boom_q_, boom_v_, boom_force_;
   Eigen::Vector2d mount_offset_ = Eigen::Vector2d::Zero();  // A(θ1) b
   Eigen::Vector3d hull_force_ = Eigen::Vector3d::Zero(), cargo_force_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d hull_rhs_ = Eigen::Vector3d::Zero();
   Eigen::VectorXd elastic_rhs_;
   Eigen::VectorXd schur_rhs_column_;
-  // M_ff⁻¹ S̄ᵀ and M_ff⁻¹ cᵀ (constant; c = u0_cross_shape), the two-column solve's workspace, and
-  // M_ff⁻¹ M_fR (n × 3) before the clamp's J_r.
-  Eigen::Matrix<double, Eigen::Dynamic, 2> mass_inverse_shape_;
-  Eigen::VectorXd mass_inverse_cross_;
+  // The two-column solve's workspace and M_ff⁻¹ M_fR (n × 3) before the clamp's J_r.
   Eigen::Matrix<double, Eigen::Dynamic, 2> pair_rhs_, pair_solution_;
   Eigen::Matrix<double, Eigen::Dynamic, 3> frame_columns_;
   Eigen::Matrix3d boom_reference_mass_ = Eigen::Matrix3d::Zero();
@@ -138,15 +130,11 @@ class CraneSystem final : public CraneEquations {
   Eigen::Vector3d frame_known_acc_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d joint_reaction_ = Eigen::Vector3d::Zero();
   WireState wire_;
-  hydro::RadiationMemory radiation_;  // run state of m_.hull.radiation_memory (inactive without one)
-  // Newton-matrix structure (bordered band for nodal coordinates, dense for modal ones), the elastic
-  // coordinates that move the wire's attachment (nonzero columns of the tip's shape rows), and
-  // workspace of the Jacobians (allocated once).
-  BandStructure minimal_structure_, full_structure_;
-  std::vector<int> tip_columns_;
+  // run state: the history of m_.hull.radiation_memory (inactive without one)
+  hydro::RadiationMemory radiation_;
+  // workspace of the Jacobians (allocated once)
   Eigen::Matrix<double, 3, Eigen::Dynamic> reference_stiffness_, reference_damping_;
   Eigen::VectorXd jacobian_base_, jacobian_shifted_, jacobian_x_, jacobian_x_dot_, boom_a_, wire_boom_force_, full_inertia_;
-  Eigen::VectorXd minimal_scale_, full_scale_;  // typical sizes: the difference increments' floor
 };
 
 }  // namespace ffrf::coupling::detail

@@ -22,46 +22,6 @@
 namespace ffrf::coupling::detail {
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::find_structures() {
-  tip_columns_.clear();
-  for (int j = 0; j < n_; ++j) {
-    if (m_.boom_tip.shape.col(j).squaredNorm() > 0.0) tip_columns_.push_back(j);
-  }
-  int bandwidth = 0;
-  bool banded = false;
-  if constexpr (std::is_base_of_v<Eigen::SparseMatrixBase<typename Coords::Matrix>, typename Coords::Matrix>) {
-    const auto widen = [&bandwidth](const typename Coords::Matrix& m) {
-      for (int k = 0; k < m.outerSize(); ++k) {
-        for (typename Coords::Matrix::InnerIterator it(m, k); it; ++it) {
-          bandwidth = std::max(bandwidth, static_cast<int>(std::abs(it.row() - it.col())));
-        }
-      }
-    };
-    widen(m_.boom.coords().mass_ff());
-    widen(m_.boom.coords().stiffness());
-    widen(m_.boom.coords().skew_ff());
-    if (m_.boom.has_prestress()) widen(m_.boom.prestress_stiffness());
-    if (m_.boom.has_centrifugal_stiffening()) widen(m_.boom.centrifugal_stiffness());
-    if (!tip_columns_.empty()) bandwidth = std::max(bandwidth, tip_columns_.back() - tip_columns_.front());
-    banded = 2 * bandwidth + 1 < n_;  // otherwise the band saves nothing
-  }
-  minimal_structure_ = banded ? BandStructure{elastic_at_, n_, bandwidth, bandwidth} : BandStructure{elastic_at_ + n_, 0, 0, 0};
-  full_structure_ = banded ? BandStructure{elastic_at_ + 3, n_, bandwidth, bandwidth}
-                           : BandStructure{elastic_at_ + 3 + n_, 0, 0, 0};
-  for (Eigen::VectorXd* v : {&jacobian_base_, &jacobian_shifted_, &jacobian_x_, &jacobian_x_dot_}) {
-    v->resize(std::max(minimal_size(), full_size()));
-  }
-  full_inertia_.resize(full_size());
-  minimal_scale_ = coordinate_scale();
-  // Full coordinates: hull and cargo as in minimal coordinates, the boom frame like the hull (1 m,
-  // 0.01 rad), then the elastic coordinates.
-  full_scale_.resize(full_size());
-  full_scale_.head(elastic_at_) = minimal_scale_.head(elastic_at_);
-  full_scale_.segment<3>(elastic_at_) = Eigen::Vector3d(1.0, 1.0, 0.01);
-  full_scale_.tail(n_) = minimal_scale_.tail(n_);
-}
-
-template <fem::ElasticCoordinates Coords>
 Eigen::Matrix3d CraneSystem<Coords>::mount_jacobian() const {
   Eigen::Matrix3d jr = Eigen::Matrix3d::Identity();
   jr(0, 2) = -mount_offset_.y();
@@ -200,7 +160,7 @@ void CraneSystem<Coords>::minimal_jacobian(double t, ConstRef z, ConstRef z_dot,
     boom_a_.head<3>() = frame_a;
     boom_a_.tail(n_) = z_ddot.tail(n_);
     m_.boom.add_elastic_derivatives(boom_q_, boom_v_, boom_a_, Eigen::Vector2d(0.0, -m_.gravity), reference_stiffness_,
-                                    reference_damping_, out.stiffness, out.damping, e);
+                                    reference_damping_, out.stiffness, out.damping, e, boom_work_);
     if (hull_free()) {
       const Eigen::Matrix<double, 3, Eigen::Dynamic> hull_k = jr.transpose() * reference_stiffness_;
       const Eigen::Matrix<double, 3, Eigen::Dynamic> hull_d = jr.transpose() * reference_damping_;
@@ -217,7 +177,7 @@ void CraneSystem<Coords>::minimal_jacobian(double t, ConstRef z, ConstRef z_dot,
   state.head(size) = z;
   rate.head(size) = z_dot;
   difference_columns(
-      size, e, e, tip_columns_, has_cargo(), minimal_scale_, state, rate, jacobian_base_, jacobian_shifted_,
+      size, e, e, shared_->tip_columns, has_cargo(), shared_->minimal_scale, state, rate, jacobian_base_, jacobian_shifted_,
       [&](const Eigen::VectorXd& s, const Eigen::VectorXd& s_dot, Eigen::VectorXd& r) {
         minimal_residual(t, s.head(size), s_dot.head(size), z_ddot, r.head(size));
       },
@@ -242,7 +202,7 @@ void CraneSystem<Coords>::full_jacobian(double t, ConstRef q, ConstRef v, ConstR
   }
   boom_q_ = q.tail(3 + n_);
   boom_v_ = v.tail(3 + n_);
-  m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_);
+  m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_, boom_work_);
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) out.mass.at(b + i, b + j) = boom_reference_mass_(i, j);
     for (int j = 0; j < n_; ++j) out.mass.at(b + i, e + j) = out.mass.at(e + j, b + i) = boom_coupling_(i, j);
@@ -251,7 +211,7 @@ void CraneSystem<Coords>::full_jacobian(double t, ConstRef q, ConstRef v, ConstR
     FloatingFrameBody<Coords>::add_scaled(m_.boom.coords().mass_ff(), 1.0, false, out.mass, e);
     boom_a_ = v_dot.tail(3 + n_);
     m_.boom.add_elastic_derivatives(boom_q_, boom_v_, boom_a_, Eigen::Vector2d(0.0, -m_.gravity), reference_stiffness_,
-                                    reference_damping_, out.stiffness, out.damping, e);
+                                    reference_damping_, out.stiffness, out.damping, e, boom_work_);
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < n_; ++j) {
         out.stiffness.at(b + i, e + j) = reference_stiffness_(i, j);
@@ -264,7 +224,7 @@ void CraneSystem<Coords>::full_jacobian(double t, ConstRef q, ConstRef v, ConstR
   state.head(size) = q;
   rate.head(size) = v;
   difference_columns(
-      size, e, e, tip_columns_, has_cargo(), full_scale_, state, rate, jacobian_base_, jacobian_shifted_,
+      size, e, e, shared_->tip_columns, has_cargo(), shared_->full_scale, state, rate, jacobian_base_, jacobian_shifted_,
       [&](const Eigen::VectorXd& s, const Eigen::VectorXd& s_dot, Eigen::VectorXd& r) {
         full_residual(t, s.head(size), s_dot.head(size), v_dot, r.head(size));
       },

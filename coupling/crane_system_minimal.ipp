@@ -11,39 +11,23 @@
 namespace ffrf::coupling::detail {
 
 template <fem::ElasticCoordinates Coords>
-CraneSystem<Coords>::CraneSystem(CraneModel<Coords> model)
-    : m_(std::move(model)),
-      n_(static_cast<int>(m_.boom.elastic_size())),
-      cargo_at_(m_.hull.fixed ? 0 : 3),
-      elastic_at_(cargo_at_ + (m_.cargo.present ? 3 : 0)),
+CraneSystem<Coords>::CraneSystem(std::shared_ptr<const CraneConstants<Coords>> shared)
+    : shared_(std::move(shared)),
+      m_(shared_->model),
+      n_(shared_->n),
+      cargo_at_(shared_->cargo_at),
+      elastic_at_(shared_->elastic_at),
+      boom_work_(m_.boom.workspace()),
       boom_q_(3 + n_), boom_v_(3 + n_), boom_force_(3 + n_), elastic_rhs_(n_), schur_rhs_column_(n_),
       boom_coupling_(3, n_), hull_elastic_mass_(3, n_), schur_columns_(n_, 3), schur_rhs_(n_),
-      boom_a_(3 + n_), wire_boom_force_(3 + n_) {
-  radiation_ = hydro::RadiationMemory(m_.hull.radiation_memory);
+      radiation_(m_.hull.radiation_memory), boom_a_(3 + n_), wire_boom_force_(3 + n_) {
   pair_rhs_.resize(n_, 2);
   pair_solution_.resize(n_, 2);
   frame_columns_.resize(n_, 3);
-  // Typical size of each elastic coordinate: the η_i that moves some nodal DOF by 1 cm (1 cm or
-  // 0.01 rad for nodal coordinates; 0.01 / max|Φ e_i| for mass-normalized modal ones, whose units
-  // are m·√kg), so tolerances mean the same physical displacement in every coordinate set.
-  elastic_scale_.resize(n_);
-  for (int i = 0; i < n_; ++i) {
-    const double largest = m_.boom.coords().to_nodal(Eigen::VectorXd::Unit(n_, i)).cwiseAbs().maxCoeff();
-    elastic_scale_(i) = largest > 0.0 ? 0.01 / largest : 0.01;
+  for (Eigen::VectorXd* v : {&jacobian_base_, &jacobian_shifted_, &jacobian_x_, &jacobian_x_dot_}) {
+    v->resize(std::max(minimal_size(), full_size()));
   }
-  elastic_mass_dense_ = Eigen::MatrixXd(m_.boom.coords().mass_ff());
-  if (n_ > 0) {
-    elastic_mass_factor_.compute(m_.boom.coords().mass_ff());
-    if (elastic_mass_factor_.info() != Eigen::Success) {
-      throw std::runtime_error("the boom's elastic mass matrix is not positive definite: check the section's mass per length");
-    }
-    // The constant parts of M_ff⁻¹ M_fR (see minimal_accelerations): M_ff⁻¹ S̄ᵀ and M_ff⁻¹ cᵀ.
-    const Eigen::MatrixXd shape_t = m_.boom.coords().shape_integral().transpose();
-    mass_inverse_shape_ = elastic_mass_factor_.solve(shape_t);
-    const Eigen::VectorXd cross_t = m_.boom.coords().u0_cross_shape().transpose();
-    mass_inverse_cross_ = elastic_mass_factor_.solve(cross_t);
-  }
-  find_structures();
+  full_inertia_.resize(full_size());
 }
 
 template <fem::ElasticCoordinates Coords>
@@ -89,7 +73,8 @@ template <fem::ElasticCoordinates Coords>
 void CraneSystem<Coords>::boom_and_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v,
                                               bool bilateral_wire) {
   const double g = m_.gravity;
-  m_.boom.loads_and_mass_blocks(boom_q_, boom_v_, Eigen::Vector2d(0.0, -g), boom_force_, boom_reference_mass_, boom_coupling_);
+  m_.boom.loads_and_mass_blocks(boom_q_, boom_v_, Eigen::Vector2d(0.0, -g), boom_force_, boom_reference_mass_, boom_coupling_,
+                                boom_work_);
   if (!has_cargo()) {
     cargo_force_.setZero();
     wire_ = WireState{};
@@ -163,7 +148,7 @@ void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z
   minimal_forces(t, z, z_dot, true);
   if (has_cargo()) z_ddot.segment<3>(cargo_at_) = cargo_force_.cwiseQuotient(cargo_inertia());
   Eigen::Vector3d hull_a = Eigen::Vector3d::Zero();
-  if (n_ > 0 && !hull_free()) schur_rhs_ = elastic_mass_factor_.solve(elastic_rhs_);
+  if (n_ > 0 && !hull_free()) schur_rhs_ = shared_->elastic_mass_factor.solve(elastic_rhs_);
   if (hull_free()) {
     const Eigen::Matrix3d jr = mount_jacobian();
     Eigen::Matrix3d schur = hull_rigid_inertia() + jr.transpose() * boom_reference_mass_ * jr;
@@ -174,11 +159,11 @@ void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z
       // does what four did.
       pair_rhs_.col(0) = elastic_rhs_;
       pair_rhs_.col(1) = -(boom_coupling_.row(2) + m_.boom.coords().u0_cross_shape()).transpose();  // S̃ᵀη
-      pair_solution_ = elastic_mass_factor_.solve(pair_rhs_);
+      pair_solution_ = shared_->elastic_mass_factor.solve(pair_rhs_);
       schur_rhs_ = pair_solution_.col(0);
       const Eigen::Matrix2d frame_rotation = rotation(boom_q_(2));
-      frame_columns_.leftCols<2>().noalias() = mass_inverse_shape_ * frame_rotation.transpose();
-      frame_columns_.col(2) = -(mass_inverse_cross_ + pair_solution_.col(1));
+      frame_columns_.leftCols<2>().noalias() = shared_->mass_inverse_shape * frame_rotation.transpose();
+      frame_columns_.col(2) = -(shared_->mass_inverse_cross + pair_solution_.col(1));
       schur_columns_.noalias() = frame_columns_ * jr;
       schur -= hull_elastic_mass_ * schur_columns_;
       rhs -= hull_elastic_mass_ * schur_rhs_;
@@ -249,11 +234,7 @@ Eigen::VectorXd CraneSystem<Coords>::static_residual_scale() const {
 
 template <fem::ElasticCoordinates Coords>
 Eigen::VectorXd CraneSystem<Coords>::coordinate_scale() const {
-  Eigen::VectorXd scale = Eigen::VectorXd::Constant(minimal_size(), 1.0);
-  if (hull_free()) scale(2) = 0.01;
-  if (has_cargo()) scale(cargo_at_ + 2) = 0.01;
-  scale.tail(n_) = elastic_scale_;
-  return scale;
+  return shared_->minimal_scale;  // 1 m, 0.01 rad for the pitches, the elastic ones' 1 cm (crane_constants.hpp)
 }
 
 template <fem::ElasticCoordinates Coords>
@@ -303,10 +284,10 @@ CraneOutputs CraneSystem<Coords>::common_outputs(const Eigen::Vector3d& hull_q, 
   const double cargo_on = has_cargo() ? 1.0 : 0.0;
   out.kinetic_energy = 0.5 * hull_v.dot(hull_rigid_inertia() * hull_v) * (hull_free() ? 1.0 : 0.0) +
                        cargo_on * 0.5 * cargo_v.dot(cargo_inertia().cwiseProduct(cargo_v)) +
-                       m_.boom.kinetic_energy(boom_v_, boom_reference_mass_, boom_coupling_);
+                       m_.boom.kinetic_energy(boom_v_, boom_reference_mass_, boom_coupling_, boom_work_);
   out.gravity_energy = (hull_free() ? m_.hull.mass * g * hull_q(1) : 0.0) + cargo_on * m_.cargo.mass * g * cargo_q(1) +
                        m_.boom.gravity_potential(boom_q_, Eigen::Vector2d(0.0, -g));
-  out.strain_energy = m_.boom.strain_energy(boom_q_);
+  out.strain_energy = m_.boom.strain_energy(boom_q_, boom_work_);
   out.wire_energy = has_cargo() ? wire_energy(m_.wire, wire_.length) : 0.0;
   if (hull_free()) {
     const Eigen::Vector3d d = hull_q - m_.hull.support_pose;

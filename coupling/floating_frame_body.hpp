@@ -14,6 +14,9 @@
 // The derivatives of these terms with respect to the elastic coordinates (for the Newton matrices) are
 // written out in add_elastic_derivatives; docs/theory.md §12 derives them.
 // A rigid body is the same body with zero elastic coordinates.
+// The body is immutable once built (threads share it, issue 12.3): every evaluation that needs
+// scratch vectors takes a BodyWorkspace, which each user (one CraneEquations instance) owns; the
+// overloads without one allocate their own (tests, energies, anything off the hot path).
 #pragma once
 
 #include <Eigen/Dense>
@@ -33,6 +36,13 @@ struct BodyPoint {
   Eigen::Matrix<double, 2, Eigen::Dynamic> shape;
 };
 
+// Scratch vectors of the body's evaluations (M_ff η, S̃ η̇, ...), sized once: the hot path allocates
+// nothing. One per evaluating object, never shared between threads.
+struct BodyWorkspace {
+  explicit BodyWorkspace(Eigen::Index elastic_size = 0) : first(elastic_size), second(elastic_size) {}
+  Eigen::VectorXd first, second;
+};
+
 template <fem::ElasticCoordinates Coords>
 class FloatingFrameBody {
  public:
@@ -43,8 +53,8 @@ class FloatingFrameBody {
 
   // stiffness_damping β [s]: structural damping force −βKη̇.
   FloatingFrameBody(Coords coords, double stiffness_damping)
-      : coords_(std::move(coords)), beta_(stiffness_damping), n_(static_cast<Eigen::Index>(coords_.size())),
-        work_a_(n_), work_b_(n_) {}
+      : coords_(std::move(coords)), beta_(stiffness_damping), n_(static_cast<Eigen::Index>(coords_.size())) {}
+  BodyWorkspace workspace() const { return BodyWorkspace(n_); }
 
   Eigen::Index elastic_size() const { return n_; }
   Eigen::Index size() const { return 3 + n_; }
@@ -92,12 +102,17 @@ class FloatingFrameBody {
 
   // Mass matrix blocks: reference (3×3 over R, θ) and reference–elastic coupling (3×n);
   // the elastic block is the constant coords().mass_ff().
-  void mass_blocks(ConstRef q, Eigen::Matrix3d& reference, Eigen::Matrix<double, 3, Eigen::Dynamic>& coupling) const {
+  void mass_blocks(ConstRef q, Eigen::Matrix3d& reference, Eigen::Matrix<double, 3, Eigen::Dynamic>& coupling,
+                   BodyWorkspace& work) const {
     const auto eta = q.tail(n_);
     const Eigen::Matrix2d a = rotation(q(2));
     const Eigen::Vector2d centroid = coords_.first_moment() + coords_.shape_integral() * eta;  // ∫ρū
-    work_a_.noalias() = coords_.mass_ff() * eta;
-    assemble_mass_blocks(eta, a, a * perp(centroid), reference, coupling);
+    work.first.noalias() = coords_.mass_ff() * eta;
+    assemble_mass_blocks(eta, a, a * perp(centroid), reference, coupling, work);
+  }
+  void mass_blocks(ConstRef q, Eigen::Matrix3d& reference, Eigen::Matrix<double, 3, Eigen::Dynamic>& coupling) const {
+    BodyWorkspace work(n_);
+    mass_blocks(q, reference, coupling, work);
   }
 
   // Dense full mass matrix (3 + n)² — for tests, energy and small systems.
@@ -115,6 +130,10 @@ class FloatingFrameBody {
 
   // Quadratic velocity vector Q_v (assigned).
   void quadratic_velocity(ConstRef q, ConstRef v, Ref out) const {
+    BodyWorkspace work(n_);
+    quadratic_velocity(q, v, out, work);
+  }
+  void quadratic_velocity(ConstRef q, ConstRef v, Ref out, BodyWorkspace& work) const {
     const auto eta = q.tail(n_);
     const auto eta_dot = v.tail(n_);
     const double w = v(2);
@@ -122,10 +141,10 @@ class FloatingFrameBody {
     const Eigen::Vector2d centroid = coords_.first_moment() + coords_.shape_integral() * eta;
     const Eigen::Vector2d centroid_rate = coords_.shape_integral() * eta_dot;
     out.head<2>() = w * w * (a * centroid) - 2.0 * w * (a * perp(centroid_rate));
-    work_a_.noalias() = coords_.mass_ff() * eta;  // M_ff η
-    out(2) = -2.0 * w * (coords_.u0_dot_shape().dot(eta_dot) + work_a_.dot(eta_dot));
-    work_b_.noalias() = coords_.skew_ff() * eta_dot;  // S̃ η̇
-    out.tail(n_) = w * w * (coords_.u0_dot_shape().transpose() + work_a_) - 2.0 * w * work_b_;
+    work.first.noalias() = coords_.mass_ff() * eta;  // M_ff η
+    out(2) = -2.0 * w * (coords_.u0_dot_shape().dot(eta_dot) + work.first.dot(eta_dot));
+    work.second.noalias() = coords_.skew_ff() * eta_dot;  // S̃ η̇
+    out.tail(n_) = w * w * (coords_.u0_dot_shape().transpose() + work.first) - 2.0 * w * work.second;
   }
 
   // Adds the generalized force of a global-frame force F applied at a point (paper eq. 13).
@@ -157,12 +176,16 @@ class FloatingFrameBody {
 
   // Adds −Kη − βKη̇ − K_σ η − θ̇² K_c η.
   void add_elastic_force(ConstRef q, ConstRef v, Ref generalized) const {
-    work_a_ = q.tail(n_) + beta_ * v.tail(n_);
-    generalized.tail(n_).noalias() -= coords_.stiffness() * work_a_;
+    BodyWorkspace work(n_);
+    add_elastic_force(q, v, generalized, work);
+  }
+  void add_elastic_force(ConstRef q, ConstRef v, Ref generalized, BodyWorkspace& work) const {
+    work.first = q.tail(n_) + beta_ * v.tail(n_);
+    generalized.tail(n_).noalias() -= coords_.stiffness() * work.first;
     if (has_prestress()) generalized.tail(n_).noalias() -= prestress_ * q.tail(n_);
     if (has_centrifugal_stiffening()) {
-      work_b_.noalias() = centrifugal_ * q.tail(n_);
-      generalized.tail(n_) -= (v(2) * v(2)) * work_b_;
+      work.second.noalias() = centrifugal_ * q.tail(n_);
+      generalized.tail(n_) -= (v(2) * v(2)) * work.second;
     }
   }
 
@@ -171,35 +194,45 @@ class FloatingFrameBody {
   // equations of motion. The same as quadratic_velocity + add_gravity + add_elastic_force + mass_blocks.
   void loads_and_mass_blocks(ConstRef q, ConstRef v, const Eigen::Vector2d& gravity, Ref force, Eigen::Matrix3d& reference,
                              Eigen::Matrix<double, 3, Eigen::Dynamic>& coupling) const {
+    BodyWorkspace work(n_);
+    loads_and_mass_blocks(q, v, gravity, force, reference, coupling, work);
+  }
+  void loads_and_mass_blocks(ConstRef q, ConstRef v, const Eigen::Vector2d& gravity, Ref force, Eigen::Matrix3d& reference,
+                             Eigen::Matrix<double, 3, Eigen::Dynamic>& coupling, BodyWorkspace& work) const {
     const auto eta = q.tail(n_);
     const auto eta_dot = v.tail(n_);
     const double w = v(2);
     const Eigen::Matrix2d a = rotation(q(2));
     const Eigen::Vector2d centroid = coords_.first_moment() + coords_.shape_integral() * eta;  // ∫ρū
     const Eigen::Vector2d centroid_rate = coords_.shape_integral() * eta_dot;
-    work_a_.noalias() = coords_.mass_ff() * eta;      // M_ff η
-    work_b_.noalias() = coords_.skew_ff() * eta_dot;  // S̃ η̇
+    work.first.noalias() = coords_.mass_ff() * eta;      // M_ff η
+    work.second.noalias() = coords_.skew_ff() * eta_dot;  // S̃ η̇
     const Eigen::Vector2d a_centroid = a * centroid;
     force.template head<2>() = w * w * a_centroid - 2.0 * w * (a * perp(centroid_rate)) + coords_.mass() * gravity;
-    force(2) = -2.0 * w * (coords_.u0_dot_shape().dot(eta_dot) + work_a_.dot(eta_dot)) + gravity.dot(perp(a_centroid));
-    force.tail(n_) = w * w * (coords_.u0_dot_shape().transpose() + work_a_) - 2.0 * w * work_b_;
+    force(2) = -2.0 * w * (coords_.u0_dot_shape().dot(eta_dot) + work.first.dot(eta_dot)) + gravity.dot(perp(a_centroid));
+    force.tail(n_) = w * w * (coords_.u0_dot_shape().transpose() + work.first) - 2.0 * w * work.second;
     force.tail(n_).noalias() += coords_.shape_integral().transpose() * (a.transpose() * gravity);
-    assemble_mass_blocks(eta, a, perp(a_centroid), reference, coupling);
-    work_a_ = eta + beta_ * eta_dot;
-    force.tail(n_).noalias() -= coords_.stiffness() * work_a_;
+    assemble_mass_blocks(eta, a, perp(a_centroid), reference, coupling, work);
+    work.first = eta + beta_ * eta_dot;
+    force.tail(n_).noalias() -= coords_.stiffness() * work.first;
     if (has_prestress()) force.tail(n_).noalias() -= prestress_ * eta;
     if (has_centrifugal_stiffening()) {
-      work_b_.noalias() = centrifugal_ * eta;
-      force.tail(n_) -= (w * w) * work_b_;
+      work.second.noalias() = centrifugal_ * eta;
+      force.tail(n_) -= (w * w) * work.second;
     }
   }
 
   // Kinetic energy ½ vᵀ M v from mass blocks already at hand (as loads_and_mass_blocks fills them).
   double kinetic_energy(ConstRef v, const Eigen::Matrix3d& reference, const Eigen::Matrix<double, 3, Eigen::Dynamic>& coupling) const {
+    BodyWorkspace work(n_);
+    return kinetic_energy(v, reference, coupling, work);
+  }
+  double kinetic_energy(ConstRef v, const Eigen::Matrix3d& reference, const Eigen::Matrix<double, 3, Eigen::Dynamic>& coupling,
+                        BodyWorkspace& work) const {
     const auto eta_dot = v.tail(n_);
     const Eigen::Vector3d vr = v.head<3>();
-    work_a_.noalias() = coords_.mass_ff() * eta_dot;
-    return 0.5 * vr.dot(reference * vr) + vr.dot(coupling * eta_dot) + 0.5 * eta_dot.dot(work_a_);
+    work.first.noalias() = coords_.mass_ff() * eta_dot;
+    return 0.5 * vr.dot(reference * vr) + vr.dot(coupling * eta_dot) + 0.5 * eta_dot.dot(work.first);
   }
 
   // Elastic columns of the body's linearization: with F = Q_v + Q_gravity + Q_elastic − M(q) a (the
@@ -213,7 +246,7 @@ class FloatingFrameBody {
   void add_elastic_derivatives(ConstRef q, ConstRef v, ConstRef a, const Eigen::Vector2d& gravity,
                                Eigen::Matrix<double, 3, Eigen::Dynamic>& stiffness_reference,
                                Eigen::Matrix<double, 3, Eigen::Dynamic>& damping_reference, BorderedBandMatrix& stiffness,
-                               BorderedBandMatrix& damping, int offset) const {
+                               BorderedBandMatrix& damping, int offset, BodyWorkspace& work) const {
     const auto eta = q.tail(n_);
     const auto eta_dot = v.tail(n_);
     const auto eta_ddot = a.tail(n_);
@@ -224,14 +257,14 @@ class FloatingFrameBody {
     damping_reference.resize(3, n_);
     stiffness_reference.template topRows<2>().noalias() = (w_dot * rotated_perp - w * w * rotation(q(2))) * shape;
     damping_reference.template topRows<2>().noalias() = (2.0 * w * rotated_perp) * shape;
-    work_a_.noalias() = coords_.mass_ff() * eta;      // M_ff η
-    work_b_.noalias() = coords_.mass_ff() * eta_dot;  // M_ff η̇
+    work.first.noalias() = coords_.mass_ff() * eta;      // M_ff η
+    work.second.noalias() = coords_.mass_ff() * eta_dot;  // M_ff η̇
     const Eigen::RowVector2d lever = (a.head<2>() - gravity).transpose() * rotated_perp;  // (R̈ − g)ᵀ A Ĩ
     stiffness_reference.row(2).noalias() = lever * shape;
-    stiffness_reference.row(2) += 2.0 * w * work_b_.transpose() + 2.0 * w_dot * (coords_.u0_dot_shape() + work_a_.transpose());
-    work_b_.noalias() = coords_.skew_ff() * eta_ddot;  // S̃ a_η
-    stiffness_reference.row(2) -= work_b_.transpose();
-    damping_reference.row(2) = 2.0 * w * (coords_.u0_dot_shape() + work_a_.transpose());
+    stiffness_reference.row(2) += 2.0 * w * work.second.transpose() + 2.0 * w_dot * (coords_.u0_dot_shape() + work.first.transpose());
+    work.second.noalias() = coords_.skew_ff() * eta_ddot;  // S̃ a_η
+    stiffness_reference.row(2) -= work.second.transpose();
+    damping_reference.row(2) = 2.0 * w * (coords_.u0_dot_shape() + work.first.transpose());
     add_scaled(coords_.stiffness(), 1.0, false, stiffness, offset);
     if (has_prestress()) add_scaled(prestress_, 1.0, false, stiffness, offset);
     if (has_centrifugal_stiffening()) add_scaled(centrifugal_, w * w, false, stiffness, offset);
@@ -261,18 +294,20 @@ class FloatingFrameBody {
   double kinetic_energy(ConstRef q, ConstRef v) const {
     Eigen::Matrix3d reference;
     Eigen::Matrix<double, 3, Eigen::Dynamic> coupling;
-    mass_blocks(q, reference, coupling);
-    const auto eta_dot = v.tail(n_);
-    const Eigen::Vector3d vr = v.head<3>();
-    work_a_.noalias() = coords_.mass_ff() * eta_dot;
-    return 0.5 * vr.dot(reference * vr) + vr.dot(coupling * eta_dot) + 0.5 * eta_dot.dot(work_a_);
+    BodyWorkspace work(n_);
+    mass_blocks(q, reference, coupling, work);
+    return kinetic_energy(v, reference, coupling, work);
   }
   // ½ηᵀ(K + K_σ)η: elastic energy plus the second-order work of the constant prestress.
   double strain_energy(ConstRef q) const {
+    BodyWorkspace work(n_);
+    return strain_energy(q, work);
+  }
+  double strain_energy(ConstRef q, BodyWorkspace& work) const {
     const auto eta = q.tail(n_);
-    work_a_.noalias() = coords_.stiffness() * eta;
-    if (has_prestress()) work_a_.noalias() += prestress_ * eta;
-    return 0.5 * eta.dot(work_a_);
+    work.first.noalias() = coords_.stiffness() * eta;
+    if (has_prestress()) work.first.noalias() += prestress_ * eta;
+    return 0.5 * eta.dot(work.first);
   }
   // V = −gᵀ ∫ρ r = −gᵀ (m R + A ∫ρū).
   double gravity_potential(ConstRef q, const Eigen::Vector2d& gravity) const {
@@ -281,18 +316,19 @@ class FloatingFrameBody {
   }
 
  private:
-  // The mass blocks from A(θ), M_Rθ = A Ĩ ∫ρū and work_a_ = M_ff η (uses work_b_).
+  // The mass blocks from A(θ), M_Rθ = A Ĩ ∫ρū and work.first = M_ff η (uses work.second).
   void assemble_mass_blocks(ConstRef eta, const Eigen::Matrix2d& a, const Eigen::Vector2d& rotation_column,
-                            Eigen::Matrix3d& reference, Eigen::Matrix<double, 3, Eigen::Dynamic>& coupling) const {
+                            Eigen::Matrix3d& reference, Eigen::Matrix<double, 3, Eigen::Dynamic>& coupling,
+                            BodyWorkspace& work) const {
     reference.setZero();
     reference(0, 0) = reference(1, 1) = coords_.mass();
     reference.block<2, 1>(0, 2) = rotation_column;
     reference.block<1, 2>(2, 0) = reference.block<2, 1>(0, 2).transpose();
-    reference(2, 2) = coords_.second_moment() + 2.0 * coords_.u0_dot_shape().dot(eta) + eta.dot(work_a_);
+    reference(2, 2) = coords_.second_moment() + 2.0 * coords_.u0_dot_shape().dot(eta) + eta.dot(work.first);
     coupling.resize(3, n_);
     coupling.template topRows<2>().noalias() = a * coords_.shape_integral();
-    work_b_.noalias() = coords_.skew_ff().transpose() * eta;  // (ηᵀS̃)ᵀ
-    coupling.row(2) = -(coords_.u0_cross_shape() + work_b_.transpose());
+    work.second.noalias() = coords_.skew_ff().transpose() * eta;  // (ηᵀS̃)ᵀ
+    coupling.row(2) = -(coords_.u0_cross_shape() + work.second.transpose());
   }
 
   Coords coords_;
@@ -300,8 +336,6 @@ class FloatingFrameBody {
   ElasticMatrix prestress_;    // empty: no static stiffening
   ElasticMatrix centrifugal_;  // empty: no centrifugal stiffening
   Eigen::Index n_;
-  mutable Vector work_a_;  // workspace, sized once: the hot path allocates nothing
-  mutable Vector work_b_;
 };
 
 }  // namespace ffrf::coupling

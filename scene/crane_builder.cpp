@@ -207,13 +207,18 @@ modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& 
   return modal::ModalCoordinates(beam, std::move(basis));
 }
 
-std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {
+std::shared_ptr<const coupling::SharedCraneModel> build_shared_crane(const Scene& scene, const BoomChoice& choice,
+                                                                     modal::ModeCache* cache) {
   const Stiffening stiffening = choice.stiffening.value_or(scene.boom.stiffening);
   if (choice.kind == BoomKind::nodal) {
-    return coupling::make_crane_equations(
+    return coupling::make_shared_crane_model(
         build_crane_model(scene, nodal::NodalCoordinates(boom_beam(scene, choice.elements)), stiffening));
   }
-  return coupling::make_crane_equations(build_crane_model(scene, modal_coordinates(scene, choice, cache), stiffening));
+  return coupling::make_shared_crane_model(build_crane_model(scene, modal_coordinates(scene, choice, cache), stiffening));
+}
+
+std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {
+  return build_shared_crane(scene, choice, cache)->equations();
 }
 
 }  // namespace ffrf::scene

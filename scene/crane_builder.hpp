@@ -63,7 +63,13 @@ coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords
 // cache of this call alone: the same solve either way (modal/mode_cache.hpp).
 modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache = nullptr);
 
-// The whole system for a choice, ready for static equilibrium and integration.
+// The immutable model of a choice (coupling/crane_system.hpp), shared by the runs (and threads)
+// that use it: scene/crane_model_cache.hpp builds each once.
+std::shared_ptr<const coupling::SharedCraneModel> build_shared_crane(const Scene& scene, const BoomChoice& choice,
+                                                                     modal::ModeCache* cache = nullptr);
+
+// The whole system for a choice, ready for static equilibrium and integration: build_shared_crane's
+// model with its own workspace.
 std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache = nullptr);
 
 }  // namespace ffrf::scene

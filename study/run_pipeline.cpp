@@ -120,11 +120,14 @@ long ModelRun::slack_events() const {
                        [](const coupling::WireEvent& event) { return event.slack; });
 }
 
-PreparedRun prepare_run(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes) {
-  check_run_memory(choice);
+namespace {
+
+// Static equilibrium and initial state of freshly made equations.
+PreparedRun prepare_equations(const scene::Scene& scene, const scene::BoomChoice& choice,
+                              std::unique_ptr<coupling::CraneEquations> made) {
   PreparedRun prepared;
   prepared.choice = choice;
-  prepared.equations = scene::build_crane(scene, choice, modes);
+  prepared.equations = std::move(made);
   coupling::CraneEquations& equations = *prepared.equations;
   prepared.statics = coupling::solve_static_equilibrium(equations, equations.initial_guess());
   prepared.from_static_equilibrium = scene.simulation.initial_state == scene::InitialState::static_equilibrium;
@@ -133,6 +136,18 @@ PreparedRun prepare_run(const scene::Scene& scene, const scene::BoomChoice& choi
     prepared.initial_state(equations.cargo_offset() + 1) += scene.simulation.cargo_lift;  // raised, released at rest
   }
   return prepared;
+}
+
+}  // namespace
+
+PreparedRun prepare_run(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes) {
+  check_run_memory(choice);
+  return prepare_equations(scene, choice, scene::build_crane(scene, choice, modes));
+}
+
+PreparedRun prepare_run(scene::CraneModelCache& models, const scene::BoomChoice& choice) {
+  check_run_memory(choice);
+  return prepare_equations(models.scene(), choice, models.model(choice)->equations());
 }
 
 namespace {

@@ -1,7 +1,8 @@
 // The one run pipeline (issue 12.2). prepare_run() builds the crane of a boom choice, solves its
 // static equilibrium and brings it to the scene's initial state: the static equilibrium (or the
 // as-built pose, simulation.initial_state), with the cargo raised by simulation.cargo_lift and
-// released at rest; a hub's prescribed motion is part of the model. integrate_run() integrates a
+// released at rest; a hub's prescribed motion is part of the model. A study that runs one model
+// many times (sweep) takes it from a scene::CraneModelCache, built once and shared by its threads. integrate_run() integrates a
 // prepared model and gathers its statistics; run_model() is the two in a row. Every study — run,
 // the converged reference, compare, sweep, recommend, the stability experiments — and the benches
 // go through these functions: nothing else brings a model to its initial state.
@@ -18,6 +19,7 @@
 #include "coupling/static_equilibrium.hpp"
 #include "modal/mode_cache.hpp"
 #include "scene/crane_builder.hpp"
+#include "scene/crane_model_cache.hpp"
 #include "scene/scene.hpp"
 #include "study/irregular_statistics.hpp"
 #include "study/output_series.hpp"
@@ -111,6 +113,9 @@ struct ModelRun {
 // (study/work_limits.hpp), scene::SceneError (the scene cannot make this crane) and
 // coupling::SolverFailure (KINSOL).
 PreparedRun prepare_run(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes = nullptr);
+// The same on the cache's scene with the cache's shared model of `choice` (built once per distinct
+// model, scene/crane_model_cache.hpp): the run gets its own equations (workspace and run state).
+PreparedRun prepare_run(scene::CraneModelCache& models, const scene::BoomChoice& choice);
 
 // Integrates a prepared model with `settings` (the static wire tension added to its monitor) and
 // gathers the statistics. Throws coupling::SolverFailure.

@@ -43,7 +43,7 @@ SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config
     request.duration = setup.duration;
     if (config.step > 0.0) r.step = request.fixed_step = dividing_step(config.step, output_interval);
     coupling::IntegratorSettings settings = integrator_settings(scene, request);
-    PreparedRun prepared = prepare_run(scene, config.choice, setup.modes);
+    PreparedRun prepared = setup.models != nullptr ? prepare_run(*setup.models, config.choice) : prepare_run(scene, config.choice);
     if (config.integrator == coupling::Integrator::arkode) {
       r.stable_step = coupling::explicit_stable_step(*prepared.equations, prepared.initial_state);
       const double h = config.stability_factor > 0.0 ? config.stability_factor * r.stable_step : r.stable_step;
@@ -110,8 +110,9 @@ SweepStudy sweep(const scene::Scene& scene, const SweepRequest& request,
   if (on_reference) on_reference(study.reference);
   const std::vector<SweepConfig> configs = sweep_configurations(request);
   const scene::Scene& modelled = study.scene;
+  scene::CraneModelCache models(modelled, &modes);
   const SweepSetup setup{&modelled, &study.reference, study.window_start, study.judged, request.duration,
-                         request.max_explicit_steps, &modes};
+                         request.max_explicit_steps, &models};
   study.results.resize(configs.size());
   std::atomic<std::size_t> next{0};
   std::size_t done = 0;
@@ -136,6 +137,8 @@ SweepStudy sweep(const scene::Scene& scene, const SweepRequest& request,
   for (std::size_t t = 0; t < count; ++t) threads.emplace_back(worker);
   for (std::thread& thread : threads) thread.join();
   if (escaped) std::rethrow_exception(escaped);
+  study.models_built = models.models_built();
+  study.eigen_solves = modes.eigen_solves();
   return study;
 }
 

@@ -2,8 +2,10 @@
 // grid (study/sweep_grid.hpp), or one shard of it, in parallel. Each configuration is one run of
 // the one pipeline (study/run_pipeline.hpp) measured against the reference over the error window;
 // a solver failure is a result with status `failed` and the reason, never an exception. The
-// workers share one mode cache (each mesh's eigenproblem is solved once) and ARPACK guards itself
-// (modal/), so nothing here is serialized but the cache's own look-ups.
+// workers share one mode cache (each mesh's eigenproblem is solved once) and one model cache (each
+// distinct crane model is built once and shared read-only, scene/crane_model_cache.hpp); each run
+// owns only its equations' workspace and run state. ARPACK guards itself (modal/), so nothing here
+// is serialized but the caches' own look-ups and the first build of each model.
 #pragma once
 
 #include <functional>
@@ -13,6 +15,7 @@
 
 #include "coupling/error_metrics.hpp"
 #include "distributed/farm.hpp"
+#include "scene/crane_model_cache.hpp"
 #include "scene/scene.hpp"
 #include "study/error_measure.hpp"
 #include "study/reference.hpp"
@@ -57,6 +60,10 @@ struct SweepStudy {
   double window_start = 0.0;
   std::vector<coupling::OutputChannel> judged;
   std::vector<SweepResult> results;  // in grid order (the shard's configurations only)
+  // How the runs got their models (this process): crane models built for the configurations (one
+  // per distinct model) and eigen solves (one per distinct mesh of a modal boom).
+  int models_built = 0;
+  int eigen_solves = 0;
 };
 
 // What a configuration runs against (shared, read-only, by the workers).
@@ -67,7 +74,8 @@ struct SweepSetup {
   std::vector<coupling::OutputChannel> judged;
   double duration = 0.0;
   long max_explicit_steps = 2'000'000;
-  modal::ModeCache* modes = nullptr;
+  // The shared models of *scene (its scene() equal to *scene); null: every run builds its own.
+  scene::CraneModelCache* models = nullptr;
 };
 
 // One configuration (thread-safe).

@@ -1,7 +1,8 @@
 // The accuracy–speed sweep on the distributed engine (see sweep.hpp): every process computes the
 // converged reference (the same deterministic runs), then the grid's configurations are the farm's
 // tasks — one configuration per task, keyed by its id and labels, journaled as they finish, the
-// shard's slice for array jobs. A task's record is the caller's text form of its SweepResult (the
+// shard's slice for array jobs. Each process builds each distinct model once and shares it among
+// its threads (scene/crane_model_cache.hpp). A task's record is the caller's text form of its SweepResult (the
 // CSV line), so the journal holds exactly the rows of the table.
 #include <fmt/format.h>
 
@@ -23,8 +24,9 @@ SweepOnEngine sweep_on_engine(distributed::Session& session, const scene::Scene&
     keys.push_back(fmt::format("id={} {} {}", config.id, config.choice.label(), integrator_label(config)));
   }
   const std::vector<distributed::Task> tasks = distributed::make_tasks(keys);
+  scene::CraneModelCache models(out.study.scene, &modes);  // this process's shared models
   const SweepSetup setup{&out.study.scene, &out.study.reference, out.study.window_start, out.study.judged, request.duration,
-                         request.max_explicit_steps, &modes};
+                         request.max_explicit_steps, &models};
   const distributed::WorkFunction work = [&](const distributed::Task& task) {
     try {
       return record_of(run_configuration(setup, grid[task.index]));
@@ -47,6 +49,8 @@ SweepOnEngine sweep_on_engine(distributed::Session& session, const scene::Scene&
     out.records.push_back(record_of(failed));
   }
   out.farm.outcomes.clear();
+  out.study.models_built = models.models_built();
+  out.study.eigen_solves = modes.eigen_solves();
   return out;
 }
 

@@ -1,0 +1,62 @@
+// What sharing the crane model saves a sweep (issue 12.3), per configuration: building the model of
+// a boom choice (scene::build_shared_crane with the modes already cached — what every sweep
+// configuration paid before 12.3) against making equations from a shared model (what it pays now),
+// beside the static equilibrium every configuration still solves. Reference scene, static
+// stiffening (as the sweep models it), the medium grid's largest models. docs/performance.md.
+#include <benchmark/benchmark.h>
+
+#include "coupling/static_equilibrium.hpp"
+#include "scene/crane_builder.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace {
+
+using namespace ffrf;
+
+scene::Scene bench_scene() {
+  scene::Scene scene = scene::load_scene(FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml");
+  scene.boom.stiffening = scene::Stiffening::static_load;
+  return scene;
+}
+
+scene::BoomChoice choice_of(std::int64_t index) {
+  switch (index) {
+    case 0: return {scene::BoomKind::rigid, 1};
+    case 1: return {scene::BoomKind::nodal, 16};
+    case 2: return {scene::BoomKind::nodal, 32};
+    default: return {scene::BoomKind::modal, 16, 12, true};
+  }
+}
+
+void BM_BuildModel(benchmark::State& state) {
+  const scene::Scene scene = bench_scene();
+  const scene::BoomChoice choice = choice_of(state.range(0));
+  modal::ModeCache modes;
+  (void)scene::build_shared_crane(scene, choice, &modes);  // the eigen solve, outside the timing
+  for (auto _ : state) benchmark::DoNotOptimize(scene::build_shared_crane(scene, choice, &modes));
+  state.SetLabel(choice.label());
+}
+
+void BM_EquationsFromSharedModel(benchmark::State& state) {
+  const scene::Scene scene = bench_scene();
+  const scene::BoomChoice choice = choice_of(state.range(0));
+  const auto model = scene::build_shared_crane(scene, choice);
+  for (auto _ : state) benchmark::DoNotOptimize(model->equations());
+  state.SetLabel(choice.label());
+}
+
+void BM_StaticEquilibrium(benchmark::State& state) {
+  const scene::Scene scene = bench_scene();
+  const scene::BoomChoice choice = choice_of(state.range(0));
+  auto equations = scene::build_crane(scene, choice);
+  for (auto _ : state) benchmark::DoNotOptimize(coupling::solve_static_equilibrium(*equations, equations->initial_guess()));
+  state.SetLabel(choice.label());
+}
+
+BENCHMARK(BM_BuildModel)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_EquationsFromSharedModel)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_StaticEquilibrium)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
