@@ -21,6 +21,7 @@ std::string_view to_string(FailureKind kind) {
     case FailureKind::capsize: return "capsize";
     case FailureKind::deck_submerged: return "deck submerged";
     case FailureKind::cargo_in_water: return "cargo in water";
+    case FailureKind::cargo_overturned: return "cargo overturned";
     case FailureKind::model_error: return "model error";
     case FailureKind::setup: return "set-up";
   }
@@ -80,6 +81,9 @@ std::string_view remedy(FailureKind kind) {
     case FailureKind::deck_submerged:
       return "lighten the load or shorten the outreach, enlarge the hull's depth, or reduce the wave";
     case FailureKind::cargo_in_water: return "shorten the wire, raise the boom, or reduce the crane's motion";
+    case FailureKind::cargo_overturned:
+      return "look up the cargo-pitch and hull modes with ffrf rao and move the sea's peak period away from them, "
+             "reduce the sea state or the hull's pitch (outreach, hull size), or shorten the wire";
     case FailureKind::model_error: return "check the scene's values; tighten the tolerances";
     case FailureKind::setup:
       return "check the integrator settings (tolerances, step, limits); a set-up call that fails on valid settings "
@@ -106,7 +110,8 @@ std::vector<Adjustment> adjustments(FailureKind kind) {
     case FailureKind::snap_load:
     case FailureKind::capsize:
     case FailureKind::deck_submerged:
-    case FailureKind::cargo_in_water: return {A::scene_values};
+    case FailureKind::cargo_in_water:
+    case FailureKind::cargo_overturned: return {A::scene_values};
   }
   return {};
 }

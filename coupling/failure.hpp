@@ -31,6 +31,7 @@ enum class FailureKind {
   capsize,                     // the hull pitched past 90°
   deck_submerged,              // a deck edge went under water (no green water or flooding modelled)
   cargo_in_water,              // the cargo dipped into the water (no water forces on it modelled)
+  cargo_overturned,            // the cargo pitched past the limit (90°) about its hook
   model_error,                 // the model refused a state (e.g. a hull out of the water)
   setup,                       // invalid settings or a solver set-up failure
 };
@@ -41,8 +42,8 @@ inline constexpr FailureKind all_failure_kinds[] = {
     FailureKind::newton_divergence, FailureKind::too_much_work,   FailureKind::constraint_drift,
     FailureKind::mass_not_positive_definite, FailureKind::unstable_explicit, FailureKind::wire_slack,
     FailureKind::snap_load,      FailureKind::buckling,           FailureKind::capsize,
-    FailureKind::deck_submerged, FailureKind::cargo_in_water,     FailureKind::model_error,
-    FailureKind::setup,
+    FailureKind::deck_submerged, FailureKind::cargo_in_water,     FailureKind::cargo_overturned,
+    FailureKind::model_error,    FailureKind::setup,
 };
 
 // What a user can change about a run, in neutral words.

@@ -111,6 +111,25 @@ void water_detections(const RunResult& result, const WaterLimits& water, std::ve
   }
 }
 
+// The cargo turned past the limit about its hook: the first sample beyond it and the largest |pitch|.
+void cargo_pitch_detection(const RunResult& result, double limit, std::vector<Detection>& found) {
+  constexpr double kDegree = 3.14159265358979323846 / 180.0;
+  double first = -1.0, largest = 0.0;
+  for (std::size_t k = 0; k < result.samples.size(); ++k) {
+    const double pitch = std::abs(result.samples[k].cargo.z());
+    if (pitch > limit && first < 0.0) first = result.time[k];
+    largest = std::max(largest, pitch);
+  }
+  if (first < 0.0) return;
+  found.push_back({FailureKind::cargo_overturned, first, false,
+                   format("the cargo pitched past %.0f deg about its hook at t = %.4g s (largest |pitch| %.0f deg",
+                          limit / kDegree, first, largest / kDegree) +
+                       (largest > std::acos(-1.0) ? ", over the top of the hook" : "") +
+                       "): it hangs from a frictionless pin with a lightly damped rocking mode and no slings or tag "
+                       "lines, so the record from then on is not a lift to plan with",
+                   std::string(remedy(FailureKind::cargo_overturned)), largest});
+}
+
 }  // namespace
 
 void DivergenceWatch::observe(double t, const CraneOutputs& sample) {
@@ -258,6 +277,7 @@ std::vector<Detection> post_run_detections(const RunResult& result, const Monito
                      ratio});
   }
   if (limits.water.floating) water_detections(result, limits.water, found);
+  cargo_pitch_detection(result, limits.cargo_pitch_limit, found);
   const SolverStats& stats = result.stats;
   if (stats.steps > 10 && static_cast<double>(stats.error_test_failures) > limits.error_test_failure_ratio * static_cast<double>(stats.steps)) {
     found.push_back({FailureKind::error_test_failures, result.time.empty() ? 0.0 : result.time.back(), false,

@@ -38,6 +38,7 @@ struct MonitorLimits {
   double static_tension = 0.0;            // the wire's tension at rest [N] (snap ratio); 0: unknown
   double error_test_failure_ratio = 0.3;  // warn when rejected steps exceed this fraction of steps
   WaterLimits water = {};                 // capsize, deck submerged, cargo in water
+  double cargo_pitch_limit = 1.5707963267948966;  // |cargo pitch| [rad] beyond which the cargo has overturned
 };
 
 // Watches each output sample: first a stop request (SIGINT/SIGTERM: throws coupling::Interrupted),
@@ -77,7 +78,9 @@ std::vector<SnapLoad> snap_loads(const RunResult& result, const MonitorLimits& l
 double max_constraint_drift(const RunResult& result);
 double max_buckling_load_ratio(const RunResult& result, const MonitorLimits& limits);
 // The post-run detections (non-fatal): wire slack, snap loads, constraint drift, buckling, a deck
-// edge or the cargo below the lowest wave trough (deck submerged, cargo in water), rejected steps.
+// edge or the cargo below the lowest wave trough (deck submerged, cargo in water), the cargo pitched
+// past cargo_pitch_limit about its hook (cargo overturned: the hook is a frictionless pin, the cargo's
+// rocking mode is lightly damped), rejected steps.
 std::vector<Detection> post_run_detections(const RunResult& result, const MonitorLimits& limits);
 
 }  // namespace ffrf::coupling

@@ -1,10 +1,15 @@
 // Where a straight hull edge r(s) = a + s d, s ∈ [0, 1], crosses the incident wave surface: the roots
-// of g(s) = y(s) − ζ(x(s), t), found without sampling. With the field's bounds on the surface's slope
-// and curvature (|g'| ≤ |d_y| + |d_x| r Σ a_i k_i, |g''| ≤ d_x² r Σ a_i k_i²), [0, 1] is cut into
-// intervals on which g is monotone (|g'(mid)| > half-width · max|g''|) or provably root-free
-// (|g(l)| + |g(r)| > width · max|g'| with one sign); each monotone interval with a sign change holds
-// exactly one root, found by Newton's method kept inside the bracket (bisection when a step leaves
-// it) until its step is below 1e-9 (quadratic convergence: the root is then good to round-off). Cost per evaluation of g or g': one sine and cosine per wave component.
+// of g(s) = y(s) − ζ(x(s), t), found without sampling. [0, 1] is cut into intervals on which g is
+// monotone (|g'| at an end > width · max|g''|) or provably root-free (g keeps its sign and
+// min|g(ends)| > max|g''| · width²/8, the chord's error bound; or |g(l)| + |g(r)| > width · max|g'|),
+// with max|g''| on an interval bounded LOCALLY: the larger |g''| at its ends plus width/2 · |d_x|³ r Σ a_i k_i³
+// (capped by the global d_x² r Σ a_i k_i²). The global bounds alone (Σ a k, Σ a k²) grow with the
+// component count while the surface's true slope and curvature grow with its square root, so they cut a
+// long record's keel and deck into hundreds of pieces; the local bound needs the third-derivative
+// bound only times the width. Each monotone interval with a sign change holds exactly one root,
+// found by Newton's method kept inside the bracket (bisection when a step leaves it) until its step is
+// below 1e-9 (quadratic convergence: the root is then good to round-off). Cost per evaluation of g,
+// g', g'': one sine and cosine per wave component. docs/hydrodynamics.md §7 ("Cost").
 #pragma once
 
 #include <Eigen/Dense>

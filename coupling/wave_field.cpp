@@ -81,6 +81,8 @@ WaveField WaveField::from_components(const std::vector<ComponentSpec>& component
     field.amplitude_sum_ += c.amplitude;
     field.slope_sum_ += c.amplitude * k;
     field.curvature_sum_ += c.amplitude * k * k;
+    field.third_derivative_sum_ += c.amplitude * k * k * k;
+    if (c.amplitude > 0.0) field.max_wave_number_ = std::max(field.max_wave_number_, k);
   }
   return field;
 }

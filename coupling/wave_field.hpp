@@ -59,10 +59,13 @@ class WaveField {
   double ramp(double t) const;                 // 0 for t ≤ 0, ½(1 − cos(π t / t_r)), 1 for t ≥ t_r: C¹
   double elevation(double x, double t) const;  // ζ [m]
   double elevation_slope(double x, double t) const;  // ∂ζ/∂x [-]
-  // Bounds over all x at time t: |ζ| ≤ r Σ a_i, |∂ζ/∂x| ≤ r Σ a_i k_i, |∂²ζ/∂x²| ≤ r Σ a_i k_i².
+  // Bounds over all x at time t: |ζ| ≤ r Σ a_i, |∂ζ/∂x| ≤ r Σ a_i k_i, |∂²ζ/∂x²| ≤ r Σ a_i k_i²,
+  // |∂³ζ/∂x³| ≤ r Σ a_i k_i³.
   double elevation_bound(double t) const { return ramp(t) * amplitude_sum_; }
   double slope_bound(double t) const { return ramp(t) * slope_sum_; }
   double curvature_bound(double t) const { return ramp(t) * curvature_sum_; }
+  double third_derivative_bound(double t) const { return ramp(t) * third_derivative_sum_; }
+  double max_wave_number() const { return max_wave_number_; }  // the largest k_i [1/m] (0: calm)
   // Total pressure [Pa] (the formula is only meaningful above the sea bed).
   double pressure(double x, double y, double t, double density) const;
   // f_i(y) of component i for y ≤ 0: e^{k y} or cosh(k(y + d)) / cosh(k d).
@@ -78,7 +81,8 @@ class WaveField {
   double ramp_duration_ = 0.0;  // [s]; ≤ 0 = no ramp (full amplitude from t = −∞)
   double depth_ = std::numeric_limits<double>::infinity();  // [m]; +inf = deep water
   double gravity_ = 9.81;       // [m/s²]
-  double amplitude_sum_ = 0.0, slope_sum_ = 0.0, curvature_sum_ = 0.0;
+  double amplitude_sum_ = 0.0, slope_sum_ = 0.0, curvature_sum_ = 0.0, third_derivative_sum_ = 0.0;
+  double max_wave_number_ = 0.0;
 };
 
 }  // namespace ffrf::coupling

@@ -75,6 +75,29 @@ TEST(WaterDetectors, CargoCornerDipsWhenTurned) {
   EXPECT_NE(cargo->cause.find("no water forces on the cargo"), std::string::npos);
 }
 
+TEST(WaterDetectors, CargoPitchedPastNinetyDegreesIsNamedWithWhenAndHowFar) {
+  // The cargo hangs below its hook; turned past 90° its centre rises above the hook's level. The
+  // detection gives the first sample beyond the limit and the largest |pitch| (here 341°: over the top).
+  RunResult run;
+  run.time = {0.0, 1.0, 2.0, 3.0, 4.0};
+  const double degree = std::acos(-1.0) / 180.0;
+  run.samples = {sample(-1.0, 0.0, 90.0, 0.0), sample(-1.0, 0.0, 90.0, -89.0 * degree),
+                 sample(-1.0, 0.0, 90.0, -91.0 * degree), sample(-1.0, 0.0, 90.0, 341.0 * degree),
+                 sample(-1.0, 0.0, 90.0, 10.0 * degree)};
+  const auto found = post_run_detections(run, reference_limits());
+  const Detection* over = find(found, FailureKind::cargo_overturned);
+  ASSERT_NE(over, nullptr);
+  EXPECT_EQ(over->time, 2.0);
+  EXPECT_NEAR(over->value, 341.0 * degree, 1e-12);
+  EXPECT_FALSE(over->fatal);
+  EXPECT_NE(over->cause.find("over the top of the hook"), std::string::npos) << over->cause;
+  EXPECT_FALSE(over->remedy.empty());
+  // 89° is within the limit: no detection.
+  run.samples = {sample(-1.0, 0.0, 90.0, 0.0), sample(-1.0, 0.0, 90.0, 89.0 * degree)};
+  run.time = {0.0, 1.0};
+  EXPECT_EQ(find(post_run_detections(run, reference_limits()), FailureKind::cargo_overturned), nullptr);
+}
+
 TEST(WaterDetectors, CapsizeStopsTheRun) {
   DivergenceWatch watch(reference_limits(), "TEST");
   EXPECT_NO_THROW(watch.observe(0.0, sample(-1.0, 1.5, 90.0, 0.0)));  // 86°: not yet (the deck check is post-run)

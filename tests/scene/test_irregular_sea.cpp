@@ -76,6 +76,31 @@ TEST(IrregularSea, ShippedSceneLoadsTheJonswapKeys) {
   EXPECT_DOUBLE_EQ(wave_ramp_duration(scene), 16.0);
 }
 
+TEST(IrregularSea, ShippedBemSceneIsTheSameSeaOnTheBargeItsCoefficientsBelongTo) {
+  // cases/irregular_bem_barge_crane.toml: the sea of cases/irregular_sea_crane.toml (compared key by
+  // key, and the synthesized components one by one), on the 80 m × 10 m barge of the WAMIT fixture
+  // (tests/hydro/data/README.md), with the Cummins convolution and the BEM excitation.
+  const Scene reference = load_scene(FFRF_SOURCE_DIR "/cases/irregular_sea_crane.toml");
+  const Scene scene = load_scene(FFRF_SOURCE_DIR "/cases/irregular_bem_barge_crane.toml");
+  ASSERT_TRUE(scene.sea.has_value());
+  ASSERT_TRUE(scene.bem.has_value());
+  ASSERT_TRUE(scene.hull.has_value());
+  EXPECT_TRUE(scene.warnings.empty());
+  EXPECT_EQ(scene.hull->length, 80.0);
+  EXPECT_EQ(scene.hull->width, 10.0);
+  EXPECT_EQ(scene.bem->radiation_model, hydro::RadiationKind::convolution);
+  EXPECT_EQ(scene.bem->excitation, ExcitationModel::bem);
+  EXPECT_TRUE(scene.bem->excitation_table.has_value());
+  EXPECT_EQ(scene.simulation.duration, reference.simulation.duration);
+  const hydro::WaveComponents sea = sea_components(scene), expected = sea_components(reference);
+  ASSERT_EQ(sea.frequency.size(), expected.frequency.size());
+  for (std::size_t i = 0; i < sea.frequency.size(); ++i) {
+    EXPECT_EQ(sea.frequency[i], expected.frequency[i]);
+    EXPECT_EQ(sea.amplitude[i], expected.amplitude[i]);
+    EXPECT_EQ(sea.phase[i], expected.phase[i]);
+  }
+}
+
 TEST(IrregularSea, WaveFieldElevationIsTheSynthesisInBothHeadings) {
   for (const char* heading : {"following", "head"}) {
     const Scene scene = load_scene_text(
