@@ -1,6 +1,7 @@
 // Running the sweep's configurations against one reference, in parallel (see sweep.hpp).
 #include "study/sweep.hpp"
 
+#include "study/radiation_compare.hpp"
 #include "study/recommend_reasoning.hpp"
 
 #include <fmt/format.h>
@@ -34,7 +35,11 @@ std::string_view to_string(RunStatus status) {
 SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config) {
   SweepResult r;
   r.config = config;
-  const scene::Scene& scene = *setup.scene;
+  // The configuration's radiation model (issue 15.2): a copy of the scene with it; a model cache
+  // shared between configurations must key on it.
+  std::optional<scene::Scene> configured;
+  if (config.radiation) configured = with_radiation(*setup.scene, *config.radiation);
+  const scene::Scene& scene = configured ? *configured : *setup.scene;
   const double output_interval = scene.simulation.output_interval;
   try {
     DynamicsRequest request;
@@ -85,6 +90,7 @@ SweepStudy sweep_reference(const scene::Scene& scene, const SweepRequest& reques
   study.stiffening = request.stiffening.value_or(physics_stiffening(scene, request.tolerance));
   study.scene = scene;
   study.scene.boom.stiffening = study.stiffening;
+  if (request.radiation_axis) study.scene = with_radiation(study.scene, hydro::RadiationKind::convolution);
   study.reference = converged_reference(study.scene, request.reference, request.duration, modes);
   study.window_start = error_window(study.scene, request.duration);
   study.judged = judged_outputs(study.scene);
@@ -93,7 +99,7 @@ SweepStudy sweep_reference(const scene::Scene& scene, const SweepRequest& reques
 
 std::vector<SweepConfig> sweep_configurations(const SweepRequest& request) {
   std::vector<SweepConfig> configs;
-  for (const SweepConfig& config : sweep_grid(request.grid)) {
+  for (const SweepConfig& config : sweep_grid(request.grid, request.radiation_axis)) {
     if (request.shard.contains(config)) configs.push_back(config);
   }
   return configs;
