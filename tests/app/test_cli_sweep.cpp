@@ -221,7 +221,10 @@ TEST(CliSweepRadiation, ABemSceneCrossesTheGridWithTheRadiationModels) {
   const std::size_t radiation = csv.column("radiation");
   const std::vector<std::string> expected{"constant", "convolution", "state-space", "constant"};
   for (std::size_t i = 0; i < csv.rows.size(); ++i) EXPECT_EQ(csv.rows[i].at(radiation), expected[i]) << csv.ids()[i];
-  EXPECT_NE(r.out.find("Cheapest radiation model that passes: "), std::string::npos) << r.out;
+  // Constant A, B misses the barge's frequency-dependent damping by ~20 % (far beyond τ = 1 %), the
+  // state-space fit is within its e_r ≈ 2 %: the cheapest passing configuration is id 40's state-space.
+  EXPECT_NE(r.out.find("Cheapest radiation model that passes: state-space"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("constant: none passes"), std::string::npos) << r.out;
   const std::string report = read_text(out / "report.md");
   EXPECT_NE(report.find("convolution radiation"), std::string::npos);
   EXPECT_TRUE(fs::exists(out / "radiation.dat"));
