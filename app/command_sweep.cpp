@@ -122,6 +122,8 @@ int run_sweep(const SweepOptions& options) {
   if (!scene) return exit_bad_input;
   try {
     apply_radiation_option(*scene, options.radiation);
+    // A [bem] scene: the radiation models are an axis of the grid, unless --radiation fixes one.
+    request.radiation_axis = scene->bem.has_value() && options.radiation.empty();
     request.stiffening = stiffening_option(options.stiffening);
     request.tolerance = parse_tolerance(options.tolerance);
     study::validate(request.reference);
@@ -148,11 +150,11 @@ int run_sweep(const SweepOptions& options) {
   farm.output_directory = journal_dir;
   farm.study = fmt::format("ffrf sweep {} --{}", options.scene, study::to_string(request.grid));
   farm.settings = fmt::format("{}\n{}\ngrid={} duration={:.17g} reference={} {:.17g} {:.17g} {} stiffening={} tolerance={:.17g} "
-                              "max_explicit_steps={}\n",
+                              "max_explicit_steps={} radiation={}\n",
                               version_text(), read_file(options.scene), study::to_string(request.grid), request.duration,
                               request.reference.start_elements, request.reference.start_relative_tolerance,
                               request.reference.bound, request.reference.max_levels, options.stiffening, request.tolerance,
-                              request.max_explicit_steps);
+                              request.max_explicit_steps, request.radiation_axis ? "axis" : options.radiation);
   farm.threads = options.jobs;
   farm.progress_label = "sweep configurations";
   study::SweepOnEngine result;

@@ -74,6 +74,14 @@ Thresholds threshold_lines(const SweepFacts& facts) {
   return t;
 }
 
+// The letter marking a run's radiation model on the chart (a sweep of a [bem] scene).
+std::string radiation_letter(const std::string& radiation) {
+  if (radiation == "constant") return "C";
+  if (radiation == "state-space") return "S";
+  if (radiation == "convolution") return "V";
+  return "?";
+}
+
 }  // namespace
 
 std::string pareto_label(const SweepRow& row) {
@@ -84,7 +92,7 @@ std::string pareto_label(const SweepRow& row) {
   std::string integrator = row.integrator == "generalized-alpha" ? "gα" : row.integrator;
   if (row.rtol && !row.step) integrator += fmt::format(" {:.0e}", *row.rtol);
   if (row.step) integrator += fmt::format(" h={:.2g}s", *row.step);
-  return fmt::format("#{} {} {}", row.id, model, integrator);
+  return fmt::format("#{} {} {}{}", row.id, model, integrator, row.radiation.empty() ? "" : " " + radiation_letter(row.radiation));
 }
 
 std::string pareto_data(const std::vector<SweepRow>& rows) {
@@ -127,6 +135,19 @@ void draw_sweep_charts(const StagedDirectory& out, const std::vector<SweepRow>& 
   if (!(wall_high > 0.0)) wall_low = wall_high = 1.0;  // no ok run: an empty chart on a valid range
   out.write("accuracy_speed.dat", points);
   out.write("pareto.dat", pareto_data(rows));
+  // A sweep crossed with the radiation models: each point also carries its model's letter.
+  std::string letters = "# wall_s worst_nrms radiation_letter (C constant, S state-space, V convolution)\n";
+  bool radiation_axis = false;
+  for (const SweepRow& row : rows) {
+    if (!row.ok() || *row.worst <= 0.0 || row.radiation.empty()) continue;
+    radiation_axis = true;
+    letters += fmt::format("{} {} {}\n", *row.wall, *row.worst, radiation_letter(row.radiation));
+  }
+  if (radiation_axis) out.write("radiation.dat", letters);
+  const std::string radiation_plot =
+      radiation_axis ? ", \\\n     'radiation.dat' using 1:2:3 with labels offset 0,0.9 font ',8' textcolor rgb '#444444' "
+                       "title 'radiation model: C constant, S state-space, V convolution'"
+                     : "";
   std::string keys;
   for (const Style& f : families) {
     keys += fmt::format(", \\\n     keyentry with points pt 7 ps 1.5 lc rgb '{}' title '{}'", f.colour, f.name);
@@ -150,8 +171,8 @@ void draw_sweep_charts(const StagedDirectory& out, const std::vector<SweepRow>& 
       "plot 'accuracy_speed.dat' using 1:2:3:4 with points pt variable ps 1.3 lc rgb variable notitle, \\\n"
       "     'pareto.dat' using 1:2 with steps lw 2 lc rgb '#d62728' title 'Pareto front', \\\n"
       "     'pareto.dat' using 1:2 with points pt 6 ps 2.6 lw 1.5 lc rgb '#d62728' notitle, \\\n"
-      "     'pareto.dat' using 1:5:3 with labels boxed left offset 1.6,0 font ',8' noenhanced notitle{}{}\n",
-      subtitle, wall_low / 1.3, wall_high * 6.0, thresholds.keys, keys);
+      "     'pareto.dat' using 1:5:3 with labels boxed left offset 1.6,0 font ',8' noenhanced notitle{}{}{}\n",
+      subtitle, wall_low / 1.3, wall_high * 6.0, radiation_plot, thresholds.keys, keys);
   out.write("accuracy_speed.gp", script);
   run_gnuplot(out.staging(), "accuracy_speed.gp");
 

@@ -40,7 +40,7 @@ std::string sweep_csv_header() {
   for (const auto channel : coupling::all_channels) {
     h += fmt::format(",{}_max_{}", coupling::channel_name(channel), unit_slug(display_unit(channel)));
   }
-  return h + ",daf_error,worst_nrms,steps,state_size,work,rhs_evaluations,jacobian_evaluations,newton_iterations,status,reason,wall_s\n";
+  return h + ",daf_error,worst_nrms,steps,state_size,work,rhs_evaluations,jacobian_evaluations,newton_iterations,status,reason,wall_s,radiation\n";
 }
 
 std::string sweep_csv_line(const study::SweepResult& r) {
@@ -67,16 +67,17 @@ std::string sweep_csv_line(const study::SweepResult& r) {
   } else {
     line += ",,,,,,";
   }
-  line += fmt::format(",{},{},{}\n", study::to_string(r.status), r.reason.empty() ? std::string() : quoted(r.reason),
-                      ok ? number(r.stats.wall_seconds) : std::string());
+  line += fmt::format(",{},{},{},{}\n", study::to_string(r.status), r.reason.empty() ? std::string() : quoted(r.reason),
+                      ok ? number(r.stats.wall_seconds) : std::string(), study::radiation_name(c));
   return line;
 }
 
 
 std::string SweepRow::settings() const {
-  if (integrator == "arkode" && step && !rtol) return fmt::format("arkode h {:.3g} s", *step);
-  if (step) return fmt::format("{} h {:g} s", integrator, *step);
-  return fmt::format("{} rtol {:g}", integrator, rtol.value_or(0.0));
+  const std::string hull = radiation.empty() ? std::string() : ", " + radiation + " radiation";
+  if (integrator == "arkode" && step && !rtol) return fmt::format("arkode h {:.3g} s{}", *step, hull);
+  if (step) return fmt::format("{} h {:g} s{}", integrator, *step, hull);
+  return fmt::format("{} rtol {:g}{}", integrator, rtol.value_or(0.0), hull);
 }
 
 std::vector<std::string> split_csv_line(const std::string& line) {
@@ -143,6 +144,7 @@ std::vector<SweepRow> read_sweep_csv(const std::string& text, const std::string&
       row.status = f[column("status")];
       row.reason = f[column("reason")];
       row.wall = optional_number(f[column("wall_s")]);
+      row.radiation = f[column("radiation")];
     } catch (const std::logic_error&) {
       throw std::runtime_error(fmt::format("{}:{}: a malformed number", name, line_number));
     }

@@ -21,6 +21,7 @@ std::string sweep_csv_line(const study::SweepResult& result);
 struct SweepRow {
   int id = 0;
   std::string model, family, integrator, status, reason;
+  std::string radiation;                              // "constant", "state-space", "convolution"; empty: the scene's
   int elements = 0, modes = 0;
   bool static_modes = false;
   std::optional<double> rtol, step;
@@ -31,7 +32,7 @@ struct SweepRow {
   double work() const { return static_cast<double>(steps) * state_size; }  // steps × state size
   std::string line;                                   // the CSV line as written, with '\n'
   bool ok() const { return status == "ok" && worst && wall; }
-  std::string settings() const;                       // "cvode rtol 1e-06", "generalized-alpha h 0.01 s"
+  std::string settings() const;  // "cvode rtol 1e-06", "generalized-alpha h 0.01 s", "…, state-space radiation"
 };
 
 // Splits one CSV line (no trailing newline) into fields; "..." quoting with "" for a quote.

@@ -91,6 +91,34 @@ std::vector<study::MeasuredModel> measured_rows(const std::vector<SweepRow>& row
   return measured;
 }
 
+namespace {
+// A sweep crossed with the radiation models (a [bem] scene, issue 15.2): the radiation model of
+// the cheapest passing configuration, and per model its cheapest passing configuration.
+std::string radiation_verdict(const std::vector<SweepRow>& rows, const study::Verdict& verdict) {
+  std::vector<std::string> kinds;
+  for (const SweepRow& row : rows) {
+    if (!row.radiation.empty() && std::find(kinds.begin(), kinds.end(), row.radiation) == kinds.end()) kinds.push_back(row.radiation);
+  }
+  if (kinds.empty()) return {};
+  if (!verdict.cheapest) return " No radiation model passes.";
+  std::string per_model;
+  for (const std::string& kind : kinds) {
+    const SweepRow* cheapest = nullptr;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      if (rows[i].radiation == kind && verdict.models[i].passed && (cheapest == nullptr || rows[i].work() < cheapest->work())) {
+        cheapest = &rows[i];
+      }
+    }
+    per_model += fmt::format("{}{}: {}", per_model.empty() ? "" : "; ", kind,
+                             cheapest != nullptr ? fmt::format("{}, {} (work {:.3g})", cheapest->model, cheapest->settings(),
+                                                               cheapest->work())
+                                                 : std::string("none passes"));
+  }
+  return fmt::format(" Cheapest radiation model that passes: {} (cheapest passing per radiation model — {}).",
+                     rows[*verdict.cheapest].radiation, per_model);
+}
+}  // namespace
+
 study::Verdict sweep_verdict(const std::vector<SweepRow>& rows, const SweepFacts& facts) {
   return study::judge(measured_rows(rows), facts.reference_wall_seconds, facts.reference_work, facts.tolerance);
 }
@@ -109,6 +137,7 @@ std::string sweep_verdict_sentence(const std::vector<SweepRow>& rows, const Swee
     if (passing.count(best->model) == 0) never += fmt::format("{}{} ({:.3g})", never.empty() ? "" : ", ", best->model, *best->worst);
   }
   if (!never.empty()) s += " Fail at every setting (best error): " + never + ".";
+  s += radiation_verdict(rows, verdict);
   std::size_t not_ok = 0;
   for (const SweepRow& row : rows) not_ok += row.ok() ? 0 : 1;
   if (not_ok > 0) s += fmt::format(" {} run{} failed or {} skipped.", not_ok, not_ok == 1 ? "" : "s", not_ok == 1 ? "was" : "were");

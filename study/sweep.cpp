@@ -1,6 +1,7 @@
 // Running the sweep's configurations against one reference, in parallel (see sweep.hpp).
 #include "study/sweep.hpp"
 
+#include "study/radiation_compare.hpp"
 #include "study/recommend_reasoning.hpp"
 
 #include <fmt/format.h>
@@ -34,7 +35,10 @@ std::string_view to_string(RunStatus status) {
 SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config) {
   SweepResult r;
   r.config = config;
-  const scene::Scene& scene = *setup.scene;
+  // The configuration's radiation model (issue 15.2): a copy of the scene with it.
+  std::optional<scene::Scene> configured;
+  if (config.radiation) configured = with_radiation(*setup.scene, *config.radiation);
+  const scene::Scene& scene = configured ? *configured : *setup.scene;
   const double output_interval = scene.simulation.output_interval;
   try {
     DynamicsRequest request;
@@ -43,7 +47,11 @@ SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config
     request.duration = setup.duration;
     if (config.step > 0.0) r.step = request.fixed_step = dividing_step(config.step, output_interval);
     coupling::IntegratorSettings settings = integrator_settings(scene, request);
-    PreparedRun prepared = setup.models != nullptr ? prepare_run(*setup.models, config.choice) : prepare_run(scene, config.choice);
+    // The shared models are the study scene's (its radiation): a configuration with a radiation model
+    // of its own builds its model from its scene, still with the shared modes (one eigen solve a mesh).
+    PreparedRun prepared = configured ? prepare_run(scene, config.choice, setup.models != nullptr ? &setup.models->modes() : nullptr)
+                           : setup.models != nullptr ? prepare_run(*setup.models, config.choice)
+                                                     : prepare_run(scene, config.choice);
     if (config.integrator == coupling::Integrator::arkode) {
       r.stable_step = coupling::explicit_stable_step(*prepared.equations, prepared.initial_state);
       const double h = config.stability_factor > 0.0 ? config.stability_factor * r.stable_step : r.stable_step;
@@ -85,6 +93,7 @@ SweepStudy sweep_reference(const scene::Scene& scene, const SweepRequest& reques
   study.stiffening = request.stiffening.value_or(physics_stiffening(scene, request.tolerance));
   study.scene = scene;
   study.scene.boom.stiffening = study.stiffening;
+  if (request.radiation_axis) study.scene = with_radiation(study.scene, hydro::RadiationKind::convolution);
   study.reference = converged_reference(study.scene, request.reference, request.duration, modes);
   study.window_start = error_window(study.scene, request.duration);
   study.judged = judged_outputs(study.scene);
@@ -93,7 +102,7 @@ SweepStudy sweep_reference(const scene::Scene& scene, const SweepRequest& reques
 
 std::vector<SweepConfig> sweep_configurations(const SweepRequest& request) {
   std::vector<SweepConfig> configs;
-  for (const SweepConfig& config : sweep_grid(request.grid)) {
+  for (const SweepConfig& config : sweep_grid(request.grid, request.radiation_axis)) {
     if (request.shard.contains(config)) configs.push_back(config);
   }
   return configs;

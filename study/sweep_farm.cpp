@@ -18,10 +18,11 @@ SweepOnEngine sweep_on_engine(distributed::Session& session, const scene::Scene&
   modal::ModeCache modes;
   SweepOnEngine out;
   out.study = sweep_reference(scene, request, &modes);
-  const std::vector<SweepConfig> grid = sweep_grid(request.grid);
+  const std::vector<SweepConfig> grid = sweep_grid(request.grid, request.radiation_axis);
   std::vector<std::string> keys;
   for (const SweepConfig& config : grid) {
-    keys.push_back(fmt::format("id={} {} {}", config.id, config.choice.label(), integrator_label(config)));
+    keys.push_back(fmt::format("id={} {} {}{}", config.id, config.choice.label(), integrator_label(config),
+                               config.radiation ? " radiation " + radiation_name(config) : std::string()));
   }
   const std::vector<distributed::Task> tasks = distributed::make_tasks(keys);
   scene::CraneModelCache models(out.study.scene, &modes);  // this process's shared models

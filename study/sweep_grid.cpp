@@ -70,11 +70,11 @@ std::string grid_description(SweepGrid grid) {
   return text;
 }
 
-std::vector<SweepConfig> sweep_grid(SweepGrid grid) {
+std::vector<SweepConfig> sweep_grid(SweepGrid grid, bool radiation_axis) {
   const GridSpec s = spec(grid);
   std::vector<SweepConfig> configs;
   auto add = [&](const BoomChoice& choice, Integrator integrator, double rtol, double step, double factor) {
-    configs.push_back({static_cast<int>(configs.size()), choice, integrator, rtol, step, factor});
+    configs.push_back({static_cast<int>(configs.size()), choice, integrator, rtol, step, factor, std::nullopt});
   };
   const std::vector<BoomChoice> list = models(s);
   for (const BoomChoice& choice : list) {
@@ -86,7 +86,22 @@ std::vector<SweepConfig> sweep_grid(SweepGrid grid) {
   }
   // The quick grid's one configuration that must fail: explicit RK past its stability limit.
   if (s.erk_factors.empty()) add(list.front(), Integrator::arkode, 0.0, 0.0, 2.0);
-  return configs;
+  if (!radiation_axis) return configs;
+  std::vector<SweepConfig> crossed;
+  for (const SweepConfig& config : configs) {
+    for (const auto kind : {hydro::RadiationKind::constant, hydro::RadiationKind::state_space,
+                            hydro::RadiationKind::convolution}) {
+      SweepConfig c = config;
+      c.id = static_cast<int>(crossed.size());
+      c.radiation = kind;
+      crossed.push_back(c);
+    }
+  }
+  return crossed;
+}
+
+std::string radiation_name(const SweepConfig& config) {
+  return config.radiation ? std::string(hydro::to_string(*config.radiation)) : std::string();
 }
 
 std::string model_family(const BoomChoice& choice) {

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "hydro/radiation_memory.hpp"
 #include "scene/crane_builder.hpp"
 #include "coupling/simulation.hpp"
 
@@ -25,10 +26,16 @@ struct SweepConfig {
   double rtol = 0.0;               // 0: none (fixed-step explicit RK)
   double step = 0.0;               // fixed step [s] (generalized-α); 0: adaptive or by stability_factor
   double stability_factor = 0.0;   // > 0: ARKODE fixed step = factor × the explicit stability limit
+  // The hull's radiation model (a scene with [bem], issue 15.2); empty: the scene's own.
+  std::optional<hydro::RadiationKind> radiation;
 };
 
-// Every configuration of the grid, ids 0, 1, 2, ... in order.
-std::vector<SweepConfig> sweep_grid(SweepGrid grid);
+// Every configuration of the grid, ids 0, 1, 2, ... in order. With `radiation_axis` (a scene with
+// [bem]) every boom/integrator configuration is crossed with the three radiation models
+// (constant, state-space, convolution: consecutive ids); without it the ids are those of the plain grid.
+std::vector<SweepConfig> sweep_grid(SweepGrid grid, bool radiation_axis = false);
+// "constant", "state-space", "convolution"; empty when the configuration keeps the scene's model.
+std::string radiation_name(const SweepConfig& config);
 
 // "rigid", "nodal", "modal", "modal+static": the marker style of the charts.
 std::string model_family(const scene::BoomChoice& choice);

@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 
 study::SweepResult ok_result(int id, double worst, double wall) {
   study::SweepResult r;
-  r.config = {id, {scene::BoomKind::modal, 16, 2, true}, coupling::Integrator::cvode, 1e-6, 0.0, 0.0};
+  r.config = {id, {scene::BoomKind::modal, 16, 2, true}, coupling::Integrator::cvode, 1e-6, 0.0, 0.0, std::nullopt};
   for (std::size_t c = 0; c < r.errors.channels.size(); ++c) {
     r.errors.channels[c].normalized_rms = worst * std::pow(0.5, static_cast<double>(c));
     r.errors.channels[c].max_abs = 0.1 + static_cast<double>(c) / 3.0;  // 1/3: needs every digit to round-trip
@@ -42,7 +42,7 @@ study::SweepResult ok_result(int id, double worst, double wall) {
 TEST(SweepCsv, RowsReadBackExactlyFailuresHaveEmptyCellsAndTheirReason) {
   study::SweepResult ok = ok_result(3, 1.0 / 3.0, 0.125);
   study::SweepResult failed;
-  failed.config = {4, {scene::BoomKind::rigid, 1}, coupling::Integrator::arkode, 0.0, 0.0, 2.0};
+  failed.config = {4, {scene::BoomKind::rigid, 1}, coupling::Integrator::arkode, 0.0, 0.0, 2.0, std::nullopt};
   failed.status = study::RunStatus::failed;
   failed.reason = "ARKODE: unstable, \"h = 2x\", step too large\nsecond line";
   failed.errors.channels[0].normalized_rms = NAN;  // never written for a failed row

@@ -85,7 +85,7 @@ study::SweepResult result(int id, scene::BoomChoice choice, coupling::Integrator
                           long steps, int state_size) {
   study::SweepResult r;
   r.config = {id, choice, integrator, integrator == coupling::Integrator::generalized_alpha ? 0.0 : 1e-6,
-              integrator == coupling::Integrator::generalized_alpha ? 0.01 : 0.0, 0.0};
+              integrator == coupling::Integrator::generalized_alpha ? 0.01 : 0.0, 0.0, std::nullopt};
   if (integrator == coupling::Integrator::generalized_alpha) r.step = 0.01;
   for (auto& e : r.errors.channels) e.normalized_rms = worst;
   r.worst = {worst, coupling::OutputChannel::cargo_heave};

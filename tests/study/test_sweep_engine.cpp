@@ -16,10 +16,11 @@
 namespace ffrf::study {
 namespace {
 
-// The CSV line without its last field (wall_s, the timing column).
+// The CSV line without its timing field (wall_s, the last but one; radiation is the last).
 std::string without_timing(const std::string& line) {
-  const std::size_t comma = line.rfind(',');
-  return line.substr(0, comma);
+  const std::size_t last = line.rfind(',');
+  const std::size_t timing = line.rfind(',', last - 1);
+  return line.substr(0, timing) + line.substr(last);
 }
 
 std::vector<std::string> threaded_rows(const scene::Scene& scene, const SweepRequest& request) {
