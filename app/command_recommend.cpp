@@ -37,10 +37,7 @@ struct RecommendOptions {
 // "cargo_heave,wire_tension" → the channels; throws BadOption naming an unknown one.
 std::vector<coupling::OutputChannel> parse_outputs(const std::string& text) {
   std::string names;
-  for (const auto channel : coupling::all_channels) {
-    if (!names.empty()) names += ',';
-    names += coupling::channel_name(channel);
-  }
+  for (const auto channel : coupling::all_channels) names += (names.empty() ? "" : ",") + std::string(coupling::channel_name(channel));
   std::vector<coupling::OutputChannel> outputs;
   std::stringstream stream(text);
   for (std::string item; std::getline(stream, item, ',');) {

@@ -70,10 +70,7 @@ std::optional<std::string> output_column(const std::string& name) {
 
 std::string output_columns() {
   std::string list;
-  for (const SeriesSpec& spec : crane_series()) {
-    if (!list.empty()) list += ", ";
-    list += spec.column;
-  }
+  for (const SeriesSpec& spec : crane_series()) list += (list.empty() ? "" : ", ") + std::string(spec.column);
   return list;
 }
 

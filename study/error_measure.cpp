@@ -23,10 +23,7 @@ std::vector<coupling::OutputChannel> judged_outputs(const scene::Scene& scene) {
 
 std::string output_list(const std::vector<coupling::OutputChannel>& outputs) {
   std::string s;
-  for (const auto channel : outputs) {
-    if (!s.empty()) s += ',';
-    s += coupling::channel_name(channel);
-  }
+  for (const auto channel : outputs) s += (s.empty() ? "" : ",") + std::string(coupling::channel_name(channel));
   return s;
 }
 
