@@ -17,6 +17,7 @@
 
 #include "coupling/erk_stability_region.hpp"
 #include "coupling/simulation.hpp"
+#include "coupling/solver_steps.hpp"
 #include "coupling/sundials_support.hpp"
 
 namespace ffrf::coupling {
@@ -24,6 +25,8 @@ namespace {
 
 constexpr double energy_growth_bound = 1e6;
 constexpr const char* solver_name = "ARKODE ERK";
+const sundials::SolverCalls erk_calls{ERKStepGetNumSteps,  ERKStepSetMaxNumSteps,    ERKStepGetCurrentStep,
+                                      ERKStepGetRootInfo,  ERKStepGetReturnFlagName, {ARK_TOO_MUCH_WORK, ARK_ERR_FAILURE, ARK_CONV_FAILURE}};
 
 struct ErkData {
   CraneEquations* equations;
@@ -184,32 +187,19 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
       data.energy_bound = energy_growth_bound * data.energy_reference;
     }
   };
-  long steps = 0;
+  const sundials::SolverSteps steps(erk, erk_calls, settings);
   sundials::sample_outputs_keeping_partial(
       result, settings, solver_name, ARK_ROOT_RETURN,
       [&](double t_out, double& t) {
-        ERKStepGetNumSteps(erk, &steps);
-        const long allowed = sundials::call_step_limit(settings, steps);
-        if (allowed == 0) return ARK_TOO_MUCH_WORK;
-        ERKStepSetMaxNumSteps(erk, allowed);
+        if (!steps.allow_call()) return ARK_TOO_MUCH_WORK;
         return ERKStepEvolve(erk, t_out, y.v, &t, ARK_NORMAL);
       },
-      [&] {
-        int direction = 0;
-        ERKStepGetRootInfo(erk, &direction);
-        return direction;
-      },
+      [&] { return steps.root_direction(); },
       [&](int flag, double t) {
         if (flag == ARK_POSTPROCESS_STEP_FAIL && !guard.failed()) throw unstable(data.diverged_time, data.diverged_energy);
         guard.rethrow(t);
         if (fixed && flag != ARK_TOO_MUCH_WORK) throw unstable(t, std::numeric_limits<double>::infinity());
-        double last_step = 0.0;
-        ERKStepGetNumSteps(erk, &steps);
-        result.stats.steps = steps;  // the partial result's statistics
-        ERKStepGetCurrentStep(erk, &last_step);
-        SolverFailure failure = sundials::solver_failure(solver_name, settings, flag,
-                                                         sundials::flag_name(ERKStepGetReturnFlagName(flag)) + message.suffix(),
-                                                         {ARK_TOO_MUCH_WORK, ARK_ERR_FAILURE, ARK_CONV_FAILURE}, steps, last_step, t);
+        SolverFailure failure = steps.failure(solver_name, flag, t, message.suffix(), result.stats);
         if (failure.kind() != FailureKind::too_much_work) throw failure;
         // Explicit RK on a stiff model takes steps bounded by stability, not accuracy: say which.
         char remedy[400];

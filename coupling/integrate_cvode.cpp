@@ -18,6 +18,7 @@
 
 #include "coupling/second_order_newton.hpp"
 #include "coupling/simulation.hpp"
+#include "coupling/solver_steps.hpp"
 #include "coupling/sundials_support.hpp"
 
 namespace ffrf::coupling {
@@ -111,29 +112,17 @@ RunResult integrate_minimal(CraneEquations& equations, const Eigen::VectorXd& z0
     }
     watch.observe(t, result.samples.back());
   };
-  long steps = 0;
+  const sundials::SolverSteps steps(cvode, sundials::cvode_calls, settings);
   sundials::sample_outputs_keeping_partial(
       result, settings, "cvode", CV_ROOT_RETURN,
       [&](double t_out, double& t) {
-        CVodeGetNumSteps(cvode, &steps);
-        const long allowed = sundials::call_step_limit(settings, steps);
-        if (allowed == 0) return CV_TOO_MUCH_WORK;
-        CVodeSetMaxNumSteps(cvode, allowed);
+        if (!steps.allow_call()) return CV_TOO_MUCH_WORK;
         return CVode(cvode, t_out, y.v, &t, CV_NORMAL);
       },
-      [&] {
-        int direction = 0;
-        CVodeGetRootInfo(cvode, &direction);
-        return direction;
-      },
+      [&] { return steps.root_direction(); },
       [&](int flag, double t) {
         guard.rethrow(t);
-        double last_step = 0.0;
-        CVodeGetNumSteps(cvode, &steps);
-        result.stats.steps = steps;  // the partial result's statistics
-        CVodeGetCurrentStep(cvode, &last_step);
-        throw sundials::solver_failure("CVODE", settings, flag, sundials::flag_name(CVodeGetReturnFlagName(flag)) + message.suffix(),
-                                       {CV_TOO_MUCH_WORK, CV_ERR_FAILURE, CV_CONV_FAILURE}, steps, last_step, t);
+        throw steps.failure("CVODE", flag, t, message.suffix(), result.stats);
       },
       record, result.wire_events);
 

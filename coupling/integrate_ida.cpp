@@ -17,12 +17,15 @@
 #include "coupling/constrained_newton.hpp"
 #include "coupling/ida_newton.hpp"
 #include "coupling/simulation.hpp"
+#include "coupling/solver_steps.hpp"
 #include "coupling/sundials_support.hpp"
 
 namespace ffrf::coupling {
 namespace {
 
 constexpr int constraints = CraneEquations::constraint_count;
+const sundials::SolverCalls ida_calls{IDAGetNumSteps,  IDASetMaxNumSteps,    IDAGetCurrentStep,
+                                     IDAGetRootInfo,  IDAGetReturnFlagName, {IDA_TOO_MUCH_WORK, IDA_ERR_FAIL, IDA_CONV_FAIL}};
 
 struct DaeData {
   CraneEquations* equations;
@@ -139,29 +142,17 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
     result.samples.push_back(equations.full_outputs(t, state.head(n), state.segment(n, n), lambda));
     watch.observe(t, result.samples.back());
   };
-  long steps = 0;
+  const sundials::SolverSteps steps(ida, ida_calls, settings);
   sundials::sample_outputs_keeping_partial(
       result, settings, "ida", IDA_ROOT_RETURN,
       [&](double t_out, double& t) {
-        IDAGetNumSteps(ida, &steps);
-        const long allowed = sundials::call_step_limit(settings, steps);
-        if (allowed == 0) return IDA_TOO_MUCH_WORK;
-        IDASetMaxNumSteps(ida, allowed);
+        if (!steps.allow_call()) return IDA_TOO_MUCH_WORK;
         return IDASolve(ida, t_out, &t, y.v, y_dot.v, IDA_NORMAL);
       },
-      [&] {
-        int direction = 0;
-        IDAGetRootInfo(ida, &direction);
-        return direction;
-      },
+      [&] { return steps.root_direction(); },
       [&](int flag, double t) {
         guard.rethrow(t);
-        double last_step = 0.0;
-        IDAGetNumSteps(ida, &steps);
-        result.stats.steps = steps;  // the partial result's statistics
-        IDAGetCurrentStep(ida, &last_step);
-        throw sundials::solver_failure("IDA", settings, flag, sundials::flag_name(IDAGetReturnFlagName(flag)) + message.suffix(),
-                                       {IDA_TOO_MUCH_WORK, IDA_ERR_FAIL, IDA_CONV_FAIL}, steps, last_step, t);
+        throw steps.failure("IDA", flag, t, message.suffix(), result.stats);
       },
       record, result.wire_events);
 

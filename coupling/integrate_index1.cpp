@@ -21,6 +21,7 @@
 #include <string>
 
 #include "coupling/simulation.hpp"
+#include "coupling/solver_steps.hpp"
 #include "coupling/sundials_support.hpp"
 
 namespace ffrf::coupling {
@@ -272,35 +273,24 @@ RunResult integrate_index1(CraneEquations& equations, const Eigen::VectorXd& z0,
     result.samples.push_back(equations.full_outputs(t, s.head(n), s.tail(n), data.lambda));
     watch.observe(t, result.samples.back());
   };
-  long steps = 0;
+  const sundials::SolverSteps steps(cvode, sundials::cvode_calls, settings);
   sundials::sample_outputs_keeping_partial(
       result, settings, label.c_str(), CV_ROOT_RETURN,
       [&](double t_out, double& t) {
-        CVodeGetNumSteps(cvode, &steps);
-        const long allowed = sundials::call_step_limit(settings, steps);
-        if (allowed == 0) return CV_TOO_MUCH_WORK;
-        CVodeSetMaxNumSteps(cvode, allowed);
+        if (!steps.allow_call()) return CV_TOO_MUCH_WORK;
         return CVode(cvode, t_out, y.v, &t, CV_NORMAL);
       },
-      [&] {
-        int direction = 0;
-        CVodeGetRootInfo(cvode, &direction);
-        return direction;
-      },
+      [&] { return steps.root_direction(); },
       [&](int flag, double t) {
         guard.rethrow(t);
-        double last_step = 0.0;
-        CVodeGetNumSteps(cvode, &steps);
-        result.stats.steps = steps;  // the partial result's statistics
-        CVodeGetCurrentStep(cvode, &last_step);
+        SolverFailure failure = steps.failure(solver, flag, t, message.suffix(), result.stats);
         if (flag == CV_PROJFUNC_FAIL || flag == CV_REPTD_PROJFUNC_ERR) {
           throw SolverFailure(FailureKind::step_size_collapse, solver,
-                              sundials::flag_name(CVodeGetReturnFlagName(flag)) +
-                                  ": the projection onto the constraint did not converge" + message.suffix(),
+                              steps.flag_name(flag) + ": the projection onto the constraint did not converge" +
+                                  message.suffix(),
                               t, "tighten the tolerances, or use the index2 formulation or minimal coordinates");
         }
-        throw sundials::solver_failure(solver, settings, flag, sundials::flag_name(CVodeGetReturnFlagName(flag)) + message.suffix(),
-                                       {CV_TOO_MUCH_WORK, CV_ERR_FAILURE, CV_CONV_FAILURE}, steps, last_step, t);
+        throw failure;
       },
       record, result.wire_events);
 

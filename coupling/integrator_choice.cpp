@@ -39,15 +39,23 @@ std::optional<Solver> parse_solver(std::string_view text) {
   return std::nullopt;
 }
 
+// Appended piece by piece: `(text.empty() ? "" : "|") + std::string(...)` makes GCC 12 at -O3 report
+// a false -Wstringop-overflow on the temporary's memcpy.
 std::string formulation_choices() {
   std::string text;
-  for (const Formulation f : all_formulations) text += (text.empty() ? "" : "|") + std::string(to_string(f));
+  for (const Formulation f : all_formulations) {
+    if (!text.empty()) text += '|';
+    text += to_string(f);
+  }
   return text;
 }
 
 std::string solver_choices() {
   std::string text;
-  for (const Solver s : all_solvers) text += (text.empty() ? "" : "|") + std::string(to_string(s));
+  for (const Solver s : all_solvers) {
+    if (!text.empty()) text += '|';
+    text += to_string(s);
+  }
   return text;
 }
 

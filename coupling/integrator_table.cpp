@@ -56,17 +56,27 @@ std::optional<Integrator> parse_integrator(std::string_view text) {
   return std::nullopt;
 }
 
+// Appended piece by piece: `(text.empty() ? "" : "|") + std::string(...)` makes GCC 12 at -O3 report
+// a false -Wstringop-overflow on the temporary's memcpy.
 std::string integrator_choices() {
   std::string text;
-  for (const IntegratorEntry& entry : table) text += (text.empty() ? "" : "|") + std::string(entry.name);
+  for (const IntegratorEntry& entry : table) {
+    if (!text.empty()) text += '|';
+    text += entry.name;
+  }
   return text;
 }
 
 std::string valid_integrators() {
   std::string text;
   for (const IntegratorEntry& entry : table) {
-    text += (text.empty() ? "" : ", ") + std::string(to_string(entry.choice.formulation)) + " × " +
-            std::string(to_string(entry.choice.solver)) + " (" + std::string(entry.name) + ")";
+    if (!text.empty()) text += ", ";
+    text += to_string(entry.choice.formulation);
+    text += " × ";
+    text += to_string(entry.choice.solver);
+    text += " (";
+    text += entry.name;
+    text += ")";
   }
   return text;
 }

@@ -2,8 +2,8 @@
 // adapters: the context, serial vectors viewed as Eigen vectors, dense matrix + dense linear solver,
 // a terminal progress line; and what every adapter does the same way: set-up calls checked by name
 // (SetupCheck), one guard for every callback (CallbackGuard: no C++ exception crosses SUNDIALS' C
-// frames, and the wall-clock limit is checked there), the run's step budget and step-size floor
-// (WorkLimits), and the failure a solver's error flag means (solver_failure).
+// frames, and the wall-clock limit is checked there), the output loop; the run's step budget and the
+// failure a solver's error flag means are in coupling/solver_steps.hpp.
 #pragma once
 
 #include <cvode/cvode.h>
@@ -198,44 +198,6 @@ class CallbackGuard {
   FailureKind kind_ = FailureKind::model_error;
   std::string cause_;
 };
-
-// The steps the next solver call may take: the per-output-interval limit, within what is left of
-// the run's step limit; 0 when the run's limit is spent (the adapter then reports the solver's
-// too-much-work flag without calling it: a call allowed even one step could reach its output time).
-inline long call_step_limit(const IntegratorSettings& settings, long steps_so_far) {
-  return std::max(0L, std::min(settings.max_steps, settings.work.max_steps - steps_so_far));
-}
-
-// What a solver's error flag means: the failure kind from the solver's own flag values, the cause
-// (the flag's name, the step limit that was reached, or the step-size floor the step fell to), and
-// the remedy of the kind. `last_step`: the step size last attempted.
-struct SolverFlags {
-  int too_much_work, error_test_failure, convergence_failure;
-};
-inline SolverFailure solver_failure(const std::string& solver, const IntegratorSettings& settings, int flag,
-                                    const std::string& flag_text, SolverFlags flags, long steps, double last_step,
-                                    double t) {
-  char cause[320];
-  if (flag == flags.too_much_work) {
-    if (steps >= settings.work.max_steps) {
-      std::snprintf(cause, sizeof cause, "%s: the run's step limit of %ld steps was reached", flag_text.c_str(),
-                    settings.work.max_steps);
-    } else {
-      std::snprintf(cause, sizeof cause, "%s: more than %ld steps within one output interval (%ld steps in all)",
-                    flag_text.c_str(), settings.max_steps, steps);
-    }
-    return {FailureKind::too_much_work, solver, cause, t};
-  }
-  const bool at_floor = settings.work.min_step > 0.0 && std::abs(last_step) <= settings.work.min_step * (1.0 + 1e-6);
-  if ((flag == flags.error_test_failure || flag == flags.convergence_failure) && at_floor) {
-    std::snprintf(cause, sizeof cause, "%s: the step fell to the step-size floor %.3g s and failed there",
-                  flag_text.c_str(), settings.work.min_step);
-    return {FailureKind::step_size_collapse, solver, cause, t};
-  }
-  if (flag == flags.error_test_failure) return {FailureKind::step_size_collapse, solver, flag_text, t};
-  if (flag == flags.convergence_failure) return {FailureKind::newton_divergence, solver, flag_text, t};
-  return {FailureKind::model_error, solver, flag_text, t};
-}
 
 // Progress on stderr, only when enabled (callers enable it for terminals).
 class Progress {

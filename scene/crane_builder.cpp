@@ -31,8 +31,14 @@ std::optional<BoomKind> parse_boom_kind(std::string_view text) {
 std::string boom_kind_choices() { return "rigid|nodal|modal"; }
 
 std::string BoomChoice::label() const {
-  const std::string stiffened =
-      stiffening && *stiffening != Stiffening::none ? " " + std::string(to_string(*stiffening)) + "-stiffened" : "";
+  // Appended piece by piece: `" " + std::string(...)` makes GCC 12 at -O3 report a false
+  // -Wstringop-overflow when compiled through the precompiled header.
+  std::string stiffened;
+  if (stiffening && *stiffening != Stiffening::none) {
+    stiffened += ' ';
+    stiffened += to_string(*stiffening);
+    stiffened += "-stiffened";
+  }
   switch (kind) {
     case BoomKind::rigid: return "rigid";
     case BoomKind::nodal: return "nodal N=" + std::to_string(elements) + stiffened;

@@ -1,17 +1,18 @@
 // Scene loader: walks the TOML document against the schema table, collects every problem, and
-// builds the Scene value. Only this file knows toml++.
+// builds the Scene value (scene_build.hpp). Only this file and key_values.cpp (one key's value
+// against its schema entry) know toml++.
 #include "scene/scene_loader.hpp"
-#include "scene/bem_files.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
-#include <fstream>
-#include <map>
-#include <sstream>
 #include <toml++/toml.h>
 
+#include <algorithm>
+#include <map>
+
+#include "scene/bem_files.hpp"
+#include "scene/key_values.hpp"
+#include "scene/scene_build.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_schema.hpp"
@@ -20,24 +21,7 @@
 namespace ffrf::scene {
 namespace {
 
-struct Resolved {
-  double number = 0.0;
-  std::string text;
-  std::vector<double> list;  // number_list keys
-};
-
 int line_of(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
-
-// A value as toml++ understood it (used when its source text is not available).
-std::string show_parsed_value(const toml::node& node) {
-  if (const auto* s = node.as_string()) return fmt::format("\"{}\"", s->get());
-  if (const auto* i = node.as_integer()) return fmt::format("{}", i->get());
-  if (const auto* f = node.as_floating_point()) return fmt::format("{}", f->get());
-  if (const auto* b = node.as_boolean()) return b->get() ? "true" : "false";
-  std::ostringstream out;
-  out << node.type();
-  return "(" + out.str() + ")";
-}
 
 // Byte offset of the 1-based code-point column `column` in a UTF-8 line.
 std::size_t byte_offset(std::string_view line, std::size_t column) {
@@ -48,14 +32,6 @@ std::size_t byte_offset(std::string_view line, std::size_t column) {
     } while (offset < line.size() && (static_cast<unsigned char>(line[offset]) & 0xC0) == 0x80);
   }
   return offset;
-}
-
-std::string join_names(std::string_view choices) {
-  std::string text(choices);
-  std::replace(text.begin(), text.end(), '|', ',');
-  std::string spaced;
-  for (char c : text) spaced += c == ',' ? std::string(", ") : std::string(1, c);
-  return spaced;
 }
 
 class SceneReader final : public WrittenKeys {
@@ -74,7 +50,7 @@ class SceneReader final : public WrittenKeys {
     check_one_of_groups();
     if (problems_.empty()) check_scene();
     if (!problems_.empty()) throw SceneError(sorted(std::move(problems_)));
-    Scene scene = build();
+    Scene scene = build_scene(*this, file_, {crane_, hub_, cargo_, sections_.contains("wave"), sections_.contains("bem")});
     check_physics(scene);
     if (problems_.empty()) read_bem_files(scene);
     if (!problems_.empty()) throw SceneError(sorted(std::move(problems_)));
@@ -161,7 +137,14 @@ class SceneReader final : public WrittenKeys {
         resolve_absent(key, line_of(*section->second));
         continue;
       }
-      resolve_present(key, *found->second);
+      const toml::node& node = *found->second;
+      const std::string shown = show_value(node);
+      KeyValue value = resolve_value(key, node, shown);
+      if (value.value) {
+        resolved_[std::string(key.name)] = std::move(*value.value);
+      } else {
+        report(line_of(node), std::string(key.name), shown, std::move(value.problem));
+      }
     }
   }
 
@@ -178,107 +161,6 @@ class SceneReader final : public WrittenKeys {
              fmt::format("missing {}key: {} (valid range {})", key.presence == Presence::crane_required ? "crane " : "",
                          key.help, format_range(key)));
     }
-  }
-
-  void resolve_present(const KeySpec& key, const toml::node& node) {
-    const std::string shown = show_value(node);
-    const std::string name(key.name);
-    const int line = line_of(node);
-    const std::string range = format_range(key);
-    switch (key.kind) {
-      case ValueKind::number: {
-        QuantityResult result = QuantityError{fmt::format("expected a number (SI {}) or a \"value unit\" string",
-                                                          si_unit(key.dimension).empty() ? "-" : si_unit(key.dimension))};
-        WrittenQuantity written{shown, ""};
-        if (const auto* s = node.as_string()) {
-          result = parse_quantity(s->get(), key.dimension, key.allow_infinity);
-          written = split_quantity(s->get()).value_or(WrittenQuantity{});
-        } else if (node.is_number()) {
-          result = check_bare_number(node.value<double>().value_or(0.0), key.dimension, key.allow_infinity);
-        }
-        if (const auto* error = std::get_if<QuantityError>(&result)) {
-          const std::string slips = unit_required(key.dimension) && written.unit.empty()
-                                        ? did_you_mean(unit_slips(key, written.number, written.unit))
-                                        : std::string();
-          report(line, name, shown, fmt::format("{}{} (valid range {})", error->message, slips, range));
-        } else if (const double value = std::get<double>(result); !accepts(key, value)) {
-          report(line, name, shown,
-                 fmt::format("out of range (valid range {}){}", range,
-                             did_you_mean(unit_slips(key, written.number, written.unit))));
-        } else {
-          resolved_[name] = {value, {}, {}};
-        }
-        return;
-      }
-      case ValueKind::integer: {
-        // A whole number within the range (the range is finite: no value can wrap on conversion).
-        const auto value = node.value<double>();
-        if (!node.is_number() || !value || !std::isfinite(*value) || std::floor(*value) != *value) {
-          report(line, name, shown, fmt::format("expected a whole number (valid range {})", range));
-        } else if (!key.range.contains(*value)) {
-          report(line, name, shown, fmt::format("out of range (valid range {})", range));
-        } else {
-          resolved_[name] = {*value, {}, {}};
-        }
-        return;
-      }
-      case ValueKind::choice: {
-        const auto* s = node.as_string();
-        std::string_view rest = key.choices;
-        bool known = false;
-        while (s != nullptr && !known && !rest.empty()) {
-          const auto bar = rest.find('|');
-          known = rest.substr(0, bar) == s->get();
-          rest = bar == std::string_view::npos ? std::string_view{} : rest.substr(bar + 1);
-        }
-        if (!known) {
-          report(line, name, shown, fmt::format("unknown choice; choose one of {}", join_names(key.choices)));
-        } else {
-          resolved_[name] = {0.0, s->get(), {}};
-        }
-        return;
-      }
-      case ValueKind::number_list:
-        resolve_list(key, node);
-        return;
-      case ValueKind::text:
-        if (const auto* s = node.as_string()) {
-          resolved_[name] = {0.0, s->get(), {}};
-        } else {
-          report(line, name, shown, "expected a text string");
-        }
-        return;
-    }
-  }
-
-  // An array of quantities: each an SI number or a "value unit" string, each in the key's range.
-  void resolve_list(const KeySpec& key, const toml::node& node) {
-    const std::string name(key.name);
-    const std::string range = format_range(key);
-    const auto* array = node.as_array();
-    if (array == nullptr || array->empty()) {
-      report(line_of(node), name, show_value(node), fmt::format("expected a non-empty array of numbers (valid range {})", range));
-      return;
-    }
-    std::vector<double> values;
-    for (std::size_t i = 0; i < array->size(); ++i) {
-      const toml::node& element = *array->get(i);
-      QuantityResult result = QuantityError{"expected a number"};
-      if (const auto* s = element.as_string()) {
-        result = parse_quantity(s->get(), key.dimension, false);
-      } else if (element.is_number()) {
-        result = check_number(element.value<double>().value_or(0.0), false);
-      }
-      const double* value = std::get_if<double>(&result);
-      if (value == nullptr || !accepts(key, *value)) {
-        const std::string why = value == nullptr ? std::get<QuantityError>(result).message : "out of range";
-        report(line_of(node), name, show_value(node),
-               fmt::format("element {} = {}: {} (valid range {})", i + 1, show_parsed_value(element), why, range));
-        return;
-      }
-      values.push_back(*value);
-    }
-    resolved_[name] = {0.0, {}, std::move(values)};
   }
 
   void check_one_of_groups() {
@@ -356,25 +238,6 @@ class SceneReader final : public WrittenKeys {
     }
   }
 
-  // [bem]: the keys (the files are read by read_bem_files once every key is valid).
-  BemHull bem_keys() const {
-    BemHull bem;
-    const auto file = [&](std::string_view key) { return has(key) ? resolve_scene_path(file_, text(key)) : std::string(); };
-    bem.radiation_file = file("bem.radiation_file");
-    bem.excitation_file = file("bem.excitation_file");
-    bem.hydrostatics_file = file("bem.hydrostatics_file");
-    bem.length_scale = number("bem.length_scale");
-    bem.origin_above_keel = number("bem.origin_above_keel");
-    bem.origin_forward_of_mid_length = number("bem.origin_forward_of_mid_length");
-    hydro::parse_radiation_kind(text("bem.radiation_model"), bem.radiation_model);
-    bem.excitation = text("bem.excitation") == "bem" ? ExcitationModel::bem : ExcitationModel::froude_krylov;
-    if (has("bem.constant_period")) bem.constant_period = number("bem.constant_period");
-    bem.state_space_tolerance = number("bem.state_space_tolerance");
-    bem.kernel_time_step = number("bem.kernel_time_step");
-    bem.truncation_time = number("bem.truncation_time");
-    return bem;
-  }
-
   // Reads the WAMIT files of [bem] (scene/bem_files.hpp); a problem is reported at the key that
   // names the file (or the key the inconsistency concerns), the file's own line in the message.
   void read_bem_files(Scene& scene) {
@@ -395,68 +258,6 @@ class SceneReader final : public WrittenKeys {
     for (const BemProblem& problem : load_bem_files(scene)) {
       report(line_of_key(problem.key), problem.key, value_of_key(problem.key), problem.message);
     }
-  }
-
-  double boom_mass_per_length() const {
-    return has("boom.mass_per_length") ? number("boom.mass_per_length") : number("boom.density") * number("boom.area");
-  }
-
-  Scene build() const {
-    Scene scene;
-    scene.file = file_;
-    if (has("scene.name")) scene.name = text("scene.name");
-    if (has("scene.description")) scene.description = text("scene.description");
-    const fem::BeamSection section{number("boom.youngs_modulus"), number("boom.area"), number("boom.second_moment"),
-                                   boom_mass_per_length()};
-    scene.boom.mesh = fem::BeamMesh{number("boom.length"), static_cast<int>(number("boom.elements")), section};
-    scene.boom.boundary = boundary_of(text("boom.boundary"));
-    scene.boom.damping_ratio = number("boom.damping_ratio");
-    if (has("boom.density")) scene.boom.density = number("boom.density");
-    scene.boom.stiffening = parse_stiffening(text("boom.stiffening")).value_or(Stiffening::none);
-    if (crane_) {
-      scene.boom.mount = BoomMount{number("boom.angle"), number("boom.root_x"), number("boom.root_y")};
-      scene.hull = Hull{number("hull.mass"),  number("hull.pitch_radius_of_gyration"),
-                        number("hull.length"), number("hull.width"), number("hull.depth"), number("hull.g1_above_keel"),
-                        number("hull.g1_aft_of_mid_length")};
-    }
-    if (hub_) {
-      const std::string& motion = text("hub.motion");
-      scene.hub = Hub{number("hub.radius"), number("hub.angle"),
-                      motion == "spin-up" ? HubMotion::spin_up
-                                          : (motion == "constant-spin" ? HubMotion::constant_spin : HubMotion::fixed),
-                      number("hub.spin_rate"), number("hub.spin_up_time")};
-      scene.boom.mount = BoomMount{0.0, number("hub.radius"), 0.0};
-    }
-    if (cargo_) {
-      const double l = number("cargo.length");
-      const double h = number("cargo.height");
-      const bool derived = !has("cargo.pitch_radius_of_gyration");
-      scene.cargo = Cargo{number("cargo.mass"), l, h, number("cargo.hook_x"), number("cargo.hook_y"),
-                          derived ? std::sqrt((l * l + h * h) / 12.0) : number("cargo.pitch_radius_of_gyration"),
-                          derived};
-      scene.wire = Wire{number("wire.unstretched_length"), number("wire.stiffness"), number("wire.damping_ratio")};
-    }
-    scene.environment = Environment{number("environment.water_density"), number("environment.gravity"),
-                                    number("environment.water_depth")};
-    if (sections_.contains("wave")) build_wave(*this, scene);
-    scene.radiation = Radiation{number("radiation.surge_added_mass"), number("radiation.heave_added_mass"),
-                                number("radiation.pitch_added_inertia"), number("radiation.surge_damping"),
-                                number("radiation.heave_damping"), number("radiation.pitch_damping")};
-    if (sections_.contains("bem")) scene.bem = bem_keys();
-    scene.mooring = Mooring{number("mooring.surge_stiffness")};
-    scene.simulation = Simulation{number("simulation.duration"), number("simulation.output_interval"),
-                                  text("simulation.initial_state") == "as-built" ? InitialState::as_built
-                                                                                 : InitialState::static_equilibrium,
-                                  number("simulation.cargo_lift"), number("simulation.deflection_limit"),
-                                  number("simulation.constraint_drift_limit")};
-    return scene;
-  }
-
-  static fem::Boundary boundary_of(const std::string& keyword) {
-    // The schema's choices equal fem::boundary_choices(); the loader has validated the keyword.
-    const auto boundary = fem::parse_boundary(keyword);
-    if (!boundary) throw std::logic_error("scene schema and fem::parse_boundary disagree on " + keyword);
-    return *boundary;
   }
 
   static std::vector<SceneProblem> sorted(std::vector<SceneProblem> problems) {

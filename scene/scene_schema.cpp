@@ -342,7 +342,10 @@ std::string format_range(const KeySpec& key) {
                                   format_bound(key.range.lower.value, factor),
                                   format_bound(key.range.upper.value, factor), key.range.upper.closed ? ']' : ')');
   const std::string_view unit = key.kind == ValueKind::number ? display_unit(key) : std::string_view{};
-  if (!unit.empty()) range += " " + std::string(unit);
+  if (!unit.empty()) {  // not `" " + std::string(unit)`: a false -Wstringop-overflow of GCC 12 through the PCH
+    range += ' ';
+    range += unit;
+  }
   return key.allow_infinity ? range + " or inf" : range;
 }
 

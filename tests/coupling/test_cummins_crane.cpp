@@ -20,6 +20,7 @@
 #include <numbers>
 #include <vector>
 
+#include "barge_hull_scene.hpp"
 #include "coupling/simulation.hpp"
 #include "hydro/retardation.hpp"
 #include "hydro/state_space_fit.hpp"
@@ -145,46 +146,12 @@ class BargeDecay : public ::testing::Test {
   static Record crane_decay(const std::string& model, const PlanarVector& offset, double duration,
                             const std::string& extra_bem_keys = "") {
     const std::string data = std::string(FFRF_SOURCE_DIR) + "/tests/hydro/data/";
-    const std::string text = fmt::format(R"([hull]
-mass = {}
-pitch_radius_of_gyration = {}
-length = 80.0
-width = 10.0
-depth = 8.0
-g1_above_keel = 5.0
-g1_aft_of_mid_length = 0.0
-[boom]
-length = 40.0
-angle = "60 deg"
-root_x = 30.0
-root_y = 3.0
-youngs_modulus = 2.1e11
-area = 0.32
-second_moment = 0.9
-mass_per_length = 1.0
-elements = 1
-[cargo]
-mass = 1.0
-length = 1.0
-height = 1.0
-hook_x = 0.0
-hook_y = 0.5
-[wire]
-unstretched_length = 12.0
-stiffness = 1.0e4
-[mooring]
-surge_stiffness = 1.0
-[environment]
-water_density = 1000.0
-gravity = 9.81
-[bem]
-radiation_file = "{}barge.1"
+    const std::string text = ffrf::test::barge_hull_scene(4.0e6, std::sqrt(2.166667e9 / 4.0e6), fmt::format(R"(radiation_file = "{}barge.1"
 hydrostatics_file = "{}barge.hst"
 origin_above_keel = 5.0
 radiation_model = "{}"
-{}
-)",
-                                         4.0e6 - 41.0, std::sqrt(2.166667e9 / 4.0e6), data, data, model, extra_bem_keys);
+{})",
+                                                                                                  data, data, model, extra_bem_keys));
     const ffrf::scene::Scene scene = ffrf::scene::load_scene_text(text, "barge_decay.toml");
     ffrf::study::PreparedRun prepared = ffrf::study::prepare_run(scene, {ffrf::scene::BoomKind::rigid, 1});
     Eigen::VectorXd z0 = prepared.initial_state;
