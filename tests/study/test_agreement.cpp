@@ -68,7 +68,7 @@ TEST(Agreement, CompareSweepAndRecommendMeasureTheSameModelAlike) {
   modelled.boom.stiffening = sweep.stiffening;
   const study::SweepSetup setup{&modelled, &sweep.reference, sweep.window_start, sweep.judged, duration, 2'000'000, nullptr};
   const study::SweepResult configured = study::run_configuration(
-      setup, {0, chosen.choice, chosen.integrator, rec.reasoning.relative_tolerance, 0.0, 0.0});
+      setup, {0, chosen.choice, chosen.integrator, rec.reasoning.relative_tolerance, 0.0, 0.0, std::nullopt});
   ASSERT_EQ(configured.status, study::RunStatus::ok) << configured.reason;
 
   // Same reference physics, window and judged outputs.

@@ -11,6 +11,7 @@
 #include <cstdio>
 
 #include "scene/bem_hull_model.hpp"
+#include "scene/crane_model_cache.hpp"
 #include "study/radiation_compare.hpp"
 #include "study/sweep.hpp"
 #include "study_test_support.hpp"
@@ -58,8 +59,9 @@ TEST(SweepRadiation, ErrorsAgainstTheConvolutionReferenceOrderTheRadiationModels
   ASSERT_TRUE(study.scene.bem.has_value());
   EXPECT_EQ(study.scene.bem->radiation_model, RadiationKind::convolution);  // the reference's model
   ASSERT_EQ(study.reference.levels.size(), 2u);
+  scene::CraneModelCache models(study.scene, &modes);
   const SweepSetup setup{&study.scene, &study.reference, study.window_start, study.judged, request.duration,
-                         request.max_explicit_steps, &modes};
+                         request.max_explicit_steps, &models};
   // The reference's own mesh at the models' default tolerance, with each radiation model.
   SweepConfig config;
   config.choice = study.reference.choice;
