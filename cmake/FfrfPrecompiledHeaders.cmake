@@ -10,8 +10,6 @@
 # Through a precompiled header GCC 12 at -O3 reports false -Wstringop-overflow / -Warray-bounds on
 # some std::string concatenations that it does not report without one; the files concerned append
 # piece by piece instead, and under -Werror the two warnings stay warnings (top-level CMakeLists.txt).
-# The test programs' header is compiled at the tests' optimisation level (ffrf_test_optimization,
-# -O1), the libraries' at the build type's: a header and the files that reuse it must agree.
 option(FFRF_PRECOMPILED_HEADERS "Precompile Eigen, GoogleTest and standard headers once per build" ON)
 
 set(ffrf_precompiled_headers
@@ -42,7 +40,7 @@ function(ffrf_use_test_pch target)
   endif()
   if(NOT TARGET ffrf_pch_tests)
     add_library(ffrf_pch_tests OBJECT ${PROJECT_BINARY_DIR}/ffrf_precompiled_headers.cpp)
-    target_link_libraries(ffrf_pch_tests PRIVATE Eigen3::Eigen GTest::gtest ffrf_warnings ffrf_test_optimization)
+    target_link_libraries(ffrf_pch_tests PRIVATE Eigen3::Eigen GTest::gtest ffrf_warnings)
     target_compile_definitions(ffrf_pch_tests PRIVATE FFRF_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
                                                       FFRF_BINARY_DIR="${PROJECT_BINARY_DIR}")
     target_precompile_headers(ffrf_pch_tests PRIVATE <gtest/gtest.h> ${ffrf_precompiled_headers})
