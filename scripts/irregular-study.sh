@@ -3,11 +3,13 @@
 # irregular scenes at Tp = 5, 8 and 12 s with several seeds (docs/validation.md, "Irregular seas:
 # does the recommended boom model change with Tp?"). Not part of the test suite.
 #
-# HOW LONG IT TAKES (measured 2026-11-26 on 2 shared cores, Release build, WINDOW = 300 s, 20-minute
-# records): about 70 minutes of CPU in all for the default parts (recommend × 6, compare × 2,
-# BEM recommend × 2), about 45-60 minutes of wall time with 2 jobs at once. The cost is roughly
-# proportional to WINDOW; Tp = 5 s costs most (600 components on a 20-minute record, against 375 at
-# Tp = 8 s and 250 at Tp = 12 s). A 3-hour window is not practical with this script (see the doc).
+# HOW LONG IT TAKES: about 25 minutes of CPU, 40 minutes of wall time with 2 jobs at once (measured
+# 2026-11-26 at commit e3512c2 on the 2 shared, heavily loaded cores of the development machine;
+# Release build; default WINDOW = 600 s of 20-minute records). CPU per study: recommend Tp = 5 s
+# 270-275 s (600 components), Tp = 8 s 106-169 s (375), Tp = 12 s 77-95 s (250); the recommended
+# model's own run 6-66 s; compare Tp = 8 s 133-152 s each; BEM barge recommend 21-62 s. The cost is
+# about proportional to WINDOW; a 3-hour record costs ~6x more per simulated second than a 20-minute
+# one (docs/validation.md), so 3-hour windows are not practical with this script.
 #
 # What it does: writes copies of cases/irregular_sea_crane.toml (and, for the BEM part,
 # cases/irregular_bem_barge_crane.toml, its WAMIT paths made absolute) into OUT/scenes with
@@ -19,7 +21,7 @@
 # OUT/compare.csv, OUT/statistics.csv and OUT/results.md.
 #
 # Usage: bash scripts/irregular-study.sh [OUT]            (after: cmake --build build --target ffrf)
-#   environment: WINDOW (s, default 300), RECORD (s, default 1200), SEEDS ("1 2"), PERIODS ("5 8 12"),
+#   environment: WINDOW (s, default 600), RECORD (s, default 1200), SEEDS ("1 2"), PERIODS ("5 8 12"),
 #                PARTS ("recommend compare bem"), JOBS (2), FFRF (default build/app/ffrf)
 #   An existing study directory is kept (rerunning resumes; delete it to redo that study);
 #   `collect` alone as PARTS rebuilds the tables from what is there.
@@ -28,7 +30,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 ffrf="${FFRF:-$root/build/app/ffrf}"
 [[ -x "$ffrf" ]] || { echo "irregular-study: $ffrf missing: build first (cmake --build build --target ffrf)" >&2; exit 2; }
 out="$(realpath -m "${1:-$root/results/irregular-study}")"
-window="${WINDOW:-300}"
+window="${WINDOW:-600}"
 record="${RECORD:-1200}"
 seeds="${SEEDS:-1 2}"
 periods="${PERIODS:-5 8 12}"
@@ -62,12 +64,16 @@ scene() {
 # irregular-sea statistics (σ, most probable maxima) of the window.
 study() {
   local name="$1" command="$2" file="$3" status=0
-  if [[ -d "$out/$name" ]]; then echo "irregular-study: $name exists, kept" >&2; else
+  if [[ -d "$out/$name" ]]; then echo "irregular-study: $name exists, kept" >&2
+  elif ! mkdir "$out/$name.lock" 2> /dev/null; then
+    echo "irregular-study: $name is running elsewhere ($out/$name.lock; remove it if not), skipped" >&2; return 0
+  else
     echo "irregular-study: $(date -u +%H:%M:%S) start $name" >&2
     /usr/bin/time -f "cpu_s %U %S wall_s %e" -o "$out/$name.time" \
       script -q -e -c "nice -n 5 '$ffrf' $command '$file' --duration $window --out '$out/$name'" /dev/null \
       > "$out/$name.log" 2>&1 < /dev/null || status=$?
     echo "irregular-study: $(date -u +%H:%M:%S) end $name (exit $status; $(tail -1 "$out/$name.time"))" >&2
+    rmdir "$out/$name.lock"
   fi
   if [[ "$command" == recommend && -f "$out/$name/recommendation.json" && ! -d "$out/$name-run" ]]; then
     local line
@@ -111,7 +117,8 @@ for d in sorted(glob.glob(os.path.join(out, "recommend-*/recommendation.json")))
     rec_rows.append({
         "scene": hull, "tp_s": tp, "seed": seed, "window_s": r["duration_s"],
         "error_window_start_s": r["reference"]["window_start_s"],
-        "recommended": chosen["model"] if chosen else "none",
+        "recommended": chosen["model"] if chosen else "none" + ("" if r["reference"]["converged"] else
+                       " (reference not converged: change %s)" % g(r["reference"]["levels"][-1]["change"])),
         "integrator": chosen["integrator"] if chosen else "-",
         "rtol": r["reasoning"]["relative_tolerance"],
         "error": chosen["error"] if chosen else float("nan"),
