@@ -22,7 +22,7 @@
 #
 # Usage: bash scripts/irregular-study.sh [OUT]            (after: cmake --build build --target ffrf)
 #   environment: WINDOW (s, default 600), RECORD (s, default 1200), SEEDS ("1 2"), PERIODS ("5 8 12"),
-#                PARTS ("recommend compare bem"), JOBS (2), FFRF (default build/app/ffrf)
+#                PARTS ("recommend compare bem"), COMPARE_PERIODS ("8"), JOBS (2), FFRF (default build/app/ffrf)
 #   An existing study directory is kept (rerunning resumes; delete it to redo that study);
 #   `collect` alone as PARTS rebuilds the tables from what is there.
 set -euo pipefail
@@ -225,9 +225,9 @@ if [[ " $parts " == *" recommend "* ]]; then
   done; done
 fi
 if [[ " $parts " == *" compare "* ]]; then
-  for seed in $seeds; do
-    queue+=("compare-tp8-seed$seed compare $(scene irregular_sea_crane.toml "hull-tp8-seed$seed" 8 "$seed")")
-  done
+  for tp in ${COMPARE_PERIODS:-8}; do for seed in $seeds; do
+    queue+=("compare-tp$tp-seed$seed compare $(scene irregular_sea_crane.toml "hull-tp$tp-seed$seed" "$tp" "$seed")")
+  done; done
 fi
 if [[ " $parts " == *" bem "* ]]; then
   for seed in $seeds; do
