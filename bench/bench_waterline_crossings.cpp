@@ -1,19 +1,24 @@
-// Benchmark of the waterline-crossing search (coupling/waterline_crossings.hpp) with local curvature
-// bounds against the search with the wave field's global bounds it replaced
-// (tests/coupling/waterline_crossings_global_bounds.hpp), side by side in one run, on the reference
-// hull's four box edges (90 m × 8 m, loaded draft, random heave ±1 m and pitch ±1.5°) in JONSWAP seas
-// Hs 2 m, Tp 8 s, γ 3.3 on Δω = 2π/record over [ωp/2, 3ωp] (cases/irregular_sea_crane.toml) for
-// records of 20 minutes, 1 hour and 3 hours, and the whole hull pressure integral (which uses the new
-// search) for scale. Prints the time per hull (four edges) and the ratio old/new; both searches must
-// find the same number of crossings (checked, else exit 1).
+// Benchmark of the waterline-crossing search (coupling/waterline_crossings.hpp) and of the whole hull
+// pressure integral (coupling/hull_pressure.hpp) on the reference hull's four box edges (90 m × 8 m,
+// loaded draft, random heave ±1 m and pitch ±1.5°) in the reference crane's JONSWAP sea (Hs 2 m,
+// Tp 8 s, γ 3.3 on Δω = 2π/record over [ωp/2, 3ωp], cases/irregular_sea_crane.toml, synthesized by
+// hydro::synthesize: tests/coupling/jonswap_test_sea.hpp) for records of 20 minutes, 1 hour and
+// 3 hours. Side by side in one run: the search with the wave field's global bounds
+// (tests/coupling/waterline_crossings_global_bounds.hpp, direct sums), the search and the hull load
+// with every component sum by the direct formula (WaveField::with_direct_sums) and by the harmonic-grid
+// recurrence (coupling/component_phasors.hpp, what the crane uses). Prints the time per hull (four
+// edges) and the ratios; all searches must find the same number of crossings and both hull loads must
+// agree to 1e-10 of the box's buoyancy (checked, else exit 1).
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <numbers>
+#include <limits>
 #include <random>
 #include <vector>
 
+#include "../tests/coupling/jonswap_test_sea.hpp"
 #include "../tests/coupling/waterline_crossings_global_bounds.hpp"
 #include "coupling/hull_pressure.hpp"
 #include "coupling/waterline_crossings.hpp"
@@ -21,32 +26,7 @@
 
 namespace {
 
-using ffrf::coupling::ComponentSpec;
 using ffrf::coupling::WaveField;
-
-WaveField jonswap_sea(double record) {
-  const double hs = 2.0, wp = 2.0 * std::numbers::pi / 8.0, dw = 2.0 * std::numbers::pi / record;
-  std::vector<ComponentSpec> list;
-  double variance = 0.0;
-  for (int n = 1;; ++n) {
-    const double w = n * dw;
-    if (w < 0.5 * wp) continue;
-    if (w > 3.0 * wp) break;
-    const double sigma = w <= wp ? 0.07 : 0.09;
-    const double shape = std::pow(w, -5.0) * std::exp(-1.25 * std::pow(wp / w, 4.0)) *
-                         std::pow(3.3, std::exp(-(w - wp) * (w - wp) / (2.0 * sigma * sigma * wp * wp)));
-    list.push_back({w, std::sqrt(2.0 * shape * dw), 0.0});
-    variance += shape * dw;
-  }
-  std::mt19937_64 random(1);
-  std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi);
-  const double scale = std::sqrt(hs * hs / 16.0 / variance);
-  for (ComponentSpec& c : list) {
-    c.amplitude *= scale;
-    c.phase = phase(random);
-  }
-  return WaveField::from_components(list, 1.0, 0.0, std::numeric_limits<double>::infinity(), 9.81);
-}
 
 struct Pose {
   double heave, pitch, t;
@@ -65,6 +45,17 @@ double seconds_per_hull(const std::vector<Pose>& poses, Search&& search, long& c
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / static_cast<double>(poses.size());
 }
 
+const ffrf::coupling::BoxHullSection hull{-32.0, 58.0, -6.0, 2.0, 40.0};
+
+double seconds_per_load(const std::vector<Pose>& poses, const WaveField& wave, std::vector<double>& heave_forces) {
+  heave_forces.clear();
+  const auto start = std::chrono::steady_clock::now();
+  for (const Pose& p : poses) {
+    heave_forces.push_back(ffrf::coupling::hull_pressure_load(hull, &wave, 1025.0, 9.81, Eigen::Vector2d(0.0, 1.91 + p.heave), p.pitch, p.t).force.y());
+  }
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / static_cast<double>(poses.size());
+}
+
 }  // namespace
 
 int main() {
@@ -72,30 +63,42 @@ int main() {
   std::uniform_real_distribution<double> heave(-1.0, 1.0), pitch(-0.026, 0.026), time(100.0, 10000.0);
   std::vector<Pose> poses(64);
   for (Pose& p : poses) p = {heave(random), pitch(random), time(random)};
-  const ffrf::coupling::BoxHullSection hull{-32.0, 58.0, -6.0, 2.0, 40.0};
-  fmt::print("waterline crossings on the reference hull's 4 edges, per hull evaluation (mean of {} poses)\n", poses.size());
-  fmt::print("{:>10} {:>11} {:>14} {:>14} {:>8} {:>16}\n", "record", "components", "global [ms]", "local [ms]",
-             "ratio", "hull load [ms]");
+  fmt::print("per hull evaluation (4 edges, mean of {} poses) [ms]; crossings: the search alone; load: the whole "
+             "hull pressure integral\n", poses.size());
+  fmt::print("{:>8} {:>6} | {:>9} {:>9} {:>9} {:>6} | {:>9} {:>9} {:>6}\n", "record", "comps", "global", "direct",
+             "recur.", "ratio", "direct", "recur.", "ratio");
+  const auto search_with = [](const WaveField& wave) {
+    return [&wave](double t, const Eigen::Vector2d& a, const Eigen::Vector2d& d) {
+      return ffrf::coupling::waterline_crossings(wave, t, a, d);
+    };
+  };
   int status = 0;
   for (const double record : {1200.0, 3600.0, 10800.0}) {
-    const WaveField wave = jonswap_sea(record);
-    long old_count = 0, new_count = 0;
-    const double old_time = seconds_per_hull(poses, [&](double t, const Eigen::Vector2d& a, const Eigen::Vector2d& d) {
-      return ffrf::test_support::waterline_crossings_global_bounds(wave, t, a, d);
-    }, old_count);
-    const double new_time = seconds_per_hull(poses, [&](double t, const Eigen::Vector2d& a, const Eigen::Vector2d& d) {
-      return ffrf::coupling::waterline_crossings(wave, t, a, d);
-    }, new_count);
-    const auto start = std::chrono::steady_clock::now();
-    double sink = 0.0;
-    for (const Pose& p : poses) {
-      sink += ffrf::coupling::hull_pressure_load(hull, &wave, 1025.0, 9.81, Eigen::Vector2d(0.0, 1.91 + p.heave), p.pitch, p.t).force.y();
+    const WaveField wave = ffrf::test_support::jonswap_test_sea(record, std::numeric_limits<double>::infinity(), 1);
+    const WaveField direct = wave.with_direct_sums();
+    if (!wave.harmonic_grid().active) {
+      fmt::print("the synthesized sea is not recognised as a harmonic grid\n");
+      status = 1;
     }
-    const double load_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / static_cast<double>(poses.size());
-    fmt::print("{:>8.0f} s {:>11} {:>14.3f} {:>14.3f} {:>8.1f} {:>16.3f}\n", record, wave.components().size(),
-               1e3 * old_time, 1e3 * new_time, old_time / new_time, 1e3 * load_time);
-    if (old_count != new_count || !std::isfinite(sink)) {
-      fmt::print("MISMATCH: {} crossings with global bounds, {} with local bounds\n", old_count, new_count);
+    long global_count = 0, direct_count = 0, recurrence_count = 0;
+    const double global_time = seconds_per_hull(poses, [&](double t, const Eigen::Vector2d& a, const Eigen::Vector2d& d) {
+      return ffrf::test_support::waterline_crossings_global_bounds(wave, t, a, d);
+    }, global_count);
+    const double direct_time = seconds_per_hull(poses, search_with(direct), direct_count);
+    const double recurrence_time = seconds_per_hull(poses, search_with(wave), recurrence_count);
+    std::vector<double> direct_forces, recurrence_forces;
+    const double direct_load = seconds_per_load(poses, direct, direct_forces);
+    const double recurrence_load = seconds_per_load(poses, wave, recurrence_forces);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < poses.size(); ++i) worst = std::max(worst, std::abs(direct_forces[i] - recurrence_forces[i]));
+    worst /= 1025.0 * 9.81 * 40.0 * 90.0 * 8.0;  // the box's full buoyancy
+    fmt::print("{:>6.0f} s {:>6} | {:>9.3f} {:>9.3f} {:>9.3f} {:>6.1f} | {:>9.3f} {:>9.3f} {:>6.1f}   (heave force "
+               "direct − recurrence: {:.1e} of the buoyancy)\n", record, wave.components().size(), 1e3 * global_time,
+               1e3 * direct_time, 1e3 * recurrence_time, direct_time / recurrence_time, 1e3 * direct_load,
+               1e3 * recurrence_load, direct_load / recurrence_load, worst);
+    if (global_count != direct_count || direct_count != recurrence_count || !(worst <= 1e-10)) {
+      fmt::print("MISMATCH: {} / {} / {} crossings (global / direct / recurrence), forces {:.1e}\n", global_count,
+                 direct_count, recurrence_count, worst);
       status = 1;
     }
   }

@@ -4,7 +4,11 @@
 // 0 for the crest extension) plus the linear hydrostatic part, so ∫p ds and ∫p s ds over a piece
 // [s0, s0 + h] are elementary: c h φ1(λh) and c h² ψ(λh) with φ1(z) = (e^z − 1)/z and
 // ψ(z) = ∫₀¹ v e^{zv} dv = (e^z (z − 1) + 1)/z² (power series for |z| < ½). Each piece is taken from
-// the end with the larger Re(λ s), so no exponential exceeds 1. Waterline crossings:
+// the end with the larger Re(λ s), so no exponential exceeds 1. In deep water (and on every crest
+// extension) the coefficients c_i and the e^{λ_i h} are phasors of the field (component_phasors.hpp: by
+// recurrence on a harmonic grid, two complex products each instead of an exponential, sine and cosine),
+// and the components inside the series radius are summed power by power (SeriesSums). Finite depth
+// (two exponentials per component) keeps the direct formula. Waterline crossings:
 // coupling/waterline_crossings.hpp. No heap allocation.
 #include "coupling/hull_pressure.hpp"
 
@@ -14,13 +18,13 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "coupling/component_phasors.hpp"
 #include "coupling/waterline_crossings.hpp"
 
 namespace ffrf::coupling {
 
 namespace {
 
-using Complex = std::complex<double>;
 constexpr double series_radius = 0.5;
 constexpr int series_terms = 18;  // |z|^18 / 18! < 1e-21 for |z| < ½
 
@@ -36,27 +40,67 @@ constexpr std::array<double, series_terms> inverse_factorials() {
 }
 constexpr std::array<double, series_terms> inverse_factorial = inverse_factorials();
 
-// φ1(z) = (e^z − 1)/z and ψ(z) = (e^z (z − 1) + 1)/z² (∫₀¹ e^{zv} dv and ∫₀¹ v e^{zv} dv).
-void exponential_moments(Complex z, Complex& phi1, Complex& psi) {
+// φ1(z) = (e^z − 1)/z and ψ(z) = (e^z (z − 1) + 1)/z² (∫₀¹ e^{zv} dv and ∫₀¹ v e^{zv} dv) by their
+// power series for |z| < ½ (true), else false (use closed_moments).
+bool series_moments(Complex z, Complex& phi1, Complex& psi) {
   const double size = std::norm(z);  // |z|²
-  if (size < series_radius * series_radius) {  // φ1 = Σ zⁿ/(n+1)!, ψ = Σ zⁿ/(n! (n+2)), by Horner
-    // Enough terms that the first one left out, |z|ⁿ/n!, is below 1e-17: 8 for |z| < 0.01, 12 for
-    // |z| < 0.1, 14 for |z| < 0.25, else all (|z| < ½).
-    const int terms = size < 1e-4 ? 8 : size < 1e-2 ? 12 : size < 0.0625 ? 14 : series_terms;
-    phi1 = 0.0;
-    psi = 0.0;
-    for (int n = terms - 2; n >= 0; --n) {
-      phi1 = phi1 * z + inverse_factorial[static_cast<std::size_t>(n + 1)];
-      psi = psi * z + inverse_factorial[static_cast<std::size_t>(n)] / (n + 2);
-    }
-    return;
+  if (size >= series_radius * series_radius) return false;
+  // φ1 = Σ zⁿ/(n+1)!, ψ = Σ zⁿ/(n! (n+2)), by Horner, with enough terms that the first one left out,
+  // |z|ⁿ/n!, is below 1e-17: 8 for |z| < 0.01, 12 for |z| < 0.1, 14 for |z| < 0.25, else all (|z| < ½).
+  const int terms = size < 1e-4 ? 8 : size < 1e-2 ? 12 : size < 0.0625 ? 14 : series_terms;
+  phi1 = 0.0;
+  psi = 0.0;
+  for (int n = terms - 2; n >= 0; --n) {
+    phi1 = times(phi1, z) + inverse_factorial[static_cast<std::size_t>(n + 1)];
+    psi = times(psi, z) + inverse_factorial[static_cast<std::size_t>(n)] / (n + 2);
   }
-  const double magnitude = std::exp(z.real());
-  const Complex ez(magnitude * std::cos(z.imag()), magnitude * std::sin(z.imag()));
-  const Complex inv = std::conj(z) / std::norm(z);
-  phi1 = (ez - 1.0) * inv;
-  psi = (ez * (z - 1.0) + 1.0) * inv * inv;
+  return true;
 }
+
+// φ1 and ψ from e^z and 1/z (|z| ≥ ½, where the closed forms lose at most a few ulp to cancellation):
+// φ1 = (e^z − 1)/z, ψ = (e^z (z − 1) + 1)/z² = (e^z − φ1)/z.
+void closed_moments(Complex ez, Complex inverse_z, Complex& phi1, Complex& psi) {
+  phi1 = times(ez - 1.0, inverse_z);
+  psi = times(ez - phi1, inverse_z);
+}
+
+void exponential_moments(Complex z, Complex& phi1, Complex& psi) {
+  if (series_moments(z, phi1, psi)) return;
+  const double magnitude = std::exp(z.real());
+  closed_moments(Complex(magnitude * std::cos(z.imag()), magnitude * std::sin(z.imag())), std::conj(z) / std::norm(z), phi1,
+                 psi);
+}
+
+// Σ_i c_i φ1(z_i) and Σ_i c_i ψ(z_i) over components whose z_i = s_i ζ lie inside the series radius
+// (0 ≤ s_i < 1, |ζ| = ½), by the power series summed over the components first:
+//   Σ_i c_i φ1(z_i) = Σ_m ζ^m/(m+1)! Σ_i c_i s_i^m,   Σ_i c_i ψ(z_i) = Σ_m ζ^m/(m! (m+2)) Σ_i c_i s_i^m,
+// four real operations per term and component instead of two complex Horner steps. Each component
+// adds the terms its own |z_i| needs (as series_moments); the error stays ε Σ |c_i| e^{|z_i|}.
+class SeriesSums {
+ public:
+  void add(Complex c, double s) {
+    const double size = 0.25 * s * s;  // |z|²
+    const int terms = size < 1e-4 ? 8 : size < 1e-2 ? 12 : size < 0.0625 ? 14 : series_terms;
+    for (int m = 0; m < terms - 1; ++m) {
+      sums_[static_cast<std::size_t>(m)] += c;
+      c *= s;
+    }
+  }
+  // Adds the two sums at ζ to phi1_sum and psi_sum.
+  void finish(Complex zeta, Complex& phi1_sum, Complex& psi_sum) const {
+    Complex phi1 = 0.0, psi = 0.0;
+    for (int m = series_terms - 2; m >= 0; --m) {
+      const auto n = static_cast<std::size_t>(m);
+      phi1 = times(phi1, zeta) + inverse_factorial[n + 1] * sums_[n];
+      psi = times(psi, zeta) + inverse_factorial[n] / (m + 2) * sums_[n];
+    }
+    phi1_sum += phi1;
+    psi_sum += psi;
+  }
+
+ private:
+  std::array<Complex, series_terms> sums_{};
+};
 
 // Running pressure moments of one edge (over the edge parameter s, divided by ρg):
 // ∫ p ds, ∫ p (s − s_piece) ds accumulated into ∫ p ds and ∫ p (r − r_G1) ds / |d|.
@@ -95,6 +139,45 @@ void add_exponential(double amplitude, double kappa, double offset, double k, do
   out.j1 += from_end ? h * i0 - i1 : i1;  // u = h − v on the reversed piece
 }
 
+// Deep water: adds the incident-wave part of ∫ p/(ρg) over [s0, s0 + h] for all components at once,
+// each term c_i e^{λ_i u} with c_i = r a_i e^{k_i (κ̂ y + i x) + i(φ_i − δ ω_i t)} at the reference end and
+// λ_i h = k_i w, w = ±(κ̂ d_y + i d_x) h (κ̂ = 1 below still water, 0 on the crest extension): both are
+// phasors e^{k_i z} of the field (component_phasors.hpp), by recurrence on a harmonic grid.
+void add_deep_water_terms(const WaveField& wave, double t, double ramp, bool airy, const Edge& edge, double s0,
+                          double h, PieceIntegrals& out) {
+  const double decay = airy ? 1.0 : 0.0;
+  const bool from_end = airy && edge.d.y() > 0.0;  // integrate from the end with the larger exponent
+  const Eigen::Vector2d reference = edge.a + (from_end ? s0 + h : s0) * edge.d;
+  const Complex w = (from_end ? -h : h) * Complex(decay * edge.d.y(), edge.d.x());
+  ComponentPhasors value(wave, Complex(decay * reference.y(), reference.x()), t), growth(wave, w, 0.0);
+  const std::vector<WaveComponent>& components = wave.components();
+  const std::vector<Complex>& amplitudes = wave.complex_amplitudes();
+  // z_i = k_i w = s_i ζ with |ζ| = ½: s_i < 1 inside the series radius.
+  const double w_size = std::abs(w), to_series = w_size / series_radius;
+  const Complex zeta = w_size > 0.0 ? w / to_series : Complex(0.0);
+  const Complex inverse_w = w_size > 0.0 ? std::conj(w) / std::norm(w) : Complex(0.0);  // 1/z_i = (1/w)/k_i
+  SeriesSums series;
+  Complex phi1_sum = 0.0, psi_sum = 0.0;  // Σ c φ1(λh), Σ c ψ(λh) without r
+  for (std::size_t i = 0; i < components.size(); ++i) {
+    const Complex c = times(amplitudes[i], value.next());
+    const Complex exponential = growth.next();
+    const double s = components[i].wave_number * to_series;
+    if (s < 1.0) {
+      series.add(c, s);
+      continue;
+    }
+    Complex phi1, psi;
+    closed_moments(exponential, inverse_w / components[i].wave_number, phi1, psi);
+    phi1_sum += times(c, phi1);
+    psi_sum += times(c, psi);
+  }
+  series.finish(zeta, phi1_sum, psi_sum);
+  const double sum0 = phi1_sum.real(), sum1 = psi_sum.real();
+  const double i0 = ramp * h * sum0, i1 = ramp * h * h * sum1;
+  out.j0 += i0;
+  out.j1 += from_end ? h * i0 - i1 : i1;  // u = h − v on the reversed piece
+}
+
 // ∫ p/(ρg) over the wetted piece [s0, s1] of an edge, below (airy) or above still water.
 PieceIntegrals piece_integrals(const WaveField* wave, double t, const Edge& edge, double s0, double s1, bool airy) {
   const double h = s1 - s0;
@@ -105,21 +188,18 @@ PieceIntegrals piece_integrals(const WaveField* wave, double t, const Edge& edge
   if (wave == nullptr) return out;
   const double ramp = wave->ramp(t);
   if (ramp == 0.0) return out;
+  if (wave->deep() || !airy) {
+    add_deep_water_terms(*wave, t, ramp, airy, edge, s0, h, out);
+    return out;
+  }
   const double x0 = edge.a.x() + s0 * edge.d.x();
   const double depth = wave->depth();
-  for (const WaveComponent& c : wave->components()) {
-    const double amplitude = ramp * c.amplitude;
+  for (const WaveComponent& c : wave->components()) {  // cosh(k(y + d))/cosh(kd) = (e^{ky} + e^{−k(y + 2d)}) / (1 + e^{−2kd})
     const double k = c.wave_number;
     const double theta0 = k * x0 - wave->direction() * c.angular_frequency * t + c.phase;
-    if (!airy) {  // crest extension: ρg ζ, no decay
-      add_exponential(amplitude, 0.0, 0.0, k, theta0, y0, edge.d, h, out);
-    } else if (wave->deep()) {  // e^{ky}
-      add_exponential(amplitude, k, 0.0, k, theta0, y0, edge.d, h, out);
-    } else {  // cosh(k(y + d))/cosh(kd) = (e^{ky} + e^{−k(y + 2d)}) / (1 + e^{−2kd})
-      const double scale = amplitude / (1.0 + std::exp(-2.0 * k * depth));
-      add_exponential(scale, k, 0.0, k, theta0, y0, edge.d, h, out);
-      add_exponential(scale, -k, -2.0 * k * depth, k, theta0, y0, edge.d, h, out);
-    }
+    const double scale = ramp * c.amplitude / (1.0 + std::exp(-2.0 * k * depth));
+    add_exponential(scale, k, 0.0, k, theta0, y0, edge.d, h, out);
+    add_exponential(scale, -k, -2.0 * k * depth, k, theta0, y0, edge.d, h, out);
   }
   return out;
 }

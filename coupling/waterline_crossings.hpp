@@ -9,7 +9,9 @@
 // bound only times the width. Each monotone interval with a sign change holds exactly one root,
 // found by Newton's method kept inside the bracket (bisection when a step leaves it) until its step is
 // below 1e-9 (quadratic convergence: the root is then good to round-off). Cost per evaluation of g,
-// g', g'': one sine and cosine per wave component. docs/hydrodynamics.md §7 ("Cost").
+// g', g'': one phasor per wave component (coupling/component_phasors.hpp: a sine and cosine, or two
+// complex products by recurrence on a harmonic grid); the start intervals, two phasors per component
+// and one complex product per component and sample. docs/hydrodynamics.md §7 ("Cost").
 #pragma once
 
 #include <Eigen/Dense>

@@ -44,6 +44,24 @@ void check_environment(double direction, double depth, double gravity) {
     throw std::invalid_argument("WaveField: gravity must be finite and > 0, got " + std::to_string(gravity));
 }
 
+// ω_i = (n0 + i) Δω to 4 ulp for every i (N ≥ 2, deep water only: there k_i is quadratic in n).
+WaveField::HarmonicGrid detect_harmonic_grid(const std::vector<WaveComponent>& components, double depth, double gravity) {
+  WaveField::HarmonicGrid grid;
+  const std::size_t count = components.size();
+  if (count < 2 || !std::isinf(depth)) return grid;
+  const double first = components.front().angular_frequency, last = components.back().angular_frequency;
+  const double guess = (last - first) / static_cast<double>(count - 1);
+  if (!(guess > 0.0)) return grid;
+  const double n0 = std::round(first / guess);
+  if (!(n0 >= 0.0) || n0 > 1e7) return grid;  // (2n + 1) stays exact in the recurrence
+  const double step = last / (n0 + static_cast<double>(count - 1));
+  for (std::size_t i = 0; i < count; ++i) {
+    const double omega = components[i].angular_frequency, on_grid = (n0 + static_cast<double>(i)) * step;
+    if (!(std::abs(omega - on_grid) <= 4.0 * std::numeric_limits<double>::epsilon() * omega)) return grid;
+  }
+  return {true, n0, step, step * step / gravity};
+}
+
 }  // namespace
 
 double WaveField::wave_number_from_dispersion(double omega, double d, double g) {
@@ -68,6 +86,7 @@ WaveField WaveField::from_components(const std::vector<ComponentSpec>& component
   field.depth_ = depth;
   field.gravity_ = gravity;
   field.components_.reserve(components.size());
+  field.complex_amplitudes_.reserve(components.size());
   for (std::size_t i = 0; i < components.size(); ++i) {
     const ComponentSpec& c = components[i];
     const std::string which = "WaveField: component " + std::to_string(i) + ": ";
@@ -78,12 +97,14 @@ WaveField WaveField::from_components(const std::vector<ComponentSpec>& component
     if (!std::isfinite(c.phase)) throw std::invalid_argument(which + "phase must be finite, got " + std::to_string(c.phase));
     const double k = wave_number_from_dispersion(c.angular_frequency, depth, gravity);
     field.components_.push_back({c.amplitude, c.angular_frequency, k, c.phase});
+    field.complex_amplitudes_.push_back(std::polar(c.amplitude, c.phase));
     field.amplitude_sum_ += c.amplitude;
     field.slope_sum_ += c.amplitude * k;
     field.curvature_sum_ += c.amplitude * k * k;
     field.third_derivative_sum_ += c.amplitude * k * k * k;
     if (c.amplitude > 0.0) field.max_wave_number_ = std::max(field.max_wave_number_, k);
   }
+  field.harmonic_grid_ = detect_harmonic_grid(field.components_, depth, gravity);
   return field;
 }
 

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <complex>
 #include <limits>
 #include <vector>
 
@@ -66,6 +67,26 @@ class WaveField {
   double curvature_bound(double t) const { return ramp(t) * curvature_sum_; }
   double third_derivative_bound(double t) const { return ramp(t) * third_derivative_sum_; }
   double max_wave_number() const { return max_wave_number_; }  // the largest k_i [1/m] (0: calm)
+  // a_i e^{iφ_i}, the time-independent factor of every component sum.
+  const std::vector<std::complex<double>>& complex_amplitudes() const { return complex_amplitudes_; }
+
+  // Components on whole multiples of one frequency step, ω_i = (n0 + i) Δω for i = 0 … N−1 (N ≥ 2,
+  // as hydro::synthesize makes them; checked to 4 ulp), in deep water, so k_i = (n0 + i)² Δω²/g:
+  // sums over them run by recurrence (coupling/component_phasors.hpp). active = false otherwise.
+  struct HarmonicGrid {
+    bool active = false;
+    double first_harmonic = 0.0;    // n0
+    double frequency_step = 0.0;    // Δω [rad/s]
+    double wave_number_step = 0.0;  // Δω²/g [1/m]
+  };
+  const HarmonicGrid& harmonic_grid() const { return harmonic_grid_; }
+  // The same field with its sums taken component by component by the direct formula (the reference
+  // for the recurrence: tests, benchmarks).
+  WaveField with_direct_sums() const {
+    WaveField copy = *this;
+    copy.harmonic_grid_ = HarmonicGrid{};
+    return copy;
+  }
   // Total pressure [Pa] (the formula is only meaningful above the sea bed).
   double pressure(double x, double y, double t, double density) const;
   // f_i(y) of component i for y ≤ 0: e^{k y} or cosh(k(y + d)) / cosh(k d).
@@ -83,6 +104,8 @@ class WaveField {
   double gravity_ = 9.81;       // [m/s²]
   double amplitude_sum_ = 0.0, slope_sum_ = 0.0, curvature_sum_ = 0.0, third_derivative_sum_ = 0.0;
   double max_wave_number_ = 0.0;
+  std::vector<std::complex<double>> complex_amplitudes_;
+  HarmonicGrid harmonic_grid_;
 };
 
 }  // namespace ffrf::coupling

@@ -1,14 +1,17 @@
 // The closed-form hull pressure integral against the second method, the sampled-and-bisected
 // waterline with 8-point Gauss–Legendre quadrature ffrf used before (hull_pressure_quadrature.hpp),
 // over poses that put the waterline on every edge (trimmed, heaved, deck overtopped, keel emerging,
-// submerged), regular waves deep and finite depth, and an irregular sea of several components; and the
-// waterline crossings against dense sampling of y − ζ along an edge.
+// submerged), regular waves deep and finite depth, and an irregular sea of several components; the
+// reference crane's 20-minute and 3-hour JONSWAP seas with sums by the harmonic-grid recurrence
+// (coupling/component_phasors.hpp) against the same seas summed component by component and against
+// the quadrature; and the waterline crossings against dense sampling of y − ζ along an edge.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <random>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -17,6 +20,7 @@
 #include "coupling/hull_pressure.hpp"
 #include "coupling/waterline_crossings.hpp"
 #include "hull_pressure_quadrature.hpp"
+#include "jonswap_test_sea.hpp"
 
 namespace {
 
@@ -122,6 +126,44 @@ TEST(HullPressureMethods, WaterlineCrossingsMatchDenseSampling) {
     }
   }
   EXPECT_GE(total, 40);  // the cases really cross the surface, many times
+}
+
+// The crane's long seas (deep: sums by recurrence; 30 m: direct, the fallback) on random poses and
+// times against the same field summed by the direct formula, to 1e-10 of the box's buoyancy; and, in
+// the 3-hour deep sea, against the quadrature (direct point pressures, sampled and bisected waterline).
+TEST(HullPressureMethods, LongSeaRecurrenceAgreesWithDirectSumsAndQuadrature) {
+  std::mt19937_64 random(31);
+  std::uniform_real_distribution<double> surge(-20.0, 20.0), heave(-1.5, 1.5), pitch(-0.03, 0.03), time(60.0, 10799.0);
+  const double scale = rho * g * hull.width * 90.0 * 8.0;  // the box's full buoyancy
+  double worst = 0.0, worst_quadrature = 0.0;
+  for (const double record : {1200.0, 10800.0}) {
+    for (const double depth : {deep, 30.0}) {
+      const WaveField wave = ffrf::test_support::jonswap_test_sea(record, depth, 3);
+      ASSERT_EQ(wave.harmonic_grid().active, std::isinf(depth));
+      const WaveField direct = wave.with_direct_sums();
+      for (int trial = 0; trial < 12; ++trial) {
+        const Vector2d g1(surge(random), 1.91 + heave(random));
+        const double theta = pitch(random), t = trial == 0 ? 10799.9 : time(random);
+        const HullLoad fast = hull_pressure_load(hull, &wave, rho, g, g1, theta, t);
+        const HullLoad reference = hull_pressure_load(hull, &direct, rho, g, g1, theta, t);
+        worst = std::max({worst, std::abs(fast.force.x() - reference.force.x()) / scale,
+                          std::abs(fast.force.y() - reference.force.y()) / scale,
+                          std::abs(fast.moment - reference.moment) / (scale * 90.0),
+                          std::abs(fast.wetted_length - reference.wetted_length) / 196.0});
+        if (record == 10800.0 && std::isinf(depth) && trial < 3) {
+          const HullLoad quadrature = ffrf::coupling::testing::QuadratureHullPressure(&wave, rho, g, t, 512).load(hull, g1, theta);
+          worst_quadrature = std::max({worst_quadrature, std::abs(fast.force.x() - quadrature.force.x()) / scale,
+                                       std::abs(fast.force.y() - quadrature.force.y()) / scale,
+                                       std::abs(fast.moment - quadrature.moment) / (scale * 90.0)});
+        }
+      }
+    }
+  }
+  EXPECT_LT(worst, 1e-10);
+  EXPECT_LT(worst_quadrature, 1e-10);
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3g / %.3g", worst, worst_quadrature);
+  RecordProperty("worst_relative_difference_direct_quadrature", text);
 }
 
 }  // namespace

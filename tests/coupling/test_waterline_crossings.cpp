@@ -2,9 +2,11 @@
 // irregular seas, against two references independent of the local bound: the search with the wave
 // field's global bounds only (tests/coupling/waterline_crossings_global_bounds.hpp, the code before
 // the local bounds; rigorous, slow for many components) and sign changes on a dense grid refined by
-// bisection. Seas: a JONSWAP-shaped spectrum (Hs 2 m, Tp 8 s) on Δω = 2π/record over [ωp/2, 3ωp]
-// with random phases, 20-minute and 3-hour records (about 375 and 3 400 components), deep water and
-// 30 m depth; edges: the reference hull's box (90 m × 8 m) at random heave, pitch and time, and a
+// bisection. Seas: the reference crane's JONSWAP sea (Hs 2 m, Tp 8 s) on Δω = 2π/record over [ωp/2, 3ωp]
+// with random phases (jonswap_test_sea.hpp), 20-minute and 3-hour records (376 and 3 376 components),
+// deep water (sums by the harmonic-grid recurrence, coupling/component_phasors.hpp) and 30 m depth
+// (direct sums); the recurrence's phasors against the direct formula up to a 3-hour sea's last
+// component; edges: the reference hull's box (90 m × 8 m) at random heave, pitch and time, and a
 // nearly level edge at the still-water line (many crossings).
 #include <gtest/gtest.h>
 
@@ -13,8 +15,10 @@
 #include <random>
 #include <vector>
 
+#include "coupling/component_phasors.hpp"
 #include "coupling/waterline_crossings.hpp"
 #include "coupling/wave_field.hpp"
+#include "jonswap_test_sea.hpp"
 #include "waterline_crossings_global_bounds.hpp"
 
 namespace {
@@ -26,29 +30,8 @@ using ffrf::coupling::WaveField;
 
 constexpr double g = 9.81;
 
-// JONSWAP shape (γ 3.3, σ 0.07/0.09) scaled so that Σ a²/2 = Hs²/16 over the band.
 WaveField jonswap_sea(double record, double depth, unsigned seed) {
-  const double hs = 2.0, wp = 2.0 * std::numbers::pi / 8.0, dw = 2.0 * std::numbers::pi / record;
-  std::vector<ComponentSpec> list;
-  double variance = 0.0;
-  for (int n = 1;; ++n) {
-    const double w = n * dw;
-    if (w < 0.5 * wp) continue;
-    if (w > 3.0 * wp) break;
-    const double sigma = w <= wp ? 0.07 : 0.09;
-    const double shape = std::pow(w, -5.0) * std::exp(-1.25 * std::pow(wp / w, 4.0)) *
-                         std::pow(3.3, std::exp(-(w - wp) * (w - wp) / (2.0 * sigma * sigma * wp * wp)));
-    list.push_back({w, std::sqrt(2.0 * shape * dw), 0.0});
-    variance += shape * dw;
-  }
-  std::mt19937_64 random(seed);
-  std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi);
-  const double scale = std::sqrt(hs * hs / 16.0 / variance);
-  for (ComponentSpec& c : list) {
-    c.amplitude *= scale;
-    c.phase = phase(random);
-  }
-  return WaveField::from_components(list, 1.0, 0.0, depth, g);
+  return ffrf::test_support::jonswap_test_sea(record, depth, seed);
 }
 
 struct Edge {
@@ -94,6 +77,7 @@ TEST(WaterlineCrossings, LocalBoundsFindTheSameRootsAsGlobalBoundsOnRandomSeas) 
   for (const double record : {1200.0, 10800.0}) {
     for (const double depth : {std::numeric_limits<double>::infinity(), 30.0}) {
       const WaveField wave = jonswap_sea(record, depth, static_cast<unsigned>(record + depth));
+      ASSERT_EQ(wave.harmonic_grid().active, std::isinf(depth));  // deep: the recurrence; 30 m: direct sums
       for (int trial = 0; trial < 8; ++trial) {
         const double t = time(random);
         for (const Edge& edge : hull_edges(heave(random), pitch(random))) {
@@ -155,6 +139,39 @@ TEST(WaterlineCrossings, ThirdDerivativeBoundHoldsAndIsTheComponentSum) {
   }
   EXPECT_GT(largest, 0.0);
   EXPECT_LT(largest, sum);
+}
+
+// Every phasor e^{k z − iδωt} of a 3-hour sea (3 376 components on the harmonic grid) by the recurrence
+// against the direct formula, at the end of the record and at points that decay (keel depth), that
+// only turn (the elevation) and that grow along a piece (the pressure integral's e^{λh}). Without
+// re-seeding the recurrence drifts by ~j²/2 ulp after j components (3e-10 at the last one); the seeds
+// keep it to round-off.
+TEST(ComponentPhasors, RecurrenceMatchesTheDirectFormulaToTheLastComponentOfA3HourSea) {
+  const WaveField wave = jonswap_sea(10800.0, std::numeric_limits<double>::infinity(), 5);
+  ASSERT_TRUE(wave.harmonic_grid().active);
+  ASSERT_EQ(wave.components().size(), 3376u);
+  using ffrf::coupling::Complex;
+  double worst = 0.0, last = 0.0;
+  for (const double t : {0.0, 4321.0, 10799.9}) {
+    for (const Complex z : {Complex(0.0, 61.3), Complex(-6.2, -37.9), Complex(-0.4, 88.0), Complex(-7.9, 1.2)}) {
+      ffrf::coupling::ComponentPhasors phasors(wave, z, t);
+      for (const auto& c : wave.components()) {
+        const Complex direct = std::exp(c.wave_number * z.real()) *
+                               Complex(std::cos(c.wave_number * z.imag() - c.angular_frequency * t),
+                                       std::sin(c.wave_number * z.imag() - c.angular_frequency * t));
+        const double error = std::abs(phasors.next() - direct) / std::abs(direct);
+        worst = std::max(worst, error);
+        if (&c == &wave.components().back()) last = std::max(last, error);
+      }
+    }
+  }
+  // The direct formula's own phase rounds to ~ulp(ω t) = 4e-12 rad at t = 3 h.
+  EXPECT_LT(worst, 2e-11);
+  EXPECT_LT(last, 2e-11);
+  // Off the grid (components listed out of order) every phasor is the direct formula.
+  std::vector<ComponentSpec> shuffled;
+  for (const auto& c : wave.components()) shuffled.insert(shuffled.begin(), {c.angular_frequency, c.amplitude, c.phase});
+  EXPECT_FALSE(WaveField::from_components(shuffled, 1.0, 0.0, std::numeric_limits<double>::infinity(), g).harmonic_grid().active);
 }
 
 }  // namespace
