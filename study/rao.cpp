@@ -77,7 +77,7 @@ std::vector<RootAndShape> constant_roots(const LinearisedCrane& linear) {
     const std::complex<double> lambda = solver.eigenvalues()(i);
     if (lambda.imag() < 0.0 || std::abs(lambda) == 0.0) continue;  // one of each complex pair
     // A real (overdamped) root: its partner is another real root; both are listed.
-    roots.push_back({lambda, solver.eigenvectors().col(i).head(n)});
+    roots.push_back({lambda, solver.eigenvectors().col(i).head(n), {}});
   }
   return roots;
 }

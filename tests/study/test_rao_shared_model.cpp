@@ -128,7 +128,9 @@ TEST(RaoSharedModel, ANewtonStartThatCannotConvergeIsFlaggedAndKeepsTheConstantR
     EXPECT_EQ(capped[j].damping_ratio, constant[j].damping_ratio);
     const bool asked_here = constant[j].angular_frequency <= hull.refine_below;
     EXPECT_EQ(capped[j].unrefined.empty(), !asked_here) << "mode " << j + 1;
-    if (asked_here) EXPECT_NE(capped[j].unrefined.find("did not converge in 0 steps"), std::string::npos) << capped[j].unrefined;
+    if (asked_here) {
+      EXPECT_NE(capped[j].unrefined.find("did not converge in 0 steps"), std::string::npos) << capped[j].unrefined;
+    }
     flagged += !capped[j].unrefined.empty();
   }
   EXPECT_EQ(flagged, asked);
