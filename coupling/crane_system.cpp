@@ -14,6 +14,15 @@ std::unique_ptr<CraneEquations> CraneConstants<Coords>::equations() const {
   return std::make_unique<CraneSystem<Coords>>(this->shared_from_this());
 }
 
+template <fem::ElasticCoordinates Coords>
+std::shared_ptr<const SharedCraneModel> CraneConstants<Coords>::in_waters(const HullModel& hull,
+                                                                         const std::optional<WaveField>& wave) const {
+  CraneModel<Coords> crane = model;
+  crane.hull = hull;
+  crane.wave = wave;
+  return std::make_shared<const CraneConstants<Coords>>(std::move(crane));
+}
+
 }  // namespace detail
 
 template <fem::ElasticCoordinates Coords>

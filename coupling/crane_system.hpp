@@ -12,6 +12,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "coupling/crane_equations.hpp"
 #include "coupling/crane_model.hpp"
@@ -25,6 +26,11 @@ class SharedCraneModel {
   // Thread-safe (the model is read-only); each returned object belongs to one thread at a time.
   virtual std::unique_ptr<CraneEquations> equations() const = 0;
   virtual int elastic_size() const = 0;
+  // The same crane — boom and its elastic coordinates, mount, cargo, wire — with another hull (its
+  // hydrodynamics) and wave: a new model (this one unchanged) whose constants are derived again from
+  // the copied coordinates (the boom's matrices, modes and projections are not rebuilt). The frequency
+  // domain's one crane in a regular wave per frequency (study/rao.cpp).
+  virtual std::shared_ptr<const SharedCraneModel> in_waters(const HullModel& hull, const std::optional<WaveField>& wave) const = 0;
 };
 
 // Computes the model's constant data (factorizes M_ff; throws std::runtime_error when it is not

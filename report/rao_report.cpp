@@ -172,6 +172,24 @@ std::string rao_chart_script(const std::string& name, const study::RaoResult& re
   return script + "unset multiplot\n";
 }
 
+namespace {
+
+// The memory hull's modes Newton could not refine (study::NaturalMode::unrefined), one line each
+// after `prefix`; empty when every mode asked to be refined was.
+std::string unrefined_modes(const study::RaoResult& result, std::string_view prefix) {
+  std::string out;
+  for (const study::ModelRao& m : result.models) {
+    for (std::size_t j = 0; j < m.modes.size(); ++j) {
+      if (m.modes[j].unrefined.empty()) continue;
+      out += fmt::format("{}{} mode {} (T = {:.4g} s) is the constant system's, not refined: {}\n", prefix, m.choice.label(), j + 1,
+                         m.modes[j].period(), m.modes[j].unrefined);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string rao_markdown(const study::RaoResult& result, const std::vector<study::TimeDomainCheck>& checks,
                          const RaoContext& context, bool with_charts) {
   const auto& omegas = result.angular_frequencies;
@@ -197,11 +215,16 @@ std::string rao_markdown(const study::RaoResult& result, const std::vector<study
   for (std::size_t j = 0; j < static_cast<std::size_t>(shown_modes); ++j) {
     out += fmt::format("| {} |", j + 1);
     for (const study::ModelRao& m : result.models) {
-      out += j < m.modes.size() ? fmt::format(" {:.4g} s, ζ = {:.3g} %, {} |", m.modes[j].period(),
-                                              100.0 * m.modes[j].damping_ratio, m.modes[j].dominant)
+      out += j < m.modes.size() ? fmt::format(" {:.4g} s, ζ = {:.3g} %, {}{} |", m.modes[j].period(),
+                                              100.0 * m.modes[j].damping_ratio, m.modes[j].dominant,
+                                              m.modes[j].unrefined.empty() ? "" : " (not refined)")
                                 : " – |";
     }
     out += '\n';
+  }
+  if (const std::string unrefined = unrefined_modes(result, "- "); !unrefined.empty()) {
+    out += "\nModes of the memory hull that Newton's method on det D(s) did not refine (they are the constant "
+           "system's roots):\n\n" + unrefined;
   }
   out += "\n## Largest response per output\n\n| output |";
   for (const study::ModelRao& m : result.models) out += fmt::format(" {} |", m.choice.label());
@@ -281,6 +304,7 @@ std::string rao_json(const study::RaoResult& result, const std::vector<study::Ti
                                         {"period_s", mode.period()},
                                         {"damping_ratio", mode.damping_ratio},
                                         {"dominant", mode.dominant}});
+      if (!mode.unrefined.empty()) model["natural_modes"].back()["not_refined"] = mode.unrefined;
     }
     Json raos = Json::object();
     for (int k = 0; k < coupling::linear_output_count; ++k) {
@@ -328,10 +352,12 @@ std::string rao_text(const study::RaoResult& result, const std::vector<study::Ti
     out += fmt::format("\n{} ({} coordinates): coupled natural modes\n", m.choice.label(), m.coordinates);
     for (std::size_t j = 0; j < std::min<std::size_t>(shown_modes, m.modes.size()); ++j) {
       const study::NaturalMode& mode = m.modes[j];
-      out += fmt::format("  {:>2}  T = {:>9.4f} s  omega = {:>9.4f} rad/s  zeta = {:>7.3f} %  {}\n", j + 1, mode.period(),
-                         mode.angular_frequency, 100.0 * mode.damping_ratio, mode.dominant);
+      out += fmt::format("  {:>2}  T = {:>9.4f} s  omega = {:>9.4f} rad/s  zeta = {:>7.3f} %  {}{}\n", j + 1, mode.period(),
+                         mode.angular_frequency, 100.0 * mode.damping_ratio, mode.dominant,
+                         mode.unrefined.empty() ? "" : "  (not refined)");
     }
   }
+  if (const std::string unrefined = unrefined_modes(result, "warning: "); !unrefined.empty()) out += "\n" + unrefined;
   for (const auto& check : checks) {
     out += fmt::format("\ntime-domain check {}: {} (worst amplitude deviation {} against {})\n", check.choice.label(),
                        check.passed() ? "PASS" : "FAIL", percent(check.worst_deviation()), percent(check.request.tolerance));

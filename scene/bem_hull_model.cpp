@@ -11,6 +11,7 @@
 
 #include "hydro/retardation.hpp"
 #include "hydro/state_space_fit.hpp"
+#include "scene/scene_loader.hpp"
 
 namespace ffrf::scene {
 
@@ -18,6 +19,15 @@ Eigen::Vector2d bem_origin_offset(const Scene& scene) {
   const Hull& hull = *scene.hull;
   const BemHull& bem = *scene.bem;
   return {hull.g1_aft_of_mid_length + bem.origin_forward_of_mid_length, bem.origin_above_keel - hull.g1_above_keel};
+}
+
+Scene with_radiation(const Scene& scene, hydro::RadiationKind kind) {
+  if (!scene.bem) {
+    throw SceneError({SceneProblem{scene.file, 0, 0, "bem", "", "a radiation model needs BEM coefficients: the scene has no [bem] section"}});
+  }
+  Scene copy = scene;
+  copy.bem->radiation_model = kind;
+  return copy;
 }
 
 double constant_radiation_frequency(const Scene& scene) {

@@ -23,6 +23,8 @@ namespace ffrf::scene {
 Eigen::Vector2d bem_origin_offset(const Scene& scene);
 // ω_c of the constant model (see above) [rad/s].
 double constant_radiation_frequency(const Scene& scene);
+// A copy of the scene whose [bem] uses `kind` (throws SceneError when it has no [bem]).
+Scene with_radiation(const Scene& scene, hydro::RadiationKind kind);
 // The radiation model of scene.bem (its radiation_model), referred to G1.
 std::shared_ptr<const hydro::RadiationMemoryModel> bem_radiation_model(const Scene& scene);
 // Fills hull.radiation_memory and, with bem.excitation = "bem" and a wave, hull.bem_excitation

@@ -152,6 +152,18 @@ fem::AxialForce static_reference_axial_force(const Scene& scene) {
                                  cargo_weight * along_axis);
 }
 
+SceneWaters scene_waters(const Scene& scene) {
+  SceneWaters waters{scene.hub ? driven_hub(*scene.hub) : floating_hull(scene), std::nullopt};
+  if (scene.is_crane()) waters.wave = scene_wave_field(scene);  // regular: one component; irregular: synthesized
+  if (scene.bem && scene.is_crane()) apply_bem_hydrodynamics(scene, waters.hull, waters.wave);
+  return waters;
+}
+
+std::shared_ptr<const coupling::SharedCraneModel> with_waters(const coupling::SharedCraneModel& model, const Scene& scene) {
+  const SceneWaters waters = scene_waters(scene);
+  return model.in_waters(waters.hull, waters.wave);
+}
+
 template <fem::ElasticCoordinates Coords>
 coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords, Stiffening stiffening) {
   if (!scene.has_base() || !scene.boom.mount || (scene.is_crane() && (!scene.cargo || !scene.wire))) {
@@ -174,9 +186,11 @@ coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords
   if (centrifugal.size() > 0) boom.set_centrifugal_stiffness(std::move(centrifugal));
   coupling::BodyPoint tip = boom.point(scene.boom.mesh.length);
   const BoomMount& mount = *scene.boom.mount;
-  coupling::CraneModel<Coords> model{scene.hub ? driven_hub(*scene.hub) : floating_hull(scene),
+  SceneWaters waters = scene_waters(scene);
+  coupling::CraneModel<Coords> model{std::move(waters.hull),
                                      {Eigen::Vector2d(mount.root_x, mount.root_y), mount.angle},
-                                     std::move(boom), std::move(tip), {}, {}, env.gravity, env.water_density, std::nullopt};
+                                     std::move(boom), std::move(tip), {}, {}, env.gravity, env.water_density,
+                                     std::move(waters.wave)};
   if (scene.cargo && scene.wire) {
     const Cargo& cargo = *scene.cargo;
     const Wire& wire = *scene.wire;
@@ -185,8 +199,6 @@ coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords
   } else {
     model.cargo.present = false;
   }
-  if (scene.is_crane()) model.wave = scene_wave_field(scene);  // regular: one component; irregular: synthesized
-  if (scene.bem && scene.is_crane()) apply_bem_hydrodynamics(scene, model.hull, model.wave);
   return model;
 }
 

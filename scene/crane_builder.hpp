@@ -68,6 +68,19 @@ modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& 
 std::shared_ptr<const coupling::SharedCraneModel> build_shared_crane(const Scene& scene, const BoomChoice& choice,
                                                                      modal::ModeCache* cache = nullptr);
 
+// The hull (or hub) of a scene with its hydrodynamics, and the wave: what a crane model takes from
+// the scene's waters (build_crane_model). Throws SceneError (a hull that cannot float the load).
+struct SceneWaters {
+  coupling::HullModel hull;
+  std::optional<coupling::WaveField> wave;  // empty: calm water (or a hub)
+};
+SceneWaters scene_waters(const Scene& scene);
+
+// `model` (built from a scene that differs from `scene` at most in its waters: wave, sea, [bem]
+// radiation model) with the waters of `scene`: equal to build_shared_crane(scene, its choice)
+// without rebuilding the boom (coupling::SharedCraneModel::in_waters).
+std::shared_ptr<const coupling::SharedCraneModel> with_waters(const coupling::SharedCraneModel& model, const Scene& scene);
+
 // The whole system for a choice, ready for static equilibrium and integration: build_shared_crane's
 // model with its own workspace.
 std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache = nullptr);

@@ -34,13 +34,15 @@ Comparison compare(const scene::Scene& scene, const CompareRequest& request,
   c.stiffening = request.stiffening.value_or(physics_stiffening(scene, request.tolerance));
   scene::Scene modelled = scene;
   modelled.boom.stiffening = c.stiffening;
+  scene::CraneModelCache models(modelled, &cache);  // nodal N = 16 is a reference level and a compared model: built once
   tell("reference");
-  c.reference = converged_reference(modelled, request.reference, request.settings.duration, &cache);
+  c.reference = converged_reference(models, request.reference, request.settings.duration);
   c.window_start = error_window(scene, request.settings.duration);
   c.judged = judged_outputs(scene);
   for (const ComparedModel& model : compared_models()) {
     tell(model.choice.label());
-    c.runs.push_back(run_model(modelled, model.choice, request.settings, &cache));
+    PreparedRun prepared = prepare_run(models, model.choice);
+    c.runs.push_back(integrate_run(modelled, prepared, request.settings));
     c.plotted.push_back(model.plotted);
     c.errors.push_back(coupling::compare_runs(c.runs.back().result, c.reference.run.result, c.window_start));
     c.split.push_back(split_errors(c.runs.back(), c.reference.run, c.window_start));

@@ -3,7 +3,8 @@
 // 2, 4 with and without static modes), each through the one pipeline from the scene's initial
 // state, each measured against the reference over the error window on the judged outputs
 // (study/error_measure.hpp): the total error per output split into its static and dynamic parts
-// (study/error_split.hpp), and the verdict against a tolerance (study/verdict.hpp).
+// (study/error_split.hpp), and the verdict against a tolerance (study/verdict.hpp). The reference's
+// levels and the compared models come from one scene::CraneModelCache (nodal N = 16 is built once).
 #pragma once
 
 #include <functional>

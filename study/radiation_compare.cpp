@@ -11,16 +11,6 @@
 
 namespace ffrf::study {
 
-scene::Scene with_radiation(const scene::Scene& scene, hydro::RadiationKind kind) {
-  if (!scene.bem) {
-    throw scene::SceneError({scene::SceneProblem{scene.file, 0, 0, "bem", "",
-                                                 "a radiation model needs BEM coefficients: the scene has no [bem] section"}});
-  }
-  scene::Scene copy = scene;
-  copy.bem->radiation_model = kind;
-  return copy;
-}
-
 std::string radiation_label(const scene::Scene& scene) {
   if (!scene.bem) return "constant (scene [radiation])";
   const scene::BemHull& bem = *scene.bem;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/bem_hull_model.hpp"
 #include "study/error_measure.hpp"
 #include "study/run_pipeline.hpp"
 #include "study/verdict.hpp"
@@ -27,7 +28,7 @@ struct RadiationComparison {
 };
 
 // A copy of the scene whose [bem] uses `kind` (throws scene::SceneError when it has no [bem]).
-scene::Scene with_radiation(const scene::Scene& scene, hydro::RadiationKind kind);
+using scene::with_radiation;  // scene/bem_hull_model.hpp
 // The label of the scene's radiation model ("convolution T_c = 34.9 s (698 samples)").
 std::string radiation_label(const scene::Scene& scene);
 

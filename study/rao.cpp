@@ -10,7 +10,10 @@
 #include <numbers>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "coupling/crane_equations.hpp"
+#include "scene/crane_model_cache.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/run_pipeline.hpp"
 
@@ -55,6 +58,7 @@ namespace {
 struct RootAndShape {
   std::complex<double> root;
   Eigen::VectorXcd shape;
+  std::string unrefined;  // a root Newton was asked to refine and could not: why
 };
 
 // The constant system's eigenvalues (Im λ ≥ 0) and shapes, from its first-order form
@@ -73,7 +77,7 @@ std::vector<RootAndShape> constant_roots(const LinearisedCrane& linear) {
     const std::complex<double> lambda = solver.eigenvalues()(i);
     if (lambda.imag() < 0.0 || std::abs(lambda) == 0.0) continue;  // one of each complex pair
     // A real (overdamped) root: its partner is another real root; both are listed.
-    roots.push_back({lambda, solver.eigenvectors().col(i).head(n)});
+    roots.push_back({lambda, solver.eigenvectors().col(i).head(n), {}});
   }
   return roots;
 }
@@ -82,7 +86,7 @@ std::vector<NaturalMode> to_modes(const LinearisedCrane& linear, const std::vect
   std::vector<NaturalMode> modes;
   for (const RootAndShape& r : roots) {
     const double magnitude = std::abs(r.root);
-    modes.push_back({magnitude, -r.root.real() / magnitude, dominant_coordinate(linear, r.shape)});
+    modes.push_back({magnitude, -r.root.real() / magnitude, dominant_coordinate(linear, r.shape), r.unrefined});
   }
   std::sort(modes.begin(), modes.end(),
             [](const NaturalMode& a, const NaturalMode& b) { return a.angular_frequency < b.angular_frequency; });
@@ -98,47 +102,52 @@ Eigen::MatrixXcd dynamic_matrix(const LinearisedCrane& linear, const HullImpedan
 }
 
 // Newton on log det D(s) from `root`, deflated by the roots already found (and their conjugates) so
-// that two starts do not converge to one root: s ← s − 1/(tr(D⁻¹D′) − Σ_j 1/(s − r_j)). False when it
-// does not converge (non-finite, or 40 steps).
-bool refine_root(const LinearisedCrane& linear, const HullImpedance& impedance, const std::vector<std::complex<double>>& found,
-                 std::complex<double>& root, Eigen::VectorXcd& shape) {
+// that two starts do not converge to one root: s ← s − 1/(tr(D⁻¹D′) − Σ_j 1/(s − r_j)). Empty when it
+// converged (root and shape replaced); else why it did not (a non-finite or zero log-derivative, a
+// non-finite step, or no convergence within `max_steps`), root and shape unchanged.
+std::string refine_root(const LinearisedCrane& linear, const HullImpedance& impedance, const std::vector<std::complex<double>>& found,
+                        int max_steps, std::complex<double>& root, Eigen::VectorXcd& shape) {
+  const auto at = [](std::complex<double> s) { return fmt::format("s = {:.6g}{:+.6g}i rad/s", s.real(), s.imag()); };
   std::complex<double> s = root;
-  for (int iteration = 0; iteration < 40; ++iteration) {
+  for (int iteration = 0; iteration < max_steps; ++iteration) {
     const double h = 1e-6 * std::abs(s);
     const Eigen::MatrixXcd d = dynamic_matrix(linear, impedance, s);
     const Eigen::MatrixXcd slope = (dynamic_matrix(linear, impedance, s + h) - dynamic_matrix(linear, impedance, s - h)) / (2.0 * h);
     const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(d);
     std::complex<double> log_slope = lu.solve(slope).trace();
     for (const std::complex<double> r : found) log_slope -= 1.0 / (s - r) + 1.0 / (s - std::conj(r));
-    if (!std::isfinite(log_slope.real()) || !std::isfinite(log_slope.imag()) || std::abs(log_slope) == 0.0) return false;
+    if (!std::isfinite(log_slope.real()) || !std::isfinite(log_slope.imag()) || std::abs(log_slope) == 0.0) {
+      return fmt::format("Newton on log det D(s) stopped at step {}: the log-derivative tr(D⁻¹D′) is {} at {}", iteration + 1,
+                         std::abs(log_slope) == 0.0 ? "zero" : "not finite", at(s));
+    }
     const std::complex<double> step = 1.0 / log_slope;
+    if (!std::isfinite((s - step).real()) || !std::isfinite((s - step).imag())) {
+      return fmt::format("Newton on log det D(s) stopped at step {}: a non-finite step from {}", iteration + 1, at(s));
+    }
     s -= step;
-    if (!std::isfinite(s.real()) || !std::isfinite(s.imag())) return false;
     if (std::abs(step) < 1e-11 * std::abs(s)) {
       const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(dynamic_matrix(linear, impedance, s), Eigen::ComputeFullV);
       shape = svd.matrixV().col(svd.matrixV().cols() - 1);
       root = s.imag() < 0.0 ? std::conj(s) : s;
-      return true;
+      return {};
     }
   }
-  return false;
+  return fmt::format("Newton on log det D(s) did not converge in {} steps (from {}, last {})", max_steps, at(root), at(s));
 }
 
 }  // namespace
 
 std::vector<NaturalMode> natural_modes(const LinearisedCrane& linear) { return to_modes(linear, constant_roots(linear)); }
 
-std::vector<NaturalMode> natural_modes(const LinearisedCrane& linear, const HullImpedance& impedance, double refine_below) {
+std::vector<NaturalMode> natural_modes(const LinearisedCrane& linear, const HullImpedance& impedance, double refine_below,
+                                       int max_newton_steps) {
   std::vector<RootAndShape> roots = constant_roots(linear);
   if (impedance && linear.hull_at >= 0) {
     std::vector<std::complex<double>> found;
     for (RootAndShape& r : roots) {
       if (std::abs(r.root) > refine_below) continue;
-      RootAndShape refined = r;
-      if (refine_root(linear, impedance, found, refined.root, refined.shape)) {
-        r = refined;
-        found.push_back(r.root);
-      }
+      r.unrefined = refine_root(linear, impedance, found, max_newton_steps, r.root, r.shape);
+      if (r.unrefined.empty()) found.push_back(r.root);
     }
   }
   return to_modes(linear, roots);
@@ -231,10 +240,15 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
     if (scene.bem->excitation == scene::ExcitationModel::bem) result.bem_excitation_file = scene.bem->excitation_file;
   }
   const double a = request.excitation_amplitude;
+  // Each boom model is built once in calm water and linearised once; the excitation at ω comes from
+  // the same model in that regular wave (scene::with_waters: the hull and wave replaced, the boom not
+  // rebuilt); A(ω), B(ω), X(ω) of the hull enter per frequency below.
+  scene::CraneModelCache models(calm, &cache);
   for (const scene::BoomChoice& choice : request.models.empty() ? rao_models() : request.models) {
     if (progress) progress(choice.label());
     const auto start = std::chrono::steady_clock::now();
-    PreparedRun prepared = prepare_run(calm, choice, &cache);
+    PreparedRun prepared = prepare_run(models, choice);
+    const std::shared_ptr<const coupling::SharedCraneModel> calm_model = models.model(choice);
     const LinearisedCrane linear = coupling::linearise_crane(*prepared.equations, prepared.statics.z);
     const coupling::OutputMap outputs = coupling::linear_outputs(*prepared.equations, linear);
     ModelRao model;
@@ -242,7 +256,7 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
     model.coordinates = linear.size();
     model.modes = model_impedance && request.memory_natural_modes ? natural_modes(linear, model_impedance, refine_below) : natural_modes(linear);
     for (const double omega : request.angular_frequencies) {
-      const auto waved = scene::build_crane(with_regular_wave(scene, 2.0 * a, 2.0 * std::numbers::pi / omega, 0.0), choice, &cache);
+      const auto waved = scene::with_waters(*calm_model, with_regular_wave(scene, 2.0 * a, 2.0 * std::numbers::pi / omega, 0.0))->equations();
       Eigen::VectorXcd force = coupling::wave_excitation(*waved, linear, omega, a);
       Eigen::MatrixXd mass = linear.mass, damping = linear.damping;
       if (request.hydrodynamics && linear.hull_at >= 0) {

@@ -45,6 +45,9 @@ struct NaturalMode {
   double angular_frequency = 0.0;  // |λ| [rad/s]
   double damping_ratio = 0.0;      // −Re λ / |λ| [-]
   std::string dominant;            // the coordinate with the largest share of the mode's kinetic energy ("hull heave", "boom")
+  // A memory hull's mode that Newton could not refine (natural_modes with an impedance): why — the
+  // mode is then the constant system's root, not a root of det D(s). Empty: refined, or not asked to be.
+  std::string unrefined;
   double period() const;           // 2π / ω_n [s]
 };
 
@@ -53,9 +56,11 @@ std::vector<NaturalMode> natural_modes(const coupling::LinearisedCrane& linear);
 // With a hull impedance Z(s) (a memory hull, study/rao_bem.hpp): the roots of
 // det(s²M + sC + K + Z(s)) = 0, each found by Newton's method on log det, s ← s − 1/tr(D⁻¹D′), from
 // the constant system's eigenvalue (modes up to `refine_below` rad/s; faster ones, which the hull's
-// frequency-dependent part barely moves, stay the constant system's).
+// frequency-dependent part barely moves, stay the constant system's), at most `max_newton_steps`
+// steps each. A start that does not converge keeps the constant system's root and says why
+// (NaturalMode::unrefined).
 std::vector<NaturalMode> natural_modes(const coupling::LinearisedCrane& linear, const HullImpedance& impedance,
-                                       double refine_below);
+                                       double refine_below, int max_newton_steps = 40);
 
 // X = (−ω²M + iωC + K)⁻¹ F by Eigen's complex LU; throws std::runtime_error when singular (at an
 // undamped resonance).

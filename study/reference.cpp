@@ -40,7 +40,13 @@ void validate(const ReferenceOptions& o) {
 
 ConvergedReference converged_reference(const scene::Scene& scene, const ReferenceOptions& options, double duration,
                                        modal::ModeCache* modes) {
+  scene::CraneModelCache models(scene, modes);
+  return converged_reference(models, options, duration);
+}
+
+ConvergedReference converged_reference(scene::CraneModelCache& models, const ReferenceOptions& options, double duration) {
   validate(options);
+  const scene::Scene& scene = models.scene();
   ConvergedReference reference;
   reference.bound = options.bound;
   reference.window_start = error_window(scene, duration);
@@ -53,7 +59,8 @@ ConvergedReference converged_reference(const scene::Scene& scene, const Referenc
     request.relative_tolerance = request.absolute_tolerance = options.start_relative_tolerance * std::pow(0.1, level);
     request.duration = duration;
     const coupling::IntegratorSettings settings = integrator_settings(scene, request);
-    ModelRun run = run_model(scene, choice, settings, modes);
+    PreparedRun prepared = prepare_run(models, choice);
+    ModelRun run = integrate_run(scene, prepared, settings);
     ReferenceLevel record{choice.elements, settings.relative_tolerance, 0.0, run.result.stats};
     if (level > 0) {
       record.change = coupling::compare_runs(reference.run.result, run.result, reference.window_start).worst_normalized_rms();

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "modal/mode_cache.hpp"
+#include "scene/crane_model_cache.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
 #include "study/run_pipeline.hpp"
@@ -54,5 +55,8 @@ struct ConvergedReference {
 // scene::SceneError, coupling::SolverFailure.
 ConvergedReference converged_reference(const scene::Scene& scene, const ReferenceOptions& options, double duration,
                                        modal::ModeCache* modes = nullptr);
+// The same on the cache's scene with the cache's models (scene/crane_model_cache.hpp): a study that
+// also runs some of the levels' models (sweep, compare) builds each of them once.
+ConvergedReference converged_reference(scene::CraneModelCache& models, const ReferenceOptions& options, double duration);
 
 }  // namespace ffrf::study

@@ -122,14 +122,14 @@ long ModelRun::slack_events() const {
 
 namespace {
 
-// Static equilibrium and initial state of freshly made equations.
+// The initial state of freshly made equations at their static equilibrium.
 PreparedRun prepare_equations(const scene::Scene& scene, const scene::BoomChoice& choice,
-                              std::unique_ptr<coupling::CraneEquations> made) {
+                              std::unique_ptr<coupling::CraneEquations> made, coupling::StaticEquilibrium statics) {
   PreparedRun prepared;
   prepared.choice = choice;
   prepared.equations = std::move(made);
   coupling::CraneEquations& equations = *prepared.equations;
-  prepared.statics = coupling::solve_static_equilibrium(equations, equations.initial_guess());
+  prepared.statics = std::move(statics);
   prepared.from_static_equilibrium = scene.simulation.initial_state == scene::InitialState::static_equilibrium;
   prepared.initial_state = prepared.from_static_equilibrium ? prepared.statics.z : equations.initial_guess();
   if (scene.simulation.cargo_lift > 0.0 && equations.cargo_offset() >= 0) {
@@ -142,12 +142,16 @@ PreparedRun prepare_equations(const scene::Scene& scene, const scene::BoomChoice
 
 PreparedRun prepare_run(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes) {
   check_run_memory(choice);
-  return prepare_equations(scene, choice, scene::build_crane(scene, choice, modes));
+  std::unique_ptr<coupling::CraneEquations> equations = scene::build_crane(scene, choice, modes);
+  coupling::StaticEquilibrium statics = coupling::solve_static_equilibrium(*equations, equations->initial_guess());
+  return prepare_equations(scene, choice, std::move(equations), std::move(statics));
 }
 
-PreparedRun prepare_run(scene::CraneModelCache& models, const scene::BoomChoice& choice) {
+PreparedRun prepare_run(scene::CraneModelCache& models, const scene::BoomChoice& choice,
+                        std::optional<hydro::RadiationKind> radiation) {
   check_run_memory(choice);
-  return prepare_equations(models.scene(), choice, models.model(choice)->equations());
+  coupling::StaticEquilibrium statics = models.static_equilibrium(choice, radiation);
+  return prepare_equations(models.scene(radiation), choice, models.model(choice, radiation)->equations(), std::move(statics));
 }
 
 namespace {

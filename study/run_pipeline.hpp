@@ -2,7 +2,8 @@
 // static equilibrium and brings it to the scene's initial state: the static equilibrium (or the
 // as-built pose, simulation.initial_state), with the cargo raised by simulation.cargo_lift and
 // released at rest; a hub's prescribed motion is part of the model. A study that runs one model
-// many times (sweep) takes it from a scene::CraneModelCache, built once and shared by its threads. integrate_run() integrates a
+// many times (sweep, the converged reference, rao) takes it and its static equilibrium from a
+// scene::CraneModelCache, built and solved once and shared by its threads. integrate_run() integrates a
 // prepared model and gathers its statistics; run_model() is the two in a row. Every study — run,
 // the converged reference, compare, sweep, recommend, the stability experiments — and the benches
 // go through these functions: nothing else brings a model to its initial state.
@@ -113,9 +114,12 @@ struct ModelRun {
 // (study/work_limits.hpp), scene::SceneError (the scene cannot make this crane) and
 // coupling::SolverFailure (KINSOL).
 PreparedRun prepare_run(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes = nullptr);
-// The same on the cache's scene with the cache's shared model of `choice` (built once per distinct
-// model, scene/crane_model_cache.hpp): the run gets its own equations (workspace and run state).
-PreparedRun prepare_run(scene::CraneModelCache& models, const scene::BoomChoice& choice);
+// The same on the cache's scene with `radiation` as its [bem] radiation model (empty: the scene's
+// own) and the cache's shared model of `choice` and its static equilibrium (each built and solved
+// once per distinct model, scene/crane_model_cache.hpp): the run gets its own equations (workspace
+// and run state).
+PreparedRun prepare_run(scene::CraneModelCache& models, const scene::BoomChoice& choice,
+                        std::optional<hydro::RadiationKind> radiation = std::nullopt);
 
 // Integrates a prepared model with `settings` (the static wire tension added to its monitor) and
 // gathers the statistics. Throws coupling::SolverFailure.

@@ -35,10 +35,13 @@ std::string_view to_string(RunStatus status) {
 SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config) {
   SweepResult r;
   r.config = config;
-  // The configuration's radiation model (issue 15.2): a copy of the scene with it.
+  // The configuration's radiation model (issue 15.2): the scene with it — the shared models' (keyed
+  // on the radiation model too) or, without shared models, a copy.
   std::optional<scene::Scene> configured;
-  if (config.radiation) configured = with_radiation(*setup.scene, *config.radiation);
-  const scene::Scene& scene = configured ? *configured : *setup.scene;
+  if (config.radiation && setup.models == nullptr) configured = with_radiation(*setup.scene, *config.radiation);
+  const scene::Scene& scene = setup.models != nullptr ? setup.models->scene(config.radiation)
+                              : configured            ? *configured
+                                                      : *setup.scene;
   const double output_interval = scene.simulation.output_interval;
   try {
     DynamicsRequest request;
@@ -47,11 +50,8 @@ SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config
     request.duration = setup.duration;
     if (config.step > 0.0) r.step = request.fixed_step = dividing_step(config.step, output_interval);
     coupling::IntegratorSettings settings = integrator_settings(scene, request);
-    // The shared models are the study scene's (its radiation): a configuration with a radiation model
-    // of its own builds its model from its scene, still with the shared modes (one eigen solve a mesh).
-    PreparedRun prepared = configured ? prepare_run(scene, config.choice, setup.models != nullptr ? &setup.models->modes() : nullptr)
-                           : setup.models != nullptr ? prepare_run(*setup.models, config.choice)
-                                                     : prepare_run(scene, config.choice);
+    PreparedRun prepared = setup.models != nullptr ? prepare_run(*setup.models, config.choice, config.radiation)
+                                                   : prepare_run(scene, config.choice);
     if (config.integrator == coupling::Integrator::arkode) {
       r.stable_step = coupling::explicit_stable_step(*prepared.equations, prepared.initial_state);
       const double h = config.stability_factor > 0.0 ? config.stability_factor * r.stable_step : r.stable_step;
@@ -80,7 +80,7 @@ SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config
   return r;
 }
 
-SweepStudy sweep_reference(const scene::Scene& scene, const SweepRequest& request, modal::ModeCache* modes) {
+SweepStudy sweep_scene(const scene::Scene& scene, const SweepRequest& request) {
   if (request.jobs < 0) {
     throw SettingError(Setting::jobs, fmt::format("{}", request.jobs), "not a thread count (valid range [1, inf), 0: one per core)");
   }
@@ -94,9 +94,21 @@ SweepStudy sweep_reference(const scene::Scene& scene, const SweepRequest& reques
   study.scene = scene;
   study.scene.boom.stiffening = study.stiffening;
   if (request.radiation_axis) study.scene = with_radiation(study.scene, hydro::RadiationKind::convolution);
-  study.reference = converged_reference(study.scene, request.reference, request.duration, modes);
+  return study;
+}
+
+void measure_reference(SweepStudy& study, const SweepRequest& request, scene::CraneModelCache& models) {
+  const int built = models.models_built();
+  study.reference = converged_reference(models, request.reference, request.duration);
+  study.reference_models_built = models.models_built() - built;
   study.window_start = error_window(study.scene, request.duration);
   study.judged = judged_outputs(study.scene);
+}
+
+SweepStudy sweep_reference(const scene::Scene& scene, const SweepRequest& request, modal::ModeCache* modes) {
+  SweepStudy study = sweep_scene(scene, request);
+  scene::CraneModelCache models(study.scene, modes);
+  measure_reference(study, request, models);
   return study;
 }
 
@@ -115,11 +127,12 @@ SweepStudy sweep(const scene::Scene& scene, const SweepRequest& request,
     throw SettingError(Setting::jobs, fmt::format("{}", request.jobs), "not a thread count (valid range [1, inf))");
   }
   modal::ModeCache modes;
-  SweepStudy study = sweep_reference(scene, request, &modes);
+  SweepStudy study = sweep_scene(scene, request);
+  const scene::Scene& modelled = study.scene;
+  scene::CraneModelCache models(modelled, &modes);  // the reference's levels and the configurations'
+  measure_reference(study, request, models);
   if (on_reference) on_reference(study.reference);
   const std::vector<SweepConfig> configs = sweep_configurations(request);
-  const scene::Scene& modelled = study.scene;
-  scene::CraneModelCache models(modelled, &modes);
   const SweepSetup setup{&modelled, &study.reference, study.window_start, study.judged, request.duration,
                          request.max_explicit_steps, &models};
   study.results.resize(configs.size());
@@ -146,7 +159,7 @@ SweepStudy sweep(const scene::Scene& scene, const SweepRequest& request,
   for (std::size_t t = 0; t < count; ++t) threads.emplace_back(worker);
   for (std::thread& thread : threads) thread.join();
   if (escaped) std::rethrow_exception(escaped);
-  study.models_built = models.models_built();
+  study.models_built = models.models_built() - study.reference_models_built;
   study.eigen_solves = modes.eigen_solves();
   return study;
 }

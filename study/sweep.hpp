@@ -2,8 +2,9 @@
 // grid (study/sweep_grid.hpp), or one shard of it, in parallel. Each configuration is one run of
 // the one pipeline (study/run_pipeline.hpp) measured against the reference over the error window;
 // a solver failure is a result with status `failed` and the reason, never an exception. The
-// workers share one mode cache (each mesh's eigenproblem is solved once) and one model cache (each
-// distinct crane model is built once and shared read-only, scene/crane_model_cache.hpp); each run
+// reference and the workers share one mode cache (each mesh's eigenproblem is solved once) and one
+// model cache (each distinct crane model — radiation model included — is built once, its static
+// equilibrium solved once, and shared read-only, scene/crane_model_cache.hpp); each run
 // owns only its equations' workspace and run state. ARPACK guards itself (modal/), so nothing here
 // is serialized but the caches' own look-ups and the first build of each model.
 #pragma once
@@ -63,8 +64,11 @@ struct SweepStudy {
   double window_start = 0.0;
   std::vector<coupling::OutputChannel> judged;
   std::vector<SweepResult> results;  // in grid order (the shard's configurations only)
-  // How the runs got their models (this process): crane models built for the configurations (one
-  // per distinct model) and eigen solves (one per distinct mesh of a modal boom).
+  // How the runs got their models (this process), all from one scene::CraneModelCache: crane models
+  // built for the reference's levels, then for the configurations (one per distinct model and
+  // radiation model; a model a reference level built is not built again), and eigen solves (one per
+  // distinct mesh of a modal boom).
+  int reference_models_built = 0;
   int models_built = 0;
   int eigen_solves = 0;
 };
@@ -77,14 +81,22 @@ struct SweepSetup {
   std::vector<coupling::OutputChannel> judged;
   double duration = 0.0;
   long max_explicit_steps = 2'000'000;
-  // The shared models of *scene (its scene() equal to *scene); null: every run builds its own.
+  // The shared models of *scene (its scene() equal to *scene; a configuration's radiation model is
+  // its scene(radiation)); null: every run builds its own and solves its static equilibrium.
   scene::CraneModelCache* models = nullptr;
 };
 
 // One configuration (thread-safe).
 SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config);
 
-// The reference and what the runs are measured over (everything but the results). Throws as sweep().
+// The study's scene as every run models it (the stiffening decided; with the radiation axis the
+// reference's convolution), tolerance and stiffening: no reference, no results. Throws SettingError,
+// scene::SceneError (the radiation axis on a scene without [bem]).
+SweepStudy sweep_scene(const scene::Scene& scene, const SweepRequest& request);
+// The converged reference, on `models` (whose scene is study.scene), and what the runs are measured
+// over; sets study.reference_models_built. Throws as converged_reference().
+void measure_reference(SweepStudy& study, const SweepRequest& request, scene::CraneModelCache& models);
+// sweep_scene then measure_reference on models of its own (everything but the results). Throws as sweep().
 SweepStudy sweep_reference(const scene::Scene& scene, const SweepRequest& request, modal::ModeCache* modes);
 // The shard's configurations, in grid order.
 std::vector<SweepConfig> sweep_configurations(const SweepRequest& request);

@@ -1,8 +1,8 @@
 // The accuracy–speed sweep on the distributed engine (see sweep.hpp): every process computes the
 // converged reference (the same deterministic runs), then the grid's configurations are the farm's
 // tasks — one configuration per task, keyed by its id and labels, journaled as they finish, the
-// shard's slice for array jobs. Each process builds each distinct model once and shares it among
-// its threads (scene/crane_model_cache.hpp). A task's record is the caller's text form of its SweepResult (the
+// shard's slice for array jobs. Each process builds each distinct model once (the reference's levels
+// included) and shares it among its threads (scene/crane_model_cache.hpp). A task's record is the caller's text form of its SweepResult (the
 // CSV line), so the journal holds exactly the rows of the table.
 #include <fmt/format.h>
 
@@ -17,7 +17,9 @@ SweepOnEngine sweep_on_engine(distributed::Session& session, const scene::Scene&
                               const std::function<std::string(const SweepResult&)>& record_of) {
   modal::ModeCache modes;
   SweepOnEngine out;
-  out.study = sweep_reference(scene, request, &modes);
+  out.study = sweep_scene(scene, request);
+  scene::CraneModelCache models(out.study.scene, &modes);  // this process's shared models: the reference's and the tasks'
+  measure_reference(out.study, request, models);
   const std::vector<SweepConfig> grid = sweep_grid(request.grid, request.radiation_axis);
   std::vector<std::string> keys;
   for (const SweepConfig& config : grid) {
@@ -25,7 +27,6 @@ SweepOnEngine sweep_on_engine(distributed::Session& session, const scene::Scene&
                                config.radiation ? " radiation " + radiation_name(config) : std::string()));
   }
   const std::vector<distributed::Task> tasks = distributed::make_tasks(keys);
-  scene::CraneModelCache models(out.study.scene, &modes);  // this process's shared models
   const SweepSetup setup{&out.study.scene, &out.study.reference, out.study.window_start, out.study.judged, request.duration,
                          request.max_explicit_steps, &models};
   const distributed::WorkFunction work = [&](const distributed::Task& task) {
@@ -50,7 +51,7 @@ SweepOnEngine sweep_on_engine(distributed::Session& session, const scene::Scene&
     out.records.push_back(record_of(failed));
   }
   out.farm.outcomes.clear();
-  out.study.models_built = models.models_built();
+  out.study.models_built = models.models_built() - out.study.reference_models_built;
   out.study.eigen_solves = modes.eigen_solves();
   return out;
 }

@@ -16,6 +16,7 @@
 
 #include "report/json.hpp"
 #include "report/output_directory.hpp"
+#include "report/rao_report.hpp"
 #include "report/sweep_csv.hpp"
 #include "report/sweep_report.hpp"
 
@@ -106,6 +107,36 @@ TEST(Json, DocumentsParseBackAndNaNIsNull) {
   const std::string text = report::json_text(json);
   EXPECT_LT(text.find("finite"), text.find("not_a_number"));
   EXPECT_LT(text.find("not_a_number"), text.find("count"));
+}
+
+// A memory hull's mode Newton could not refine (study::NaturalMode::unrefined) is said in the text,
+// the Markdown and the JSON, with its reason; a result whose modes all refined says nothing of it.
+TEST(RaoReport, ModesNewtonDidNotRefineAreFlaggedWithTheReason) {
+  study::RaoResult result;
+  result.angular_frequencies = {0.5, 1.0};
+  study::ModelRao model;
+  model.choice = {scene::BoomKind::rigid, 1};
+  model.coordinates = 6;
+  model.modes = {{0.6, 0.05, "hull heave", ""}, {0.9, 0.02, "hull pitch", "did not converge in 0 steps"}};
+  for (auto& values : model.response) values = {{1.0, 0.0}, {0.5, 0.1}};
+  result.models.push_back(model);
+  const report::RaoContext context{"barge.toml", "barge", 1.0};
+  const std::string text = report::rao_text(result, {}, context);
+  EXPECT_NE(text.find("hull pitch  (not refined)"), std::string::npos) << text;
+  EXPECT_NE(text.find("rigid mode 2 (T = 6.981 s) is the constant system's, not refined: did not converge in 0 steps"),
+            std::string::npos) << text;
+  EXPECT_EQ(text.find("hull heave  (not refined)"), std::string::npos) << text;
+  const std::string markdown = report::rao_markdown(result, {}, context, false);
+  EXPECT_NE(markdown.find("hull pitch (not refined)"), std::string::npos);
+  EXPECT_NE(markdown.find("did not converge in 0 steps"), std::string::npos);
+  const nlohmann::json json = nlohmann::json::parse(report::rao_json(result, {}, context));
+  const auto& modes = json["models"][0]["natural_modes"];
+  EXPECT_FALSE(modes[0].contains("not_refined"));
+  EXPECT_EQ(modes[1]["not_refined"].get<std::string>(), "did not converge in 0 steps");
+
+  result.models[0].modes[1].unrefined.clear();
+  EXPECT_EQ(report::rao_text(result, {}, context).find("not refined"), std::string::npos);
+  EXPECT_EQ(report::rao_markdown(result, {}, context, false).find("not refined"), std::string::npos);
 }
 
 TEST(StagedDirectory, OutputIsCompleteOrAbsent) {

@@ -9,32 +9,13 @@
 
 #include "study/sweep.hpp"
 #include "study_test_support.hpp"
+#include "sweep_rows.hpp"
 
 namespace {
 
 using namespace ffrf;
 
-void expect_same_result(const study::SweepResult& a, const study::SweepResult& b) {
-  SCOPED_TRACE("configuration " + std::to_string(a.config.id) + " " + a.config.choice.label() + ", " +
-               study::integrator_label(a.config));
-  ASSERT_EQ(a.config.id, b.config.id);
-  EXPECT_EQ(a.status, b.status);
-  EXPECT_EQ(a.reason, b.reason);
-  EXPECT_EQ(a.step, b.step);
-  EXPECT_EQ(a.stable_step, b.stable_step);
-  EXPECT_EQ(a.state_size, b.state_size);
-  EXPECT_EQ(a.stats.steps, b.stats.steps);
-  EXPECT_EQ(a.stats.function_evaluations, b.stats.function_evaluations);
-  EXPECT_EQ(a.stats.jacobian_evaluations, b.stats.jacobian_evaluations);
-  EXPECT_EQ(a.stats.newton_iterations, b.stats.newton_iterations);
-  EXPECT_EQ(a.stats.error_test_failures, b.stats.error_test_failures);
-  EXPECT_EQ(a.worst.error, b.worst.error);
-  for (std::size_t c = 0; c < a.errors.channels.size(); ++c) {
-    EXPECT_EQ(a.errors.channels[c].normalized_rms, b.errors.channels[c].normalized_rms) << "channel " << c;
-    EXPECT_EQ(a.errors.channels[c].max_abs, b.errors.channels[c].max_abs) << "channel " << c;
-  }
-  EXPECT_EQ(a.errors.daf_error, b.errors.daf_error);
-}
+using test::expect_same_result;
 
 TEST(SweepSharing, OneSolvePerMeshOneBuildPerModelAndTheSameResultsOnAnyThreadCount) {
   const scene::Scene scene = test::scene_file("paper_floating_crane.toml");
