@@ -23,6 +23,16 @@ std::string number(double value, const char* format = "{:.3g}") {
 }
 
 std::string decision_sentence(const RecommendContext& ctx, const Recommendation& rec) {
+  if (!rec.chosen && !rec.reference.converged) {
+    // Not a model to recommend: the reference's own levels disagree, so no candidate's error means much.
+    const double change = rec.reference.levels.empty() ? 0.0 : rec.reference.levels.back().change;
+    return fmt::format("No candidate kept its error on {} within τ = {:g}, and the reference itself did not converge "
+                       "(its last refinement changed the outputs by {:.3g}, bound {:.3g}): no model of this scene can be "
+                       "verified at this tolerance. The response is too sensitive to small differences (slack wire and "
+                       "snap loads, or the cargo turning over its hook: see the runs' detections); try a shorter window, "
+                       "a smaller sea state, or judge statistics instead of time histories (ffrf compare).",
+                       output_list(rec.outputs), ctx.tolerance, change, rec.reference.bound);
+  }
   if (!rec.chosen) {
     return fmt::format("No candidate kept its error on {} within τ = {:g}: model the scene with the reference ({}).",
                        output_list(rec.outputs), ctx.tolerance, rec.reference.choice.label());

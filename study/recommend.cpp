@@ -158,6 +158,25 @@ void verify(const scene::Scene& scene, const Recommendation& rec, modal::ModeCac
 
 }  // namespace
 
+bool same_model(const Candidate& a, const Candidate& b, scene::Stiffening scene_stiffening) {
+  return a.choice.kind == b.choice.kind && a.choice.elements == b.choice.elements && a.choice.modes == b.choice.modes &&
+         a.choice.static_modes == b.choice.static_modes &&
+         a.choice.stiffening.value_or(scene_stiffening) == b.choice.stiffening.value_or(scene_stiffening);
+}
+
+std::size_t cheapest_passing_twin(const std::vector<Candidate>& candidates, std::size_t chosen,
+                                  scene::Stiffening scene_stiffening) {
+  std::size_t best = chosen;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const Candidate& c = candidates[i];
+    if (c.status != CandidateStatus::passed || !same_model(c, candidates[chosen], scene_stiffening)) continue;
+    if (c.rhs_evaluations < candidates[best].rhs_evaluations ||
+        (c.rhs_evaluations == candidates[best].rhs_evaluations && i < best))
+      best = i;
+  }
+  return best;
+}
+
 double Recommendation::work_speedup() const {
   if (!chosen) return std::numeric_limits<double>::quiet_NaN();
   return reference.run.work() / candidates[*chosen].work();
@@ -204,15 +223,11 @@ Recommendation recommend(const scene::Scene& scene, const RecommendRequest& requ
   // Minimality: the next cheaper *model* must fail its run (an integrator twin of the chosen model,
   // e.g. its explicit variant, proves nothing about the model); run it even when pruned, and should it
   // pass (the reasoning was too cautious), move down and check again.
-  const auto same_model = [&](const Candidate& a, const Candidate& b) {
-    return a.choice.kind == b.choice.kind && a.choice.elements == b.choice.elements && a.choice.modes == b.choice.modes &&
-           a.choice.static_modes == b.choice.static_modes &&
-           a.choice.stiffening.value_or(s.boom.stiffening) == b.choice.stiffening.value_or(s.boom.stiffening);
-  };
+  const auto twins = [&](const Candidate& a, const Candidate& b) { return same_model(a, b, s.boom.stiffening); };
   while (rec.chosen && *rec.chosen > 0) {
     std::size_t j = *rec.chosen - 1;
-    while (j > 0 && same_model(rec.candidates[j], rec.candidates[*rec.chosen])) --j;
-    if (same_model(rec.candidates[j], rec.candidates[*rec.chosen])) break;  // nothing cheaper
+    while (j > 0 && twins(rec.candidates[j], rec.candidates[*rec.chosen])) --j;
+    if (twins(rec.candidates[j], rec.candidates[*rec.chosen])) break;  // nothing cheaper
     Candidate& c = rec.candidates[j];
     if (c.status == CandidateStatus::pruned) {
       tell(c.label() + " (minimality check) ...");
@@ -224,6 +239,16 @@ Recommendation recommend(const scene::Scene& scene, const RecommendRequest& requ
       break;
     }
     rec.chosen = j;
+  }
+  // The chosen model's integrator twins the reasoning kept (its BDF twin after an explicit one that
+  // passed, or the reverse): run them, and recommend the one with the fewest RHS evaluations.
+  if (rec.chosen) {
+    for (Candidate& c : rec.candidates) {
+      if (c.status != CandidateStatus::not_run || !twins(c, rec.candidates[*rec.chosen])) continue;
+      tell(c.label() + " (integrator twin) ...");
+      verify(s, rec, cache, c);
+    }
+    rec.chosen = cheapest_passing_twin(rec.candidates, *rec.chosen, s.boom.stiffening);
   }
   return rec;
 }

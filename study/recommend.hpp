@@ -3,7 +3,11 @@
 // first candidate whose worst normalized RMS error over the chosen outputs (coupling/error_metrics.hpp,
 // the error of `ffrf compare` and `ffrf sweep`) is within the tolerance, then proves minimality by
 // running the next cheaper candidate of the ladder even when the reasoning pruned it.
-// Cost is solver work: steps × state size (and the RHS evaluations), never seconds.
+// Cost is solver work: steps × state size (and the RHS evaluations), never seconds. Integrator twins
+// of one model (explicit RK and BDF) do the same work per right-hand-side evaluation, but an explicit
+// step costs several evaluations and a stiff wire can make it take many more steps: when a model
+// passes, every twin of it that the reasoning kept is run too, and the one with the fewest RHS
+// evaluations among those that pass is recommended (cheapest_passing_twin).
 #pragma once
 
 #include <functional>
@@ -63,6 +67,13 @@ struct Recommendation {
   double work_speedup() const;            // reference steps × size over the chosen one's
   double wall_speedup() const;
 };
+
+// Among the candidates that are the same model as candidates[chosen] (kind, mesh, modes, static
+// modes, stiffening) and passed, the index of the one with the fewest RHS evaluations (ties: the
+// earlier one); `scene_stiffening` stands for an unset stiffening.
+std::size_t cheapest_passing_twin(const std::vector<Candidate>& candidates, std::size_t chosen,
+                                  scene::Stiffening scene_stiffening);
+bool same_model(const Candidate& a, const Candidate& b, scene::Stiffening scene_stiffening);
 
 // Throws scene::SceneError, coupling::SolverFailure (the reference), modal::EigenSolverError,
 // SettingError (a tolerance or duration out of range). `progress` is told what is being run.

@@ -40,6 +40,11 @@ TEST(Recommend, ReferenceSceneAtOnePercentChosenPassesNextCheaperFails) {
   EXPECT_DOUBLE_EQ(c.work(), static_cast<double>(c.steps) * c.state_size);
   EXPECT_NEAR(rec.work_speedup(), rec.reference.run.work() / c.work(), 1e-9 * rec.work_speedup());
   EXPECT_GT(rec.work_speedup(), 1.0);
+  // No integrator twin of the chosen model that passed needed fewer RHS evaluations.
+  for (const study::Candidate& t : rec.candidates) {
+    if (t.status == study::CandidateStatus::passed && study::same_model(t, c, rec.reference_scene.boom.stiffening))
+      EXPECT_LE(c.rhs_evaluations, t.rhs_evaluations) << t.label();
+  }
   // The prestress is 5 % of the Euler load: the reasoning asks for static stiffening, and the
   // unstiffened twin of the chosen model is what it proves wrong.
   EXPECT_EQ(c.choice.stiffening.value_or(rec.reference_scene.boom.stiffening), scene::Stiffening::static_load);
@@ -61,6 +66,34 @@ TEST(Recommend, ReferenceSceneAtOnePercentChosenPassesNextCheaperFails) {
   for (std::size_t i = 0; i < modes.modes.size(); ++i) {
     EXPECT_NEAR(rec.reasoning.modes[i].angular_frequency, modes.modes[i].angular_frequency, 1e-9 * modes.modes[i].angular_frequency);
   }
+}
+
+// The explicit twin of a model comes first in the ladder; when it passes with more RHS evaluations
+// than its BDF twin (a stiff wire: issue 15.7's Tp 8 s record, ARKODE 216 542 evaluations, 4.3× the
+// reference's wall time), the BDF twin is the recommendation; a cheaper twin that failed is not.
+TEST(Recommend, CheapestPassingTwinCountsRhsEvaluationsNotLadderOrder) {
+  study::Candidate explicit_twin;
+  explicit_twin.choice.kind = scene::BoomKind::modal;
+  explicit_twin.choice.modes = 2;
+  explicit_twin.integrator = coupling::Integrator::arkode;
+  explicit_twin.status = study::CandidateStatus::passed;
+  explicit_twin.rhs_evaluations = 216542;
+  study::Candidate bdf_twin = explicit_twin;
+  bdf_twin.integrator = coupling::Integrator::cvode;
+  bdf_twin.rhs_evaluations = 20000;
+  study::Candidate other_model = bdf_twin;
+  other_model.choice.modes = 3;
+  other_model.rhs_evaluations = 10;
+  std::vector<study::Candidate> ladder{explicit_twin, bdf_twin, other_model};
+  EXPECT_EQ(study::cheapest_passing_twin(ladder, 0, scene::Stiffening::none), 1u);
+  EXPECT_EQ(study::cheapest_passing_twin(ladder, 1, scene::Stiffening::none), 1u);
+  ladder[1].status = study::CandidateStatus::failed;
+  EXPECT_EQ(study::cheapest_passing_twin(ladder, 0, scene::Stiffening::none), 0u);
+  // An unset stiffening is the scene's: a twin set to it explicitly is the same model.
+  ladder[1].status = study::CandidateStatus::passed;
+  ladder[1].choice.stiffening = scene::Stiffening::static_load;
+  EXPECT_EQ(study::cheapest_passing_twin(ladder, 0, scene::Stiffening::none), 0u);
+  EXPECT_EQ(study::cheapest_passing_twin(ladder, 0, scene::Stiffening::static_load), 1u);
 }
 
 TEST(Recommend, VeryStiffBoomIsRigid) {
