@@ -42,8 +42,9 @@ TEST(Recommend, ReferenceSceneAtOnePercentChosenPassesNextCheaperFails) {
   EXPECT_GT(rec.work_speedup(), 1.0);
   // No integrator twin of the chosen model that passed needed fewer RHS evaluations.
   for (const study::Candidate& t : rec.candidates) {
-    if (t.status == study::CandidateStatus::passed && study::same_model(t, c, rec.reference_scene.boom.stiffening))
+    if (t.status == study::CandidateStatus::passed && study::same_model(t, c, rec.reference_scene.boom.stiffening)) {
       EXPECT_LE(c.rhs_evaluations, t.rhs_evaluations) << t.label();
+    }
   }
   // The prestress is 5 % of the Euler load: the reasoning asks for static stiffening, and the
   // unstiffened twin of the chosen model is what it proves wrong.
