@@ -9,7 +9,9 @@
 # 270-275 s (600 components), Tp = 8 s 106-169 s (375), Tp = 12 s 77-95 s (250); the recommended
 # model's own run 6-66 s; compare Tp = 8 s 133-152 s each; BEM barge recommend 21-62 s. The cost is
 # about proportional to WINDOW; a 3-hour record costs ~6x more per simulated second than a 20-minute
-# one (docs/validation.md), so 3-hour windows are not practical with this script.
+# one (docs/validation.md), so 3-hour windows are not practical with this script. Since the hull
+# pressure's phasor recurrence (after e3512c2) a run of the reference hull costs 1.6x (20-minute
+# record) to 4.3x (3-hour record) less CPU than these figures.
 #
 # What it does: writes copies of cases/irregular_sea_crane.toml (and, for the BEM part,
 # cases/irregular_bem_barge_crane.toml, its WAMIT paths made absolute) into OUT/scenes with
