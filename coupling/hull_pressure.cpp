@@ -40,14 +40,17 @@ constexpr std::array<double, series_terms> inverse_factorials() {
 }
 constexpr std::array<double, series_terms> inverse_factorial = inverse_factorials();
 
+// Terms of the power series below for |z|² = size < ¼: enough that the first one left out, |z|ⁿ/n!, is
+// below 1e-17: 8 for |z| < 0.01, 12 for |z| < 0.1, 14 for |z| < 0.25, else all (|z| < ½).
+int series_term_count(double size) { return size < 1e-4 ? 8 : size < 1e-2 ? 12 : size < 0.0625 ? 14 : series_terms; }
+
 // φ1(z) = (e^z − 1)/z and ψ(z) = (e^z (z − 1) + 1)/z² (∫₀¹ e^{zv} dv and ∫₀¹ v e^{zv} dv) by their
 // power series for |z| < ½ (true), else false (use closed_moments).
 bool series_moments(Complex z, Complex& phi1, Complex& psi) {
   const double size = std::norm(z);  // |z|²
   if (size >= series_radius * series_radius) return false;
-  // φ1 = Σ zⁿ/(n+1)!, ψ = Σ zⁿ/(n! (n+2)), by Horner, with enough terms that the first one left out,
-  // |z|ⁿ/n!, is below 1e-17: 8 for |z| < 0.01, 12 for |z| < 0.1, 14 for |z| < 0.25, else all (|z| < ½).
-  const int terms = size < 1e-4 ? 8 : size < 1e-2 ? 12 : size < 0.0625 ? 14 : series_terms;
+  // φ1 = Σ zⁿ/(n+1)!, ψ = Σ zⁿ/(n! (n+2)), by Horner.
+  const int terms = series_term_count(size);
   phi1 = 0.0;
   psi = 0.0;
   for (int n = terms - 2; n >= 0; --n) {
@@ -79,8 +82,7 @@ void exponential_moments(Complex z, Complex& phi1, Complex& psi) {
 class SeriesSums {
  public:
   void add(Complex c, double s) {
-    const double size = 0.25 * s * s;  // |z|²
-    const int terms = size < 1e-4 ? 8 : size < 1e-2 ? 12 : size < 0.0625 ? 14 : series_terms;
+    const int terms = series_term_count(0.25 * s * s);  // |z|² = (s/2)²
     for (int m = 0; m < terms - 1; ++m) {
       sums_[static_cast<std::size_t>(m)] += c;
       c *= s;
