@@ -115,7 +115,7 @@ std::string wire_table(const Comparison& c) {
 }
 
 std::string cost_table(const Comparison& c) {
-  std::string t = "| model | wall time [s] | real-time factor | steps | state size | work (steps × state size) | function "
+  std::string t = "| model | wall time [s] | real-time factor | steps | state size | work (RHS evaluations × state size) | function "
                   "evaluations | Jacobian evaluations | Newton iterations | error-test failures | max constraint residual [m] |\n"
                   "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
   for (const auto& [run, label] : all_runs(c)) {

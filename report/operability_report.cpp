@@ -237,10 +237,11 @@ std::string operability_markdown(const study::OperabilityStudy& s, const Operabi
                       st.compression_mpm.mean / 1e6);
   }
   const ModelSavings m = model_savings(s);
-  md += fmt::format("\n## The boom model per cell\n\nRecommend's reasoning picked each cell's model from the top of its "
-                    "energy band (tolerance {:g}). Verified on {} cells against the converged model (same seeds):\n\n"
+  md += fmt::format("\n## The boom model per cell\n\n`ffrf recommend` picked each cell's model on a probe record of its sea "
+                    "(the first seed, {:g} peak periods or the record if shorter): the cheapest by solver work that passes "
+                    "τ = {:g} against the converged reference. Verified on {} cells against the converged model (same seeds):\n\n"
                     "| Hs [m] | Tp [s] | heading | model | governing (u) | converged model | governing (u) |\n|--:|--:|---|---|---|---|---|\n",
-                    ctx.tolerance, m.cells);
+                    study::probe_peak_periods, ctx.tolerance, m.cells);
   for (const CellResult& c : s.cells) {
     if (!c.verified || !c.ok || !c.converged_ok) continue;
     md += fmt::format("| {:g} | {:g} | {} | {} | {} {} ({:.4f}) | {} | {} {} ({:.4f}) |\n", c.cell.significant_height,
@@ -251,7 +252,7 @@ std::string operability_markdown(const study::OperabilityStudy& s, const Operabi
   }
   if (m.cells > 0) {
     md += fmt::format("\n{} of {} agree on the verdict and the governing criterion; the governing utilisation differs by at most "
-                      "{:.2g} %. The converged model would cost **{:.1f}× the solver work** (steps × state size) and "
+                      "{:.2g} %. The converged model would cost **{:.1f}× the solver work** (RHS evaluations × state size) and "
                       "**{:.1f}× the wall time** of the recommended models on these cells.\n",
                       m.agreeing, m.cells, 100.0 * m.largest_difference, m.work_ratio, m.wall_ratio);
   }
