@@ -13,7 +13,7 @@ namespace {
 
 constexpr double bdf_steps_per_period = 13.0;     // s at rtol 1e-4, per period of ω_f
 constexpr double bdf_steps_rtol_exponent = 0.1;   // s ∝ rtol^(−0.1) (1e-4 → 1e-8: × 2.5)
-constexpr double bdf_evaluations_per_step = 1.4;  // c_BDF: Newton iterations and Jacobians per step
+constexpr double bdf_evaluations_per_step = 1.4;  // c_BDF: Newton iterations and Jacobians per step (1.40 measured)
 constexpr double erk_evaluations_per_step = 5.0;  // c_ERK: ARKODE's default explicit table
 constexpr double erk_accuracy_step_ratio = 2.0;   // r: an adaptive ERK run's steps over BDF's
 

@@ -3,8 +3,8 @@
 // expected RHS evaluations E (the measure of study::solver_work, Jacobian evaluations included).
 //  * BDF (CVODE): the steps follow the fastest motion the scene excites and the accuracy, not the
 //    model's stiffest frequency (the top modes are damped and BDF's order is limited for them: the
-//    reference scene takes 2 900–3 600 steps at rtol 10⁻⁴ for every model from modal k = 2 to nodal
-//    N = 16, whose top frequencies span 23 rad/s to 10⁵ rad/s). n = T ω_f/(2π) · s(rtol) steps, ω_f
+//    reference scene takes 2 878–3 550 steps at rtol 10⁻⁴ for every model from modal k = 2, top
+//    frequency 23.7 rad/s, to nodal N = 16, explicit step limit 10⁻⁶ s). n = T ω_f/(2π) · s(rtol) steps, ω_f
 //    the faster of the excitation's top and the wire–cargo bounce, s the steps per period measured at
 //    that rtol; E = c_BDF n. So among BDF candidates the state size decides, and a static-mode model
 //    (k + 5 static modes: their Rayleigh frequencies are the boom's stiffest, which BDF does not feel)
