@@ -185,6 +185,13 @@ NewtonOutcome newton(CraneEquations& equations, Eigen::VectorXd& z, const Eigen:
 }  // namespace
 
 StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eigen::VectorXd& guess, double tolerance) {
+  StaticSolvePath path;
+  return solve_static_equilibrium(equations, guess, path, tolerance);
+}
+
+StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eigen::VectorXd& guess, StaticSolvePath& path,
+                                           double tolerance) {
+  path = StaticSolvePath{};
   const auto start = std::chrono::steady_clock::now();
   const int n = equations.minimal_size();
   StaticEquilibrium result;
@@ -215,13 +222,13 @@ StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eige
     equations.static_residual(guess, initial_force);
     Eigen::VectorXd solved = guess;
     double lambda = 0.0, step = 0.1;
-    while (lambda < 1.0 && result.continuation_steps < kMaxContinuationSteps && step >= 1e-4) {
+    while (lambda < 1.0 && path.continuation_steps < kMaxContinuationSteps && step >= 1e-4) {
       const double next = std::min(1.0, lambda + step);
       const Eigen::VectorXd offset = (1.0 - next) * initial_force;
       Eigen::VectorXd trial = solved;
       last = newton(equations, trial, offset, residual_scale, tolerance, 50);
       count(last);
-      ++result.continuation_steps;
+      ++path.continuation_steps;
       if (!last.model_error.empty()) break;
       if (last.converged) {
         solved = trial;
@@ -244,23 +251,28 @@ StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eige
                           "the model failed: " + (failed.model_error.empty() ? std::string("non-finite forces") : failed.model_error),
                           0.0, "check that the hull floats with its deck above the water and the cargo hangs below the boom tip");
     }
+    // The hull's and the cargo's balance name the cause when they fail: the boom's own rows balance
+    // under whatever load the bodies put on it, unless the boom itself cannot carry it.
     const RowLayout rows(equations);
+    const Eigen::VectorXd scaled_rows = residual.cwiseProduct(residual_scale).cwiseAbs();
     Eigen::Index worst = 0;
-    const double scaled = residual.cwiseProduct(residual_scale).cwiseAbs().maxCoeff(&worst);
+    const double scaled = scaled_rows.maxCoeff(&worst);
+    Eigen::Index worst_rigid = 0;
+    if (rows.elastic > 0 && scaled_rows.head(rows.elastic).maxCoeff(&worst_rigid) >= 1e2 * tolerance) worst = worst_rigid;
     const auto [what, check] = row_meaning(rows, static_cast<int>(worst));
     throw SolverFailure(FailureKind::newton_divergence, "KINSOL (static equilibrium)",
                         "no static equilibrium: " + what + " stays out of balance by " +
                             format_number(std::abs(residual(worst))) + (rows.is_moment(static_cast<int>(worst)) ? " N m" : " N") +
                             " (Newton from the rest-pose guess: " + (direct.flag.empty() ? "no convergence" : direct.flag) +
                             " after " + std::to_string(direct.iterations) + " iterations; continuation in the load: " +
-                            std::to_string(result.continuation_steps) + " steps; scaled residual " + format_number(scaled) + ")",
+                            std::to_string(path.continuation_steps) + " steps; scaled residual " + format_number(scaled) + ")",
                         0.0, check);
   }
   result.z = z;
   result.scaled_residual = residual.cwiseProduct(residual_scale).cwiseAbs().maxCoeff();
   const RowLayout rows(equations);
   for (int i = 0; i < rows.elastic; ++i) {
-    double& largest = rows.is_moment(i) ? result.max_moment_residual : result.max_force_residual;
+    double& largest = rows.is_moment(i) ? path.max_moment_residual : path.max_force_residual;
     largest = std::max(largest, std::abs(residual(i)));
   }
   if (equations.wire_stretch_minimal(0.0, result.z) <= 0.0) {

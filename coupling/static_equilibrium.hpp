@@ -29,16 +29,23 @@ struct StaticEquilibrium {
   long newton_iterations = 0;     // over every solve (continuation steps included)
   long function_evaluations = 0;
   double scaled_residual = 0.0;   // max |residual| / (stiffness × typical size) at the solution
-  double max_force_residual = 0.0;   // largest out-of-balance force over the force rows [N]
-  double max_moment_residual = 0.0;  // largest out-of-balance moment over the pitch rows [N m]
-  int continuation_steps = 0;     // 0: Newton from the guess converged directly
   double wall_seconds = 0.0;
+};
+
+// How the equilibrium was reached and what it left out of balance (`ffrf statics` reports it).
+struct StaticSolvePath {
+  int continuation_steps = 0;        // 0: Newton from the guess converged directly
+  double max_force_residual = 0.0;   // largest out-of-balance force of the hull and cargo [N]
+  double max_moment_residual = 0.0;  // largest out-of-balance moment of the hull and cargo [N m]
   bool by_continuation() const { return continuation_steps > 0; }
 };
 
 // Throws SolverFailure (coupling/simulation.hpp) when neither Newton nor the continuation
 // converges; the failure names the row that stays out of balance (hull heave, trim, cargo, boom).
 StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eigen::VectorXd& guess,
+                                           double tolerance = 1e-11);
+// The same, with how it was reached in `path`.
+StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eigen::VectorXd& guess, StaticSolvePath& path,
                                            double tolerance = 1e-11);
 
 }  // namespace ffrf::coupling

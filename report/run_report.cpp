@@ -71,21 +71,14 @@ RunContext make_context(const std::string& scene_file, const scene::Scene& scene
   return {scene_file, &scene, settings, utc_date(), {}};
 }
 
-std::string static_solver_summary(const coupling::StaticEquilibrium& s) {
-  return s.by_continuation()
-             ? fmt::format("KINSOL: {} Newton iterations over {} continuation steps in the load, scaled residual {:.2g}, {:.3g} s",
-                           s.newton_iterations, s.continuation_steps, s.scaled_residual, s.wall_seconds)
-             : fmt::format("KINSOL: {} Newton iterations, scaled residual {:.2g}, {:.3g} s", s.newton_iterations,
-                           s.scaled_residual, s.wall_seconds);
-}
-
 std::string static_report(const scene::Scene& scene, const study::ModelRun& run) {
   return static_report(scene, run.choice, run.statics);
 }
 
 std::string static_report(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::StaticEquilibrium& s) {
   const coupling::CraneOutputs& o = s.outputs;
-  std::string text = fmt::format("static equilibrium ({}; {})\n", choice.label(), static_solver_summary(s));
+  std::string text = fmt::format("static equilibrium ({}; KINSOL: {} Newton iterations, scaled residual {:.2g}, {:.3g} s)\n",
+                                 choice.label(), s.newton_iterations, s.scaled_residual, s.wall_seconds);
   if (scene.hull) {
     text += fmt::format("  hull      draft {:.4f} m at mid-length, trim {:+.4f} deg (+ = bow up)\n",
                         study::draft_at_mid_length(scene, o), o.hull.z() * degrees);
@@ -152,10 +145,6 @@ Json static_equilibrium_json(const scene::Scene& scene, const scene::BoomChoice&
       {"function_evaluations", s.function_evaluations},
       {"scaled_residual", s.scaled_residual},
       {"wall_time_s", s.wall_seconds},
-      {"continuation_steps", s.continuation_steps},
-      {"method", s.by_continuation() ? "continuation in the load" : "Newton"},
-      {"max_force_residual_N", s.max_force_residual},
-      {"max_moment_residual_Nm", s.max_moment_residual},
       {"root_axial_force_N", o.root_axial_force},
       {"geometric_stiffening", scene::to_string(choice.stiffening.value_or(scene.boom.stiffening))}};
 }

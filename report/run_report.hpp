@@ -29,8 +29,6 @@ std::string utc_date();
 // The static equilibrium in a few lines (draft and trim, tip deflection, wire, joint reaction).
 std::string static_report(const scene::Scene& scene, const study::ModelRun& run);
 std::string static_report(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::StaticEquilibrium& statics);
-// "KINSOL: 5 Newton iterations, scaled residual ..., ... s" (with the continuation steps when it took them).
-std::string static_solver_summary(const coupling::StaticEquilibrium& statics);
 
 // The settings' keys (scene, integrator, tolerances, duration, version, date).
 Json settings_json(const RunContext& context);

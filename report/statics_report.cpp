@@ -35,12 +35,13 @@ std::string statics_text(const std::string& scene_file, const scene::Scene& scen
   }
   text += fmt::format("  boom      root moment {:.6g} N m, tip deflection {:.3f} % of the boom length\n", o.joint_reaction.z(),
                       100.0 * o.tip_deflection.norm() / scene.boom.mesh.length);
+  const coupling::StaticSolvePath& path = result.path;
   text += fmt::format("  balance   largest out-of-balance force {:.3g} N, moment {:.3g} N m (hull and cargo); scaled residual {:.2g}\n",
-                      s.max_force_residual, s.max_moment_residual, s.scaled_residual);
+                      path.max_force_residual, path.max_moment_residual, s.scaled_residual);
   text += fmt::format("  solver    {}, {} residual evaluations\n",
-                      s.by_continuation() ? fmt::format("Newton from the rest pose failed; reached by continuation in the load "
-                                                        "({} steps)", s.continuation_steps)
-                                          : std::string("Newton from the rest pose"),
+                      path.by_continuation() ? fmt::format("Newton from the rest pose failed; reached by continuation in the load "
+                                                           "({} steps)", path.continuation_steps)
+                                             : std::string("Newton from the rest pose"),
                       s.function_evaluations);
   for (const coupling::Detection& note : result.notes) {
     text += fmt::format("  note      {}: {} ({})\n", coupling::to_string(note.kind), note.cause, note.remedy);
@@ -58,6 +59,10 @@ std::string statics_json(const std::string& scene_file, const scene::Scene& scen
   json["boom"] = scene::to_string(result.choice.kind);
   json["elastic_dof"] = result.elastic_dof;
   json["static_equilibrium"] = static_equilibrium_json(scene, result.choice, result.statics);
+  json["solve"] = Json{{"method", result.path.by_continuation() ? "continuation in the load" : "Newton"},
+                       {"continuation_steps", result.path.continuation_steps},
+                       {"max_force_residual_N", result.path.max_force_residual},
+                       {"max_moment_residual_Nm", result.path.max_moment_residual}};
   json["rest_pose"] = Json{{"x_m", result.rest_pose.x()}, {"y_m", result.rest_pose.y()}, {"pitch_deg", result.rest_pose.z() * degrees}};
   json["hull_offset"] = Json{{"surge_m", result.hull_offset.x()},
                              {"heave_m", result.hull_offset.y()},

@@ -3,21 +3,25 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "coupling/run_monitor.hpp"
 #include "coupling/simulation.hpp"
 #include "study/run_pipeline.hpp"
+#include "study/work_limits.hpp"
 
 namespace ffrf::study {
 
 StaticsResult solve_statics(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes) {
-  PreparedRun prepared = prepare_run(scene, choice, modes);
+  // prepare_run's model and solve (its initial state aside), with how the solve went.
+  check_run_memory(choice);
+  const std::unique_ptr<coupling::CraneEquations> equations = scene::build_crane(scene, choice, modes);
+  const Eigen::VectorXd guess = equations->initial_guess();
   StaticsResult result;
   result.choice = choice;
-  result.elastic_dof = prepared.equations->elastic_size();
-  result.statics = prepared.statics;
+  result.elastic_dof = equations->elastic_size();
+  result.statics = coupling::solve_static_equilibrium(*equations, guess, result.path);
   const coupling::CraneOutputs& o = result.statics.outputs;
-  const Eigen::VectorXd guess = prepared.equations->initial_guess();
   // The hull's coordinates lead the minimal ones when it floats; a held or driven hub keeps its pose.
   result.rest_pose = scene.is_crane() ? Eigen::Vector3d(guess.head<3>()) : o.hull;
   result.hull_offset = o.hull - result.rest_pose;

@@ -1,5 +1,5 @@
 // The static equilibrium of one crane model on its own (`ffrf statics`): the equilibrium the run
-// pipeline solves (prepare_run, so it equals `ffrf run`'s), with what a lift planner reads — the
+// pipeline solves (the same model and solve as prepare_run, so it equals `ffrf run`'s), with what a lift planner reads — the
 // hull's offsets from its rest-pose guess (even keel at the mean draft), draft and trim, the cargo's
 // position, the wire's tension and stretch, the boom's root moment and tip deflection, the largest
 // out-of-balance force and moment, and how KINSOL reached it (Newton directly or by continuation in
@@ -23,6 +23,7 @@ struct StaticsResult {
   scene::BoomChoice choice;
   int elastic_dof = 0;
   coupling::StaticEquilibrium statics;
+  coupling::StaticSolvePath path;  // Newton or continuation; the out-of-balance force and moment left
   Eigen::Vector3d rest_pose = Eigen::Vector3d::Zero();  // the hull's (or hub's) pose before the solve: x, y [m], pitch [rad]
   Eigen::Vector3d hull_offset = Eigen::Vector3d::Zero();  // equilibrium − rest pose (surge, heave, pitch)
   double draft = 0.0;           // keel depth at mid-length [m] (NaN: a hub)
