@@ -85,6 +85,8 @@ TEST(CliExplicitWork, AdaptiveExplicitRkOnAStiffBoomStopsBeforeItsFirstStep) {
                              std::sqrt(std::pow(beta * omega_max * omega_max, 2) - 4.0 * omega_max * omega_max));
   const double step_limit = real_axis_interval() / fast;
   const double estimate = 5.0 / step_limit;
+  std::printf("ω_max %.4g rad/s, fast root %.4g 1/s, real-axis interval %.4f: limit %.3g s, %.3g steps; ffrf: %.3g\n",
+              omega_max, fast, real_axis_interval(), step_limit, estimate, steps);
   EXPECT_GT(steps, 0.5 * estimate) << "estimate " << estimate << " steps (limit " << step_limit << " s)";
   EXPECT_LT(steps, 2.0 * estimate) << "estimate " << estimate << " steps (limit " << step_limit << " s)";
 }

@@ -37,7 +37,7 @@ void expect_same_statics(const std::string& scene, const std::string& model_opti
       EXPECT_EQ(value.text, theirs[key].text) << scene << ": " << key;
     }
   }
-  EXPECT_GE(compared, 20) << scene;
+  EXPECT_GE(compared, 18) << scene;  // every number of the block (draft, trim, poses, tip, wire, joint, solver)
   // The wire carries the cargo's weight at rest.
   EXPECT_NEAR(mine["wire_tension_N"].number, a["cargo_weight_N"].number, 1e-7 * a["cargo_weight_N"].number);
 }
