@@ -1,4 +1,4 @@
-// Work limits for every integrator (issue 13.3): a run that needs more work than its limit ends with
+// Work limits for every integrator: a run that needs more work than its limit ends with
 // the named failure and the remedy of its kind, within the limit.
 //  * adaptive explicit RK on a stiff boom (nodal N = 8, > 1000 stability-bound steps per output
 //    interval by its linearized limit): "too much work" before the first step, naming the limit;
