@@ -152,6 +152,27 @@ TEST(Statics, AHullThatCannotFloatTheLoadIsNamed) {
   }
 }
 
+// The continuation in the load, from a start Newton does not converge from within its 200 iterations
+// (the hull pitched 0.05 rad and 3 m low, the cargo 20 m above its hanging place): it reaches the
+// equilibrium Newton finds from the rest pose.
+TEST(Statics, ContinuationFromAPoorStartReachesTheSameEquilibrium) {
+  const scene::Scene scene = test::scene_file("paper_floating_crane.toml");
+  auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, 16, 0, false});
+  coupling::StaticSolvePath direct_path, poor_path;
+  const coupling::StaticEquilibrium direct =
+      coupling::solve_static_equilibrium(*equations, equations->initial_guess(), direct_path);
+  Eigen::VectorXd poor = equations->initial_guess();
+  poor(1) -= 3.0;
+  poor(2) += 0.05;
+  poor(equations->cargo_offset() + 1) += 20.0;
+  const coupling::StaticEquilibrium reached = coupling::solve_static_equilibrium(*equations, poor, poor_path);
+  EXPECT_FALSE(direct_path.by_continuation());
+  EXPECT_TRUE(poor_path.by_continuation());
+  EXPECT_NEAR(reached.outputs.cargo.y(), direct.outputs.cargo.y(), 1e-8);
+  EXPECT_NEAR(reached.outputs.hull.z(), direct.outputs.hull.z(), 1e-10);
+  EXPECT_NEAR(reached.outputs.wire_tension, scene.cargo->mass * scene.environment.gravity, 1e-7 * reached.outputs.wire_tension);
+}
+
 // The reference crane on a 120 m wire: its cargo would hang 16 m into the water, which the model
 // gives no forces; the equilibrium is refused by that name.
 TEST(Statics, CargoBelowTheWaterIsNamed) {
