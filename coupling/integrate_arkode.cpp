@@ -27,6 +27,7 @@
 #include "coupling/simulation.hpp"
 #include "coupling/solver_steps.hpp"
 #include "coupling/sundials_support.hpp"
+#include "linalg/dense_solvers.hpp"
 
 namespace ffrf::coupling {
 namespace {
