@@ -108,7 +108,7 @@ TEST(Verdict, TheCheapestIsNamedAmongRunsAtTheModelChoiceRtolOnly) {
   EXPECT_TRUE(v.models[0].passed);
   ASSERT_TRUE(v.cheapest.has_value());
   EXPECT_EQ(*v.cheapest, 1u);
-  EXPECT_EQ(ffrf::study::cheapest_passing(models, 0.01), v.cheapest);
+  EXPECT_TRUE(ffrf::study::cheapest_passing(models, 0.01) == v.cheapest);
 }
 
 }  // namespace
