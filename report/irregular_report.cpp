@@ -12,11 +12,13 @@ namespace {
 
 // A number, or "-" where there is none (a spectral peak the record is too short to resolve: NaN).
 std::string value(double x, int digits = 5) { return std::isfinite(x) ? fmt::format("{:.{}g}", x, digits) : "-"; }
+// A zero up-crossing period: "-" when the record has no up-crossing to measure it (Tz = 0).
+std::string period(double x, int digits = 5) { return x > 0.0 ? value(x, digits) : "-"; }
 std::string percent(double x) { return std::isfinite(x) ? fmt::format("{:+.2f}%", 100.0 * x) : "-"; }
 
 std::string row(const study::ResponseStatistics& r) {
   return fmt::format("  {:<20} {:>11} {:>11} {:>8} {:>8} {:>11} {:>11} {:>11} {:>11}\n", r.column, value(r.standard_deviation),
-                     value(r.significant), value(r.zero_crossing_period), value(r.peak_frequency),
+                     value(r.significant), period(r.zero_crossing_period), value(r.peak_frequency),
                      value(r.observed_maximum), r.extremes ? value(r.rayleigh) : "-", r.extremes ? value(r.weibull) : "-",
                      r.extremes ? value(r.gumbel) : "-");
 }
@@ -51,7 +53,7 @@ std::string irregular_text(const study::IrregularStatistics& s) {
       "  incident wave at G1: realised Hs = 4σ = {} m, Tz {} s, spectral peak {} rad/s\n"
       "  most probable maxima (MPM) over the record, as levels: Rayleigh (narrow-band Gaussian), Weibull fit to the\n"
       "  peaks, Gumbel fit to 10 block maxima; motions about static equilibrium\n",
-      window, s.sample_interval, value(s.elevation.significant, 4), value(s.elevation.zero_crossing_period, 4),
+      window, s.sample_interval, value(s.elevation.significant, 4), period(s.elevation.zero_crossing_period, 4),
       value(s.elevation.peak_frequency, 4));
   text += fmt::format("  {:<20} {:>11} {:>11} {:>8} {:>8} {:>11} {:>11} {:>11} {:>11}\n", "output", "sigma", "4 sigma",
                       "Tz [s]", "peak w", "max", "MPM Rayl.", "MPM Weib.", "MPM Gumb.");
