@@ -1,4 +1,4 @@
-// The command-line matrix, quick part (label cli): `run`, `baseline record`, `rao` and `modes` on every
+// The command-line matrix, quick part (label cli): `run`, `baseline record`, `statics`, `rao` and `modes` on every
 // kind of shipped scene, with every boom kind where the command takes --boom (tests/app/cli_matrix.hpp
 // says what a complete output directory is). The studies that run many models (compare, sweep,
 // stability, recommend, operability) are in test_cli_matrix_slow.cpp (label slow).
@@ -14,6 +14,8 @@ std::vector<MatrixCell> quick_cells() {
   // tip-deflection charts: the hub scene, which has only those, then draws none).
   add(cells_of("run", true, "--duration 2"));
   add(cells_of("baseline record", true, "--duration 2", {}, true));
+  // statics takes --boom and writes statics.json: every scene with each boom kind.
+  add(cells_of("statics", true, ""));
   // rao takes --boom; a hub has no water and no waves, so the frequency domain refuses it (exit 2).
   add(cells_of("rao", true, "--periods 5:20:4", {"hub"}));
   // modes solves the boom of the scene alone: no boom-model option, every scene once.
