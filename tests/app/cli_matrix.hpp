@@ -55,10 +55,9 @@ inline void PrintTo(const MatrixCell& c, std::ostream* os) {
   *os << c.command << ' ' << c.scene.file << (c.boom.empty() ? "" : " --boom " + c.boom) << ' ' << c.args;
 }
 
-// Every cell of `command` over the scenes: with each boom kind when `booms`, else once per scene.
-inline std::vector<MatrixCell> cells_of(const std::string& command, bool booms, const std::string& args,
-                                        const std::set<std::string>& refused_kinds = {}, bool out_is_file = false) {
-  std::vector<MatrixCell> cells;
+// Appends every cell of `command` over the scenes: with each boom kind when `booms`, else once per scene.
+inline void add_cells(std::vector<MatrixCell>& cells, const std::string& command, bool booms, const std::string& args,
+                      const std::set<std::string>& refused_kinds = {}, bool out_is_file = false) {
   for (const MatrixScene& scene : matrix_scenes()) {
     const bool refused = refused_kinds.count(scene.kind) > 0;
     if (!booms || refused) {
@@ -67,7 +66,6 @@ inline std::vector<MatrixCell> cells_of(const std::string& command, bool booms, 
     }
     for (const char* boom : {"rigid", "nodal", "modal"}) cells.push_back({command, scene, boom, args, false, out_is_file});
   }
-  return cells;
 }
 
 inline bool is_png_file(const fs::path& path) {

@@ -9,17 +9,16 @@ namespace {
 
 std::vector<MatrixCell> quick_cells() {
   std::vector<MatrixCell> cells;
-  const auto add = [&](std::vector<MatrixCell> more) { cells.insert(cells.end(), more.begin(), more.end()); };
   // run and baseline record take --boom: every scene with each boom kind (a rigid boom leaves out the
   // tip-deflection charts: the hub scene, which has only those, then draws none).
-  add(cells_of("run", true, "--duration 2"));
-  add(cells_of("baseline record", true, "--duration 2", {}, true));
+  add_cells(cells, "run", true, "--duration 2");
+  add_cells(cells, "baseline record", true, "--duration 2", {}, true);
   // statics takes --boom and writes statics.json: every scene with each boom kind.
-  add(cells_of("statics", true, ""));
+  add_cells(cells, "statics", true, "");
   // rao takes --boom; a hub has no water and no waves, so the frequency domain refuses it (exit 2).
-  add(cells_of("rao", true, "--periods 5:20:4", {"hub"}));
+  add_cells(cells, "rao", true, "--periods 5:20:4", {"hub"});
   // modes solves the boom of the scene alone: no boom-model option, every scene once.
-  add(cells_of("modes", false, "--modes 4"));
+  add_cells(cells, "modes", false, "--modes 4");
   return cells;
 }
 

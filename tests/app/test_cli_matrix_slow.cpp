@@ -11,13 +11,12 @@ namespace {
 
 std::vector<MatrixCell> slow_cells() {
   std::vector<MatrixCell> cells;
-  const auto add = [&](std::vector<MatrixCell> more) { cells.insert(cells.end(), more.begin(), more.end()); };
-  add(cells_of("compare", false, "--duration 4 --reference-levels 2"));
-  add(cells_of("sweep", false, "--quick --duration 4 --reference-levels 2 --jobs 1"));
-  add(cells_of("stability", false, "--quick"));
-  add(cells_of("recommend", false, "--duration 4 --reference-levels 2"));
+  add_cells(cells, "compare", false, "--duration 4 --reference-levels 2");
+  add_cells(cells, "sweep", false, "--quick --duration 4 --reference-levels 2 --jobs 1");
+  add_cells(cells, "stability", false, "--quick");
+  add_cells(cells, "recommend", false, "--duration 4 --reference-levels 2");
   // Operability needs a sea to grade and a cargo on a wire: a hub has neither, and is refused (exit 2).
-  add(cells_of("operability", false, "--hs 1:1:1 --tp 8:8:1 --seeds 1 --duration 30 --verify 0 --threads 1", {"hub"}));
+  add_cells(cells, "operability", false, "--hs 1:1:1 --tp 8:8:1 --seeds 1 --duration 30 --verify 0 --threads 1", {"hub"});
   return cells;
 }
 
