@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "report/chart_notes.hpp"
 #include "report/gnuplot.hpp"
 #include "report/json.hpp"
 
@@ -119,8 +120,7 @@ void draw_chart(const StagedDirectory& out, const study::OperabilityStudy& s) {
   for (const std::string& panel : panels) script += panel;
   script += "unset multiplot\n";
   out.write("operability.dat", data);
-  out.write("operability.gp", script);
-  run_gnuplot(out.staging(), "operability.gp");
+  report::draw_chart(out, "operability", script);
 }
 
 }  // namespace
@@ -297,13 +297,14 @@ std::string operability_json(const study::OperabilityStudy& s, const Operability
   return json_text(doc);
 }
 
-void write_operability_outputs(const std::string& dir, const study::OperabilityStudy& s, const OperabilityContext& ctx) {
+std::string write_operability_outputs(const std::string& dir, const study::OperabilityStudy& s, const OperabilityContext& ctx) {
   StagedDirectory out(dir, "report.md");
   out.write("operability.csv", operability_csv(s));
   draw_chart(out, s);
-  out.write("summary.json", operability_json(s, ctx));
-  out.write("report.md", operability_markdown(s, ctx));
+  out.write("summary.json", with_charts_json(operability_json(s, ctx), out));
+  out.write("report.md", operability_markdown(s, ctx) + charts_markdown(out));
   out.commit();
+  return chart_notes_text("operability", out);
 }
 
 }  // namespace ffrf::report

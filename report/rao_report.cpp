@@ -162,7 +162,9 @@ std::string rao_chart_script(const std::string& name, const study::RaoResult& re
       script += amplitude ? fmt::format("set logscale y\nset format y '%g'\nset ylabel '[{}]'\nset yrange [*:*]\n", coupling::unit_per_amplitude(output))
                           : "unset logscale y\nset format y '%g'\nset ylabel 'phase vs elevation at x = 0 [deg]'\nset yrange [-180:180]\n";
       if (curves.empty()) {
-        script += "unset key\nset label 1 'zero for the rigid boom' at graph 0.5, 0.5 center\nplot [0:1] [0:1] NaN notitle\n"
+        // No curve: a linear axis for the placeholder (a log axis refuses its [0:1] range).
+        script += "unset key\nunset logscale y\nset label 1 'zero for the rigid boom' at graph 0.5, 0.5 center\n"
+                  "plot [0:1] [0:1] NaN notitle\n"
                   "unset label 1\n";
       } else {
         script += fmt::format("set key opaque box bottom right font ',9'\nplot {}\n", fmt::join(curves, ", \\\n     "));

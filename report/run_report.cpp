@@ -159,6 +159,7 @@ Json model_json(const scene::Scene& scene, const study::ModelRun& run) {
   json["statistics_window"] = Json{
       {"start_s", run.window.start_s},
       {"after_ramp", run.window.after_ramp},
+      {"ramp_end_s", run.window.ramp_end_s},
       {"note", run.window.after_ramp ? "min, max and RMS over t > ramp_periods x period; RMS about the static value"
                                      : "min, max and RMS over the whole run (calm water, or the run ends within the ramp)"}};
   Json outputs = Json::object();
@@ -242,7 +243,10 @@ std::string run_header_text(const RunContext& c, const study::ModelRun& run) {
 std::string dynamics_text(const study::ModelRun& run) {
   std::string text = fmt::format("\ndynamics ({}; motions are displacements from static equilibrium; RMS about the static value)\n",
                       run.window.after_ramp ? fmt::format("statistics over t > {:g} s, after the wave ramp", run.window.start_s)
-                                            : std::string("statistics over the whole run"));
+                      : run.window.ramp_end_s > 0.0
+                          ? fmt::format("statistics over the whole run, which ends within the wave ramp (t < {:g} s)",
+                                        run.window.ramp_end_s)
+                          : std::string("statistics over the whole run"));
   text += fmt::format("  {:<24} {:>13} {:>13} {:>13} {:>13}\n", "output", "static", "min", "max", "RMS");
   const auto series = study::crane_series();
   for (std::size_t i = 0; i < series.size(); ++i) {

@@ -10,6 +10,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "report/chart_notes.hpp"
 #include "report/json.hpp"
 #include "report/reference_report.hpp"
 #include "report/sweep_csv.hpp"
@@ -284,15 +285,16 @@ std::string pareto_text(const std::vector<SweepRow>& rows, const SweepFacts& fac
   return t + fmt::format("\nverdict (tolerance {:g}): {}\n", facts.tolerance, sweep_verdict_sentence(rows, facts));
 }
 
-void write_sweep_outputs(const std::string& dir, std::vector<SweepRow>& rows, const std::string& context) {
+std::string write_sweep_outputs(const std::string& dir, std::vector<SweepRow>& rows, const std::string& context) {
   const SweepFacts facts = context_facts(context);
   StagedDirectory out(dir, "report.md");
   out.write("sweep.csv", sweep_csv(rows));
   out.write(sweep_context_file, context);
   draw_sweep_charts(out, rows, facts);
-  out.write("summary.json", sweep_json(rows, facts));
-  out.write("report.md", sweep_markdown(rows, context));
+  out.write("summary.json", with_charts_json(sweep_json(rows, facts), out));
+  out.write("report.md", sweep_markdown(rows, context) + charts_markdown(out));
   out.commit();
+  return chart_notes_text("sweep", out);
 }
 
 }  // namespace ffrf::report

@@ -69,7 +69,8 @@ std::string sweep_json(const std::vector<SweepRow>& rows, const SweepFacts& fact
 std::string pareto_text(const std::vector<SweepRow>& rows, const SweepFacts& facts);
 
 // Writes sweep.csv, the charts, the context, summary.json and report.md (the completeness marker) into `dir`,
-// completely or not at all; throws std::runtime_error (a duplicate id: overlapping shards).
-void write_sweep_outputs(const std::string& dir, std::vector<SweepRow>& rows, const std::string& context);
+// completely or not at all; throws std::runtime_error (a duplicate id: overlapping shards). Returns
+// the console lines naming the charts not drawn (report/chart_notes.hpp; empty when all were).
+std::string write_sweep_outputs(const std::string& dir, std::vector<SweepRow>& rows, const std::string& context);
 
 }  // namespace ffrf::report
