@@ -106,6 +106,8 @@ int energy_watch(sunrealtype t, N_Vector y, void* user) {
 
 double explicit_stable_step(CraneEquations& equations, const Eigen::VectorXd& z0) {
   const int n = equations.minimal_size();
+  // A system with nothing free to move (a rigid boom on a driven hub) sets no step limit.
+  if (n == 0) return std::numeric_limits<double>::infinity();
   Eigen::VectorXd y = Eigen::VectorXd::Zero(2 * n), f0(2 * n), f1(2 * n);
   y.head(n) = z0;
   const Eigen::VectorXd scale = equations.coordinate_scale();
