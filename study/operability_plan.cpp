@@ -74,7 +74,7 @@ std::string repetition_warning(const OperabilityPlan& plan, const OperabilityReq
       "the synthesized sea repeats within the {:g}-s record in {} of {} cells ({} wave components each): at Hs = {:g} m, "
       "Tp = {:g} s it repeats every {:.4g} s (2π/Δω, Δω = {:.4g} rad/s over the band [{:.3g}, {:.3g}] rad/s), so the "
       "record is {:.1f} repeats of the same waves and its statistics rest on about {:.0f} independent wave cycles "
-      "(one repeat / Tz = {:.3g} s), not on the record length; use {} or more components, or 0 (Δω = 2π / record "
+      "(one repeat over Tz = {:.3g} s), not on the record length; use {} or more components, or 0 (Δω = 2π / record "
       "length: a sea that never repeats)",
       request.duration, repeating, physical, request.components, where->significant_height, where->peak_period,
       fewest->repeat_period, fewest->frequency_step, fewest->band.lower, fewest->band.upper, fewest->record_repeats,
