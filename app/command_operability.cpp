@@ -2,8 +2,10 @@
 // --out DIR`: the operability table over sea states (study/operability.hpp) on the distributed engine:
 // serially (threads) without a launcher, over MPI ranks under mpirun or srun. Every finished record is
 // journaled in DIR (journal.tsv) and a rerun resumes from it; the outputs (report/operability_report.hpp)
-// are written by rank 0 at the end, whole or not at all. Exit 2 for bad input, 1 when a record failed
-// (the table shows which cells).
+// are written by rank 0 at the end, whole or not at all. Before the records start, on a terminal only,
+// a short probe estimates the table's cost. Exit 0 when every physical cell has its verdict (cells
+// too steep to exist are named as not physical, not failed), 1 when a record failed (the table names
+// the cells), 2 for bad input (a grid without one physical cell included).
 #include <fmt/format.h>
 
 #include <charconv>
@@ -18,10 +20,13 @@
 #include "app/option_checks.hpp"
 #include "app/version.hpp"
 #include "distributed/errors.hpp"
+#include "distributed/farm.hpp"
+#include "distributed/progress.hpp"
 #include "distributed/session.hpp"
 #include "report/gnuplot.hpp"
 #include "report/operability_report.hpp"
 #include "report/output_directory.hpp"
+#include "study/operability_cost.hpp"
 
 namespace ffrf::app {
 namespace {
@@ -33,6 +38,7 @@ struct OperabilityOptions {
   double duration = 10800.0;
   double gamma = 3.3;
   int components = 0;
+  double band_share = hydro::default_variance_share;
   int threads = 0;
   int verify = 2;
   int converged_elements = 32;
@@ -69,6 +75,43 @@ std::optional<std::vector<double>> parse_axis(const std::string& text) {
   return values;
 }
 
+// The command as it ran, every option a result depends on spelled out (defaults too), so that
+// report.md's copy reproduces the table; threads and --retry-failed change no result and are left out.
+std::string echoed_command(const OperabilityOptions& o) {
+  std::string headings;
+  for (const std::string& h : o.headings) headings += (headings.empty() ? "" : ",") + h;
+  const study::OperabilityCriteria& c = o.criteria;
+  return fmt::format("operability {} --hs {} --tp {} --heading {} --seeds {} --duration {:g} --gamma {:g} --components {} "
+                     "--band-share {:g} --tolerance {} --verify {} --converged-elements {} --daf-limit {:g} "
+                     "--slack-margin {:g} --cargo-motion-limit {:g} --moment-capacity {:g} --buckling-ratio {:g} --out {}",
+                     o.scene, o.hs, o.tp, headings, o.seeds, o.duration, o.gamma, o.components, o.band_share, o.tolerance,
+                     o.verify, o.converged_elements, c.daf_limit, c.slack_margin, c.cargo_motion_limit,
+                     c.root_moment_capacity, c.buckling_ratio, o.out);
+}
+
+// On a terminal, before the records start: what the table will cost, from a probe of one record.
+void print_cost_estimate(const scene::Scene& scene, const study::OperabilityRequest& request,
+                         const study::OperabilityPlan& plan, const distributed::Session& session,
+                         const distributed::FarmOptions& farm, modal::ModeCache* modes) {
+  try {
+    const study::TableCostEstimate e =
+        study::estimate_table_cost(scene, request, plan, distributed::farm_workers(session, farm), modes);
+    const study::SeaCell& cell = plan.cells[e.probe_cell];
+    fmt::print(stderr,
+               "ffrf operability: estimated cost {} for {} records of {:g} s on {} workers (probe: {:g} s of the Hs = "
+               "{:g} m, Tp = {:g} s record: set-up {:.1f} s, {:.3g} s per simulated second{}); fewer when the journal "
+               "holds some\n",
+               distributed::format_duration(e.seconds), e.records, request.duration, e.workers, e.recommended.probe_length,
+               cell.significant_height, cell.peak_period, e.recommended.setup_seconds,
+               e.recommended.seconds_per_simulated_second,
+               plan.verified.empty() ? std::string()
+                                     : fmt::format("; converged model {:.3g} s per simulated second",
+                                                   e.converged.seconds_per_simulated_second));
+  } catch (const std::exception& error) {  // the estimate is a courtesy: the records report their own failures
+    fmt::print(stderr, "ffrf operability: no cost estimate (the probe record failed: {})\n", error.what());
+  }
+}
+
 int run_operability_command(const OperabilityOptions& options) {
   const std::string name = "operability";
   if (options.out.empty()) return bad_input(name, "--out DIR is required: the journal of finished records and the table go there");
@@ -88,6 +131,7 @@ int run_operability_command(const OperabilityOptions& options) {
   request.duration = options.duration;
   request.peak_enhancement = options.gamma;
   request.components = options.components;
+  request.variance_share = options.band_share;
   request.verify_cells = options.verify;
   request.converged_elements = options.converged_elements;
   request.criteria = options.criteria;
@@ -103,33 +147,51 @@ int run_operability_command(const OperabilityOptions& options) {
     return bad_input(name, error.what());
   }
 
+  modal::ModeCache modes;
+  study::OperabilityPlan plan;
+  try {
+    plan = study::plan_operability(*scene, request, &modes);
+  } catch (const std::invalid_argument& error) {
+    return bad_input(name, error.what());
+  }
   distributed::Session session;
   if (session.is_root()) {
     report::png_terminal();  // fail before the computation when gnuplot is missing
     std::filesystem::create_directories(options.out);
+    for (const std::string& warning : plan.warnings) fmt::print(stderr, "ffrf {}: warning: {}\n", name, warning);
+    if (const std::size_t steep = plan.cells.size() - plan.physical_cells(); steep > 0) {
+      fmt::print(stderr, "ffrf {}: {} of {} cells are steeper than a sea can be (DNV-RP-C205's breaking limit): not "
+                 "physical, no records run for them\n", name, steep, plan.cells.size());
+    }
   }
   distributed::FarmOptions farm;
   farm.output_directory = options.out;
   farm.study = "ffrf " + options.command_line;
   // Everything besides the task keys that a record depends on.
-  farm.settings = fmt::format("{}\n{}\nseeds={} duration={:.17g} gamma={:.17g} components={} tolerance={:.17g} converged={} verify={}\n",
+  farm.settings = fmt::format("{}\n{}\nseeds={} duration={:.17g} gamma={:.17g} components={} band_share={:.17g} "
+                              "tolerance={:.17g} converged={} verify={}\n",
                               version_text(), read_text(options.scene), request.seeds, request.duration,
-                              request.peak_enhancement, request.components, request.tolerance, request.converged_elements, request.verify_cells);
+                              request.peak_enhancement, request.components, request.variance_share, request.tolerance,
+                              request.converged_elements, request.verify_cells);
   farm.threads = options.threads;
+  if (session.is_root() && stderr_is_terminal()) print_cost_estimate(*scene, request, plan, session, farm, &modes);
   farm.retry_failed = options.retry_failed;
   farm.progress_label = "operability records";
   study::OperabilityStudy result;
   try {
-    result = study::run_operability(session, *scene, request, farm);
+    result = study::run_operability(session, *scene, request, plan, farm);
   } catch (const distributed::JournalError& error) {
     return bad_input(name, error.what());
   }
   if (!result.farm.root) return exit_ok;
   report::OperabilityContext context{options.scene, options.command_line, request.duration, request.seeds,
                                      request.peak_enhancement, request.tolerance,
-                                     fmt::format("irregular, JONSWAP γ = {:g}, long-crested, {}", request.peak_enhancement,
-                                                 request.components > 0 ? fmt::format("{} components", request.components)
-                                                                        : std::string("components every 2π/duration (never repeats)"))};
+                                     fmt::format("irregular, JONSWAP γ = {:g}, long-crested, {}; each cell's band holds {:g} % "
+                                                 "of its variance m0 (tails split equally)",
+                                                 request.peak_enhancement,
+                                                 request.components > 0 ? fmt::format("{} components per record", request.components)
+                                                                        : std::string("components every 2π/duration (never repeats)"),
+                                                 100.0 * request.variance_share)};
   fmt::print(stderr, "{}", report::write_operability_outputs(options.out, result, context));
   fmt::print("{}\nwrote {} (report.md, operability.csv, operability.png, summary.json; journal {})\n",
              report::operability_text(result), options.out, result.farm.journal.string());
@@ -155,6 +217,10 @@ Command add_operability_command(CLI::App& parent) {
   sub->add_option("--components", options->components,
                   "Wave components per record (0: dw = 2 pi / duration, a sea that never repeats; fewer are cheaper but repeat)")
       ->capture_default_str()->check(whole_number(0, 100000));
+  sub->add_option("--band-share", options->band_share,
+                  "Share of each cell's wave variance m0 that its synthesis band holds (the rest split equally between "
+                  "the low and high tails)")
+      ->capture_default_str()->check(finite_number(0.5, 1.0, "", false));
   sub->add_option("--out", options->out, "Output directory: journal.tsv, operability.csv, report.md, operability.png, summary.json");
   sub->add_option("--threads", options->threads, "Compute threads of the process that schedules (0: one per core alone, 1 beside MPI ranks)")
       ->capture_default_str()->check(whole_number(0, 1024));
@@ -176,11 +242,7 @@ Command add_operability_command(CLI::App& parent) {
   sub->add_option("--buckling-ratio", c.buckling_ratio, "Allowed axial compression as a fraction of the Euler load")
       ->capture_default_str()->check(finite_number(0.0, 1.0, "", true));
   return {sub, [options] {
-            std::string headings;
-            for (const std::string& h : options->headings) headings += (headings.empty() ? "" : ",") + h;
-            options->command_line = fmt::format("operability {} --hs {} --tp {} --heading {} --seeds {} --duration {:g} --out {}",
-                                                options->scene, options->hs, options->tp, headings, options->seeds,
-                                                options->duration, options->out);
+            options->command_line = echoed_command(*options);
             return run_operability_command(*options);
           }};
 }

@@ -1,4 +1,5 @@
-// Dispatch to the integrator of a run (its row in integrator_table.cpp) and the terminal progress line.
+// Dispatch to the integrator of a run (its row in integrator_table.cpp), the terminal progress line and
+// the time-reached sink of this thread (time_reached.hpp).
 #include "coupling/simulation.hpp"
 
 #include <chrono>
@@ -7,10 +8,13 @@
 
 #include "coupling/integrator_table.hpp"
 #include "coupling/sundials_support.hpp"
+#include "coupling/time_reached.hpp"
 
 namespace ffrf::coupling {
 
 namespace {
+
+thread_local std::atomic<double>* time_reached_sink = nullptr;
 
 // A fully prescribed system (a rigid boom on a driven hub without cargo) has no minimal coordinates:
 // its motion is kinematics, sampled at the output times (the reactions follow from the driving
@@ -41,6 +45,16 @@ RunResult dispatch(CraneEquations& equations, const Eigen::VectorXd& z0, const I
 
 }  // namespace
 
+TimeReachedSink::TimeReachedSink(std::atomic<double>* time_reached) : previous_(time_reached_sink) {
+  time_reached_sink = time_reached;
+}
+
+TimeReachedSink::~TimeReachedSink() { time_reached_sink = previous_; }
+
+void store_time_reached(double t) noexcept {
+  if (time_reached_sink != nullptr) time_reached_sink->store(t, std::memory_order_relaxed);
+}
+
 RunResult integrate(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings) {
   RunResult result = dispatch(equations, z0, settings);
   result.detections = post_run_detections(result, settings.monitor);
@@ -50,6 +64,7 @@ RunResult integrate(CraneEquations& equations, const Eigen::VectorXd& z0, const 
 namespace sundials {
 
 void Progress::update(double t) {
+  store_time_reached(t);
   if (!enabled_) return;
   const int percent = static_cast<int>(100.0 * t / end_);
   if (percent == last_percent_) return;

@@ -44,6 +44,10 @@ std::deque<std::size_t> pending_tasks(const std::vector<Task>& tasks, const std:
 
 }  // namespace
 
+std::size_t farm_workers(const Session& session, const FarmOptions& options) {
+  return compute_threads(session, options) + static_cast<std::size_t>(session.size() - 1);
+}
+
 FarmResult run_farm(Session& session, const std::vector<Task>& tasks, const WorkFunction& work,
                     const FarmOptions& options) {
   const auto start = std::chrono::steady_clock::now();
@@ -144,6 +148,7 @@ FarmResult run_farm(Session& session, const std::vector<Task>& tasks, const Work
       poll_wait = arrived ? quickest : std::min(2 * poll_wait, slowest_poll);
       const std::chrono::microseconds wait = arrived ? std::chrono::microseconds(0) : ranks ? poll_wait : alone;
       for (TaskOutcome& outcome : local.collect(wait)) record(std::move(outcome));
+      if (options.work_in_progress) progress.set_in_progress(options.work_in_progress());
       progress.tick();
     }
   }

@@ -35,6 +35,11 @@ struct FarmOptions {
   // files of its own (partial results a user can watch) but must not throw.
   std::function<std::string(const TaskOutcome&)> on_outcome;
   std::optional<bool> progress_on_terminal;  // show progress (default: when stderr is a terminal)
+  // Called on rank 0's scheduling thread before each redraw of the progress line: how much of the
+  // tasks being computed by rank 0's threads is done, in tasks (two tasks half-way: 1.0). With it
+  // the ETA moves before the first task finishes; without it (or for other ranks' tasks) the ETA
+  // comes from finished tasks alone.
+  std::function<double()> work_in_progress;
 };
 
 struct FarmResult {
@@ -50,6 +55,10 @@ struct FarmResult {
   bool repaired_torn_tail = false;    // the journal's last line was torn (by a kill) and cut off
   double wall_seconds = 0.0;
 };
+
+// The workers that will compute tasks: rank 0's compute threads plus every other rank (for a cost
+// estimate before the farm starts). Throws std::invalid_argument for negative threads.
+std::size_t farm_workers(const Session& session, const FarmOptions& options);
 
 // Throws std::invalid_argument for a bad task list (validate_tasks), JournalError when the journal
 // cannot serve this run (another task list, settings or shard; damaged; in use; unwritable) and

@@ -4,16 +4,18 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 namespace ffrf::distributed {
 
-std::optional<double> estimated_seconds_left(const ProgressCounts& counts, double elapsed_seconds) {
-  if (counts.computed == 0) return std::nullopt;
+std::optional<double> estimated_seconds_left(const ProgressCounts& counts, double elapsed_seconds, double in_progress) {
+  const double worked = static_cast<double>(counts.computed) + std::max(in_progress, 0.0);
+  if (!(worked > 0.0)) return std::nullopt;
   const std::size_t done = counts.resumed + counts.computed;
-  const std::size_t left = counts.total > done ? counts.total - done : 0;
-  return elapsed_seconds / static_cast<double>(counts.computed) * static_cast<double>(left);
+  const double left = static_cast<double>(counts.total > done ? counts.total - done : 0) - std::max(in_progress, 0.0);
+  return elapsed_seconds / worked * std::max(left, 0.0);
 }
 
 std::string format_duration(double seconds) {
@@ -24,11 +26,11 @@ std::string format_duration(double seconds) {
 }
 
 std::string progress_line(const std::string& label, const ProgressCounts& counts, double elapsed_seconds,
-                          const std::string& detail) {
+                          const std::string& detail, double in_progress) {
   std::string line = fmt::format("{}: {}/{} done", label, counts.resumed + counts.computed, counts.total);
   if (counts.resumed > 0) line += fmt::format(" ({} resumed)", counts.resumed);
   line += fmt::format(", {} failed, elapsed {}", counts.failed, format_duration(elapsed_seconds));
-  const std::optional<double> left = estimated_seconds_left(counts, elapsed_seconds);
+  const std::optional<double> left = estimated_seconds_left(counts, elapsed_seconds, in_progress);
   line += left ? ", ETA " + format_duration(*left) : std::string(", ETA ?");
   if (!detail.empty()) line += "; " + detail;
   return line;
@@ -60,7 +62,7 @@ void ProgressMeter::draw(bool force) {
   if (!force && now - last_draw_ < std::chrono::milliseconds(250)) return;
   last_draw_ = now;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  fmt::print(stderr, "\r\033[K{}", progress_line(label_, counts_, elapsed, detail_));
+  fmt::print(stderr, "\r\033[K{}", progress_line(label_, counts_, elapsed, detail_, in_progress_));
   std::fflush(stderr);
 }
 

@@ -195,7 +195,9 @@ FrequencyBand energy_band(const WaveSpectrum& s, double tail_fraction) {
   const double wp = s.peak_frequency();
   const double top = s.kind == SpectrumKind::tabulated ? s.table_frequency.back() : 200.0 * wp;
   const double bottom = s.kind == SpectrumKind::tabulated ? s.table_frequency.front() : 0.0;
-  const double m0 = spectral_moment(s, 0, bottom, top);
+  // The whole axis' m0 (parametric: PM's closed form plus the peak's quadrature), not the integral up
+  // to `top`: the high edge sits where S is small, so 1e-9 of m0 left out would move it by ~1e-6 ωp.
+  const double m0 = s.kind == SpectrumKind::tabulated ? spectral_moment(s, 0, bottom, top) : spectral_moment(s, 0);
   auto solve = [&](double target) {  // cumulative(ω) = target by bisection
     double lo = bottom, hi = top;
     for (int it = 0; it < 60; ++it) {
@@ -205,6 +207,16 @@ FrequencyBand energy_band(const WaveSpectrum& s, double tail_fraction) {
     return 0.5 * (lo + hi);
   };
   return {solve(0.5 * tail_fraction * m0), solve((1.0 - 0.5 * tail_fraction) * m0)};
+}
+
+FrequencyBand variance_band(const WaveSpectrum& s, double variance_share) {
+  require(variance_share > 0.5 && variance_share < 1.0, "variance share of the band", variance_share, "(0.5, 1)");
+  return energy_band(s, 1.0 - variance_share);
+}
+
+FrequencyBand synthesis_band(const WaveSpectrum& s, double omega_min, double omega_max, double variance_share) {
+  if (omega_min == 0.0 && omega_max == 0.0) return variance_band(s, variance_share);
+  return {omega_min, omega_max};
 }
 
 }  // namespace ffrf::hydro

@@ -59,12 +59,8 @@ SeaRealisation synthesize(const WaveSpectrum& spectrum, const SynthesisOptions& 
           options.record_length, "> 0");
   const double step = options.frequency_step > 0.0 ? options.frequency_step : kTwoPi / options.record_length;
   require(std::isfinite(step) && step > 0.0, "frequency step [rad/s]", options.frequency_step, ">= 0");
-  double lo = options.omega_min, hi = options.omega_max;
-  if (lo == 0.0 && hi == 0.0) {
-    const FrequencyBand band = energy_band(spectrum, options.tail_fraction);
-    lo = band.lower;
-    hi = band.upper;
-  }
+  const FrequencyBand band = synthesis_band(spectrum, options.omega_min, options.omega_max, 1.0 - options.tail_fraction);
+  const double lo = band.lower, hi = band.upper;
   require(std::isfinite(lo) && lo >= 0.0, "lowest frequency [rad/s]", lo, ">= 0");
   require(std::isfinite(hi) && hi > lo, "highest frequency [rad/s]", hi, fmt::format("> the lowest ({})", lo));
   const double first = std::max(1.0, std::ceil(lo / step)), last = std::floor(hi / step);

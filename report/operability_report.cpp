@@ -12,6 +12,7 @@
 #include "report/chart_notes.hpp"
 #include "report/gnuplot.hpp"
 #include "report/json.hpp"
+#include "report/operability_chart.hpp"
 
 namespace ffrf::report {
 namespace {
@@ -23,8 +24,9 @@ std::string heading_name(hydro::WaveHeading heading) { return heading == hydro::
 
 std::string verdict_word(bool pass) { return pass ? "pass" : "FAIL"; }
 
-// "pass daf 0.87" / "FAIL slack 1.06" / "failed".
+// "pass daf 0.87" / "FAIL slack 1.06" / "not physical" / "failed".
 std::string cell_word(const CellResult& c) {
+  if (c.status() == study::CellStatus::not_physical) return "not physical";
   if (!c.ok) return "failed";
   return fmt::format("{} {} {:.2f}", verdict_word(c.verdict.pass), study::to_string(c.verdict.governing),
                      c.verdict[c.verdict.governing].utilisation);
@@ -68,61 +70,6 @@ std::string heading_table(const study::OperabilityStudy& s, hydro::WaveHeading h
   return text;
 }
 
-const std::map<Criterion, std::string> criterion_colour{
-    {Criterion::daf, "#1f77b4"},          {Criterion::slack, "#d62728"},       {Criterion::snap, "#9467bd"},
-    {Criterion::cargo_motion, "#2ca02c"}, {Criterion::root_moment, "#ff7f0e"}, {Criterion::buckling, "#8c564b"}};
-
-void draw_chart(const StagedDirectory& out, const study::OperabilityStudy& s) {
-  const std::vector<hydro::WaveHeading> headings = headings_of(s);
-  std::string data, plots;
-  int block = 0;
-  std::vector<std::string> panels;
-  for (hydro::WaveHeading heading : headings) {
-    std::string panel = fmt::format("set title '{} sea'\nplot ", heading_name(heading));
-    std::vector<std::string> series;
-    for (Criterion criterion : study::all_criteria) {
-      for (const bool pass : {true, false}) {
-        std::string points;
-        for (const CellResult& c : s.cells) {
-          if (c.cell.heading != heading || !c.ok || c.verdict.governing != criterion || c.verdict.pass != pass) continue;
-          points += fmt::format("{:.17g} {:.17g} {:.4f}\n", c.cell.peak_period, c.cell.significant_height,
-                                c.verdict[criterion].utilisation);
-        }
-        if (points.empty()) continue;
-        data += fmt::format("# {} {} {}\n{}\n\n", heading_name(heading), study::to_string(criterion), pass ? "pass" : "fail", points);
-        series.push_back(fmt::format("'operability.dat' index {} using 1:2 with points pt {} ps 3 lc rgb '{}' title '{} ({})'",
-                                     block++, pass ? 7 : 5, criterion_colour.at(criterion), study::to_string(criterion),
-                                     pass ? "pass" : "fail"));
-        series.push_back(fmt::format("'operability.dat' index {} using 1:2:(sprintf('%.2f', $3)) with labels offset 0,1.6 "
-                                     "font ',9' notitle",
-                                     block - 1));
-      }
-    }
-    std::string failed;
-    for (const CellResult& c : s.cells) {
-      if (c.cell.heading == heading && !c.ok) failed += fmt::format("{:.17g} {:.17g}\n", c.cell.peak_period, c.cell.significant_height);
-    }
-    if (!failed.empty()) {
-      data += fmt::format("# {} solver failure\n{}\n\n", heading_name(heading), failed);
-      series.push_back(fmt::format("'operability.dat' index {} using 1:2 with points pt 2 ps 3 lc rgb 'black' title 'run failed'", block++));
-    }
-    for (std::size_t i = 0; i < series.size(); ++i) panel += (i ? ", \\\n     " : "") + series[i];
-    panels.push_back(panel + "\n");
-  }
-  const int width = 960 * static_cast<int>(headings.size());
-  std::string script = fmt::format(
-      "# Operability map: Hs over Tp, each cell coloured by its governing criterion (filled circle: pass,\n"
-      "# square: fail), labelled with the governing utilisation (1 = at the limit). Data: operability.dat.\n"
-      "set terminal {} size {},600 font ',11' noenhanced\nset output 'operability.png'\nset grid\nset key outside right top vertical\n"
-      "set xlabel 'peak period Tp [s]'\nset ylabel 'significant wave height Hs [m]'\nset offsets graph 0.08, graph 0.08, graph 0.12, graph 0.08\n"
-      "set multiplot layout 1,{}\n",
-      png_terminal(), width, headings.size());
-  for (const std::string& panel : panels) script += panel;
-  script += "unset multiplot\n";
-  out.write("operability.dat", data);
-  report::draw_chart(out, "operability", script);
-}
-
 }  // namespace
 
 std::string operability_csv(const study::OperabilityStudy& s) {
@@ -130,10 +77,12 @@ std::string operability_csv(const study::OperabilityStudy& s) {
       "hs_m,tp_s,heading,status,model,governing,verdict,daf,daf_standard_error,min_tension_ratio,snap_ratio,"
       "cargo_heave_mpm_m,root_moment_mpm_Nm,compression_mpm_N,u_daf,u_slack,u_snap,u_cargo_motion,u_root_moment,u_buckling,"
       "seeds,work,verified,converged_model,converged_governing,converged_verdict,converged_u_governing,converged_work,"
-      "failure,wall_s,converged_wall_s\n";
+      "steepness,steepness_limit,band_lower_radps,band_upper_radps,band_variance_share,components,repeat_period_sec,"
+      "record_repeats,independent_wave_cycles,failure,wall_s,converged_wall_s\n";
   for (const CellResult& c : s.cells) {
+    const bool physical = c.status() != study::CellStatus::not_physical;
     csv += fmt::format("{:g},{:g},{},{},\"{}\",", c.cell.significant_height, c.cell.peak_period, heading_name(c.cell.heading),
-                       c.ok ? "ok" : "failed", c.model.label());
+                       study::to_string(c.status()), physical ? c.model.label() : std::string());
     if (c.ok) {
       const study::CellStatistics& st = c.statistics;
       csv += fmt::format("{},{},{:.6g},{:.3g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},", study::to_string(c.verdict.governing),
@@ -152,6 +101,10 @@ std::string operability_csv(const study::OperabilityStudy& s) {
     } else {
       csv += c.verified ? "failed,,,,,," : "no,,,,,,";
     }
+    const study::CellSea& sea = c.sea;
+    csv += fmt::format("{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{:.6g},{:.4g},{:.4g},", sea.steepness.steepness,
+                       sea.steepness.limit, sea.band.lower, sea.band.upper, sea.variance_share, sea.components,
+                       sea.repeat_period, sea.record_repeats, sea.independent_wave_cycles);
     std::string failure = c.ok ? c.converged_failure : c.failure;
     std::replace(failure.begin(), failure.end(), '"', '\'');
     csv += fmt::format("\"{}\",{:.3f},{}\n", failure, c.wall_seconds,
@@ -182,10 +135,14 @@ ModelSavings model_savings(const study::OperabilityStudy& s) {
 }
 
 std::string operability_text(const study::OperabilityStudy& s) {
-  std::size_t pass = 0, fail = 0, failed = 0;
-  for (const CellResult& c : s.cells) (c.ok ? (c.verdict.pass ? pass : fail) : failed) += 1;
-  std::string text = fmt::format("{} cells: {} pass, {} fail, {} with a failed run ({}; {} records computed, {} resumed)\n",
-                                 s.cells.size(), pass, fail, failed, s.farm.engine, s.farm.computed, s.farm.resumed);
+  std::size_t pass = 0, fail = 0, failed = 0, not_physical = 0;
+  for (const CellResult& c : s.cells) {
+    (c.status() == study::CellStatus::not_physical ? not_physical : c.ok ? (c.verdict.pass ? pass : fail) : failed) += 1;
+  }
+  std::string text =
+      fmt::format("{} cells: {} pass, {} fail, {} not physical (too steep to exist), {} with a failed run ({}; {} records "
+                  "computed, {} resumed)\n",
+                  s.cells.size(), pass, fail, not_physical, failed, s.farm.engine, s.farm.computed, s.farm.resumed);
   for (hydro::WaveHeading heading : headings_of(s)) text += fmt::format("\n{} sea:\n{}", heading_name(heading), heading_table(s, heading, false));
   const ModelSavings m = model_savings(s);
   if (m.cells > 0) {
@@ -204,6 +161,11 @@ std::string operability_markdown(const study::OperabilityStudy& s, const Operabi
       "resumed from the journal, {:.1f} s wall.\n\n",
       ctx.scene_file, ctx.command, ctx.seeds, ctx.duration, ctx.sea, s.farm.engine, s.farm.computed, s.farm.resumed,
       s.farm.wall_seconds);
+  if (!s.warnings.empty()) {
+    md += "## Warnings\n\n";
+    for (const std::string& warning : s.warnings) md += "- " + warning + "\n";
+    md += "\n";
+  }
   md += fmt::format(
       "## Criteria\n\n| criterion | limit | utilisation |\n|---|---|---|\n"
       "| daf | MPM tension / static ≤ {:g} | DAF / limit |\n"
@@ -212,7 +174,9 @@ std::string operability_markdown(const study::OperabilityStudy& s, const Operabi
       "| cargo_motion | MPM heave amplitude ≤ {:g} m | MPM / limit |\n"
       "| root_moment | MPM root moment ≤ {} | MPM / capacity |\n"
       "| buckling | MPM compression ≤ {:g} × Euler load | MPM / ({:g} P_E) |\n\n"
-      "A cell passes when every utilisation is ≤ 1; the governing criterion is the largest (docs/operability.md).\n\n",
+      "A cell passes when every utilisation is ≤ 1; the governing criterion is the largest (docs/operability.md). A cell "
+      "whose sea is steeper than DNV-RP-C205's breaking limit (Hs/λp above 1/15 at Tp ≤ 8 s, 1/25 at Tp ≥ 15 s) is not "
+      "physical: no records, no verdict.\n\n",
       k.daf_limit, k.slack_margin, k.daf_limit, k.cargo_motion_limit,
       k.root_moment_capacity > 0.0 ? fmt::format("{:.4g} N m", k.root_moment_capacity) : fmt::format("{:g} × static moment", k.daf_limit),
       k.buckling_ratio, k.buckling_ratio);
@@ -223,6 +187,11 @@ std::string operability_markdown(const study::OperabilityStudy& s, const Operabi
         "| Hs [m] | Tp [s] | heading | model | verdict | governing | DAF (± s.e.) | T_min/T_s | cargo MPM [m] | root moment MPM [MN m] | compression MPM [MN] |\n"
         "|--:|--:|---|---|---|---|--:|--:|--:|--:|--:|\n";
   for (const CellResult& c : s.cells) {
+    if (c.status() == study::CellStatus::not_physical) {
+      md += fmt::format("| {:g} | {:g} | {} | | not physical: {} | | | | | | |\n", c.cell.significant_height,
+                        c.cell.peak_period, heading_name(c.cell.heading), c.failure);
+      continue;
+    }
     if (!c.ok) {
       md += fmt::format("| {:g} | {:g} | {} | {} | failed: {} | | | | | | |\n", c.cell.significant_height, c.cell.peak_period,
                         heading_name(c.cell.heading), c.model.label(), c.failure);
@@ -235,6 +204,19 @@ std::string operability_markdown(const study::OperabilityStudy& s, const Operabi
                       c.verdict[c.verdict.governing].utilisation, st.daf, st.daf_standard_error,
                       st.minimum_tension / st.static_tension, st.cargo_heave_mpm.mean, st.root_moment_mpm.mean / 1e6,
                       st.compression_mpm.mean / 1e6);
+  }
+  md += "\n## The sea of each cell\n\nEach cell's records keep the band of its own JONSWAP spectrum that holds the "
+        "stated share of its variance m0 (the rest split equally between the low and high tails; the share computed back "
+        "by quadrature). Components on ω_n = n Δω repeat after 2π/Δω: a record longer than that counts the same waves "
+        "again, and its statistics rest on the wave cycles of one repeat (repeat / Tz), not on the record length.\n\n"
+        "| Hs [m] | Tp [s] | heading | Hs/λp (limit) | band [rad/s] | share of m0 | components | repeats after [s] | "
+        "record / repeat | independent wave cycles |\n|--:|--:|---|--:|---|--:|--:|--:|--:|--:|\n";
+  for (const CellResult& c : s.cells) {
+    const study::CellSea& sea = c.sea;
+    md += fmt::format("| {:g} | {:g} | {} | {:.4f} ({:.4f}) | {:.3f} – {:.3f} | {:.4f} | {} | {:.5g} | {:.2f} | {:.0f} |\n",
+                      c.cell.significant_height, c.cell.peak_period, heading_name(c.cell.heading), sea.steepness.steepness,
+                      sea.steepness.limit, sea.band.lower, sea.band.upper, sea.variance_share, sea.components,
+                      sea.repeat_period, sea.record_repeats, sea.independent_wave_cycles);
   }
   const ModelSavings m = model_savings(s);
   md += fmt::format("\n## The boom model per cell\n\n`ffrf recommend` picked each cell's model on a probe record of its sea "
@@ -265,6 +247,7 @@ std::string operability_json(const study::OperabilityStudy& s, const Operability
   doc["command"] = ctx.command;
   doc["sea"] = ctx.sea;
   doc["seeds"] = ctx.seeds;
+  doc["warnings"] = s.warnings;
   doc["record_s"] = ctx.duration;
   doc["criteria"] = {{"daf_limit", s.criteria.daf_limit},
                      {"slack_margin", s.criteria.slack_margin},
@@ -275,9 +258,17 @@ std::string operability_json(const study::OperabilityStudy& s, const Operability
                    {"resumed", s.farm.resumed}, {"failed", s.farm.failed}, {"wall_s", s.farm.wall_seconds}};
   Json cells = Json::array();
   for (const CellResult& c : s.cells) {
+    const study::CellSea& sea = c.sea;
     Json cell = {{"hs_m", c.cell.significant_height}, {"tp_s", c.cell.peak_period}, {"heading", heading_name(c.cell.heading)},
-                 {"model", c.model.label()}, {"ok", c.ok}};
-    if (c.ok) {
+                 {"status", std::string(study::to_string(c.status()))}, {"ok", c.ok}};
+    cell["sea"] = {{"steepness", sea.steepness.steepness}, {"steepness_limit", sea.steepness.limit},
+                   {"band_rad_s", {sea.band.lower, sea.band.upper}}, {"band_variance_share", sea.variance_share},
+                   {"components", sea.components}, {"repeat_period_s", sea.repeat_period},
+                   {"record_repeats", sea.record_repeats}, {"independent_wave_cycles", sea.independent_wave_cycles}};
+    if (c.status() == study::CellStatus::not_physical) {
+      cell["not_physical"] = c.failure;
+    } else if (c.ok) {
+      cell["model"] = c.model.label();
       cell["pass"] = c.verdict.pass;
       cell["governing"] = std::string(study::to_string(c.verdict.governing));
       Json utilisation;
@@ -286,6 +277,7 @@ std::string operability_json(const study::OperabilityStudy& s, const Operability
       cell["daf"] = c.statistics.daf;
       cell["daf_standard_error"] = c.statistics.daf_standard_error;
     } else {
+      cell["model"] = c.model.label();
       cell["failure"] = c.failure;
     }
     cells.push_back(cell);
@@ -300,7 +292,7 @@ std::string operability_json(const study::OperabilityStudy& s, const Operability
 std::string write_operability_outputs(const std::string& dir, const study::OperabilityStudy& s, const OperabilityContext& ctx) {
   StagedDirectory out(dir, "report.md");
   out.write("operability.csv", operability_csv(s));
-  draw_chart(out, s);
+  draw_operability_chart(out, s);
   out.write("summary.json", with_charts_json(operability_json(s, ctx), out));
   out.write("report.md", operability_markdown(s, ctx) + charts_markdown(out));
   out.commit();

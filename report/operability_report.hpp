@@ -1,9 +1,10 @@
-// The outputs of `ffrf operability` (study/operability.hpp): operability.csv (one row per cell: the
-// statistics, the utilisation of every criterion, the governing one, pass/fail, the verification
-// with the converged model; timing columns are the ones named `*_s`, last), report.md (the
-// operability table per heading, the cells' details, the model choice and what it saved), summary.json
-// and the operability chart (Hs–Tp map coloured by the governing criterion, pass/fail marked;
-// operability.png with its gnuplot script and data).
+// The outputs of `ffrf operability` (study/operability.hpp): operability.csv (one row per cell: its
+// status — ok, failed, not_physical — the statistics, the utilisation of every criterion, the
+// governing one, pass/fail, the verification with the converged model, the cell's sea: steepness,
+// band, components, repeat period and independent wave cycles; timing columns are the ones named
+// `*_s`, last), report.md (the warnings, the operability table per heading, the cells' details, the
+// sea of each cell, the model choice and what it saved), summary.json and the operability chart
+// (report/operability_chart.hpp).
 #pragma once
 
 #include <string>

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "coupling/wave_field.hpp"
+#include "hydro/sea_steepness.hpp"
 #include "scene/irregular_sea.hpp"
 
 namespace ffrf::scene {
@@ -220,14 +221,13 @@ void check_sea(const Scene& scene, Findings& found) {
     }
     return;
   }
-  const double tp = sea.peak_period;
-  const double wavelength = g * tp * tp / (2.0 * std::numbers::pi);  // deep-water λp, DNV's definition of Sp
-  const double limit = tp <= 8.0 ? 1.0 / 15.0 : (tp >= 15.0 ? 1.0 / 25.0 : 1.0 / 15.0 + (tp - 8.0) / 7.0 * (1.0 / 25.0 - 1.0 / 15.0));
-  if (sea.significant_height / wavelength > limit) {
+  if (!(sea.peak_period > 0.0 && sea.significant_height >= 0.0)) return;  // out of range: the schema names it
+  const hydro::SeaSteepness steep = hydro::sea_steepness(sea.significant_height, sea.peak_period, g);
+  if (steep.breaking()) {
     found.error({"wave.significant_height", "wave.peak_period"},
                 fmt::format("the sea is too steep: Hs/λp = 2π Hs/(g Tp²) = {:.3g} exceeds DNV-RP-C205's limit {:.4g} "
                             "for Tp = {:g} s (λp = {:.4g} m; valid range (0, {:.4g}] m)",
-                            sea.significant_height / wavelength, limit, tp, wavelength, limit * wavelength));
+                            steep.steepness, steep.limit, sea.peak_period, steep.peak_wavelength, steep.largest_height()));
   }
   if (!std::isinf(depth) && 1.86 * sea.significant_height >= 0.78 * depth) {
     found.warning({"wave.significant_height", "environment.water_depth"},

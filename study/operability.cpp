@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "coupling/time_reached.hpp"
 #include "distributed/stable_hash.hpp"
 #include "hydro/wave_spectrum.hpp"
 #include "scene/irregular_sea.hpp"
@@ -32,6 +33,15 @@ std::string SeaCell::key() const {
   return fmt::format("Hs={:.17g} Tp={:.17g} heading={}", significant_height, peak_period, heading_name(heading));
 }
 
+std::string_view to_string(CellStatus status) {
+  switch (status) {
+    case CellStatus::ok: return "ok";
+    case CellStatus::failed: return "failed";
+    case CellStatus::not_physical: return "not_physical";
+  }
+  return "?";
+}
+
 std::string CellModel::label() const {
   return fmt::format("{}, {} rtol {:.0e}", choice.label(), coupling::to_string(integrator), relative_tolerance);
 }
@@ -47,6 +57,9 @@ void validate(const OperabilityRequest& r) {
   }
   if (r.components < 0 || r.components > 100000) {
     bad(fmt::format("operability: {} wave components (valid range [0, 100000], 0: a sea that never repeats)", r.components));
+  }
+  if (!(r.variance_share > 0.5 && r.variance_share < 1.0)) {
+    bad(fmt::format("operability: wave band variance share {} out of range (valid range (0.5, 1))", r.variance_share));
   }
   if (r.seeds < 1 || r.seeds > 1000) bad(fmt::format("operability: {} seeds per cell (valid range [1, 1000])", r.seeds));
   if (!(r.duration > 0.0 && r.duration <= 86400.0)) {
@@ -94,6 +107,22 @@ std::uint64_t record_seed(const SeaCell& cell, int index) {
   return distributed::StableHash().add_field(cell.key()).add_field(fmt::format("seed={}", index)).value() & 0x7fffffffULL;
 }
 
+hydro::WaveSpectrum cell_spectrum(const scene::Scene& scene, const SeaCell& cell, const OperabilityRequest& request) {
+  scene::IrregularSea sea = scene.sea && scene.sea->spectrum != scene::SeaSpectrum::components ? *scene.sea : scene::IrregularSea{};
+  sea.spectrum = scene::SeaSpectrum::jonswap;
+  sea.significant_height = cell.significant_height;
+  sea.peak_period = cell.peak_period;
+  sea.peak_enhancement = request.peak_enhancement;
+  return scene::sea_spectrum(sea);
+}
+
+CellSea cell_sea(const scene::Scene& scene, const SeaCell& cell, const OperabilityRequest& request) {
+  const double ramp_periods = scene.sea && scene.sea->spectrum != scene::SeaSpectrum::components ? scene.sea->ramp_periods
+                                                                                                 : scene::IrregularSea{}.ramp_periods;
+  return cell_sea(cell_spectrum(scene, cell, request), scene.environment.gravity, request.duration,
+                  ramp_periods * cell.peak_period, request.components, request.variance_share);
+}
+
 scene::Scene record_scene(const scene::Scene& scene, const SeaCell& cell, std::uint64_t seed, const OperabilityRequest& request) {
   scene::IrregularSeaState sea;
   sea.spectrum = "jonswap";
@@ -103,14 +132,15 @@ scene::Scene record_scene(const scene::Scene& scene, const SeaCell& cell, std::u
   sea.heading = cell.heading;
   sea.seed = seed;
   sea.duration = request.duration;
-  if (request.components == 0) return scene::in_irregular_sea(scene, sea);
-  // in_irregular_sea keeps the base's component count (and warns when the sea repeats within the record).
+  // in_irregular_sea keeps the base sea's band and component count: the cell's own band (not the
+  // scene's, which belongs to its own Tp) and the request's count.
+  const hydro::FrequencyBand band = hydro::variance_band(cell_spectrum(scene, cell, request), request.variance_share);
   scene::Scene base = scene;
-  if (!base.sea) {
-    base.sea = scene::IrregularSea{};
-    base.wave.reset();
-  }
+  if (!base.sea || base.sea->spectrum == scene::SeaSpectrum::components) base.sea = scene::IrregularSea{};
+  base.wave.reset();
   base.sea->component_count = request.components;
+  base.sea->frequency_min = band.lower;
+  base.sea->frequency_max = band.upper;
   return scene::in_irregular_sea(base, sea);
 }
 
@@ -198,8 +228,9 @@ CellModel converged_model(const scene::Scene& scene, const OperabilityRequest& r
 }
 
 SeedExtremes run_record(const scene::Scene& scene, const SeaCell& cell, int seed_index, const CellModel& model,
-                        const OperabilityRequest& request, modal::ModeCache* modes) {
+                        const OperabilityRequest& request, modal::ModeCache* modes, std::atomic<double>* time_reached) {
   const scene::Scene record = record_scene(scene, cell, record_seed(cell, seed_index), request);
+  const coupling::TimeReachedSink progress(time_reached);
   DynamicsRequest dynamics;
   dynamics.integrator = model.integrator;
   dynamics.relative_tolerance = dynamics.absolute_tolerance = model.relative_tolerance;

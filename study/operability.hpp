@@ -2,7 +2,9 @@
 // (× heading), N seeds per cell, one record of `duration` seconds per seed. Each (cell, seed) is one
 // task of the distributed engine (distributed/farm.hpp), so that cells and seeds are balanced over
 // threads and MPI ranks, journaled as they finish and resumed on a rerun. Per cell the seeds'
-// extremes become statistics and a verdict (operability_criteria.hpp).
+// extremes become statistics and a verdict (operability_criteria.hpp). A cell steeper than a sea can
+// be is not physical: it gets no records and no verdict (operability_sea.hpp); each cell's records
+// keep the band of its own spectrum that holds `variance_share` of m0.
 // The boom model per cell is `ffrf recommend`'s on a probe record of the cell's sea (its first seed,
 // probe_peak_periods peak periods or the record if shorter): the cheapest model that passes the
 // tolerance against the converged reference by solver work at the model-choice rtol
@@ -10,9 +12,11 @@
 // fine nodal mesh at a tight tolerance) to verify that choice and to measure what it saved.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "coupling/simulation.hpp"
@@ -22,6 +26,7 @@
 #include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
 #include "study/operability_criteria.hpp"
+#include "study/operability_sea.hpp"
 
 namespace ffrf::study {
 
@@ -39,6 +44,7 @@ struct OperabilityRequest {
   double duration = 10800.0;     // of each record [s]
   double peak_enhancement = 3.3; // JONSWAP γ of every cell
   int components = 0;            // wave components per record (0: Δω = 2π / duration, a sea that never repeats)
+  double variance_share = hydro::default_variance_share;  // of each cell's m0 within its synthesis band
   OperabilityCriteria criteria;  // limits (0 fields: scene defaults)
   double tolerance = 0.01;       // of the model choice (recommend's τ)
   int verify_cells = 2;          // cells run again with the converged model (0: none)
@@ -71,21 +77,34 @@ CellModel recommended_model(const scene::Scene& scene, const SeaCell& cell, cons
                             modal::ModeCache* modes);
 CellModel converged_model(const scene::Scene& scene, const OperabilityRequest& request, const CellModel& recommended);
 
-// The scene of one record: the cell's JONSWAP sea (scene::in_irregular_sea) with the seed's random phases.
+// The cell's JONSWAP spectrum (σa, σb of the scene's sea when it has one).
+hydro::WaveSpectrum cell_spectrum(const scene::Scene& scene, const SeaCell& cell, const OperabilityRequest& request);
+// The sea of the cell's records (band, components, repetition, steepness).
+CellSea cell_sea(const scene::Scene& scene, const SeaCell& cell, const OperabilityRequest& request);
+
+// The scene of one record: the cell's JONSWAP sea (scene::in_irregular_sea) with the seed's random
+// phases over the cell's own band (hydro::variance_band), the request's component count.
 scene::Scene record_scene(const scene::Scene& scene, const SeaCell& cell, std::uint64_t seed,
                           const OperabilityRequest& request);
 // The seed of record `index` of a cell: from the cell's key and the index only, the same for both models.
 std::uint64_t record_seed(const SeaCell& cell, int index);
 
 // One record: prepare, integrate, reduce (statistics after the wave ramp). Throws on a solver failure.
+// `time_reached` (optional) follows the integrator's simulated time, for progress within the record.
 SeedExtremes run_record(const scene::Scene& scene, const SeaCell& cell, int seed_index, const CellModel& model,
-                        const OperabilityRequest& request, modal::ModeCache* modes);
+                        const OperabilityRequest& request, modal::ModeCache* modes,
+                        std::atomic<double>* time_reached = nullptr);
+
+enum class CellStatus { ok, failed, not_physical };  // a verdict; a record failed; too steep to exist
+std::string_view to_string(CellStatus status);       // "ok", "failed", "not_physical"
 
 struct CellResult {
   SeaCell cell;
-  CellModel model;
-  bool ok = false;
-  std::string failure;  // the first failed seed's message
+  CellSea sea;
+  CellModel model;      // none for a cell that is not physical
+  bool ok = false;      // every record ran: statistics and verdict hold
+  std::string failure;  // the first failed seed's message, or why the cell is not physical
+  CellStatus status() const { return !sea.physical() ? CellStatus::not_physical : ok ? CellStatus::ok : CellStatus::failed; }
   CellStatistics statistics;
   CellVerdict verdict;
   double wall_seconds = 0.0;  // timing: the seeds' task times summed
@@ -98,16 +117,39 @@ struct CellResult {
   double converged_wall_seconds = 0.0;
 };
 
+// What a table will run, before anything runs: every cell's sea and models, the verified cells, the
+// records. The same on every process.
+struct OperabilityPlan {
+  std::vector<SeaCell> cells;
+  std::vector<CellSea> seas;
+  std::vector<CellModel> recommended, converged;  // default-constructed for a cell that is not physical
+  std::vector<std::size_t> verified;              // physical cells run again with the converged model
+  std::vector<std::string> warnings;              // the sea repeats within the record; the scene's band replaced
+  std::size_t physical_cells() const;
+  std::size_t records(int seeds) const;           // (physical + verified cells) × seeds
+};
+// Throws std::invalid_argument when no cell of the grid is physical (every one too steep).
+OperabilityPlan plan_operability(const scene::Scene& scene, const OperabilityRequest& request, modal::ModeCache* modes);
+// "the sea repeats every 315 s (2π/Δω, 40 components over 0.8 rad/s): a 10800-s record is 34.3
+// repeats ..." for the cells whose records repeat, the one with the fewest independent cycles named;
+// empty when no record repeats.
+std::string repetition_warning(const OperabilityPlan& plan, const OperabilityRequest& request);
+
 struct OperabilityStudy {
   OperabilityCriteria criteria;  // as resolved (DAF limit from the hook load)
   std::vector<CellResult> cells;
+  std::vector<std::string> warnings;  // the plan's
   distributed::FarmResult farm;  // engine, counts, journal, wall time (outcomes dropped)
 };
 
-// Runs every (cell, seed) task and the verification tasks on the engine and judges the cells.
-// Every process calls it; on ranks > 0 the result has farm.root == false and no cells.
+// Runs every (cell, seed) task of the physical cells and the verification tasks on the engine and
+// judges the cells. Every process calls it; on ranks > 0 the result has farm.root == false and no
+// cells. The first form plans itself.
 OperabilityStudy run_operability(distributed::Session& session, const scene::Scene& scene,
                                  const OperabilityRequest& request, distributed::FarmOptions farm_options);
+OperabilityStudy run_operability(distributed::Session& session, const scene::Scene& scene,
+                                 const OperabilityRequest& request, const OperabilityPlan& plan,
+                                 distributed::FarmOptions farm_options);
 
 // The criteria with the scene's defaults filled in (DAF limit from the cargo's mass).
 OperabilityCriteria resolve_criteria(const scene::Scene& scene, const OperabilityCriteria& criteria);

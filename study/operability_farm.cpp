@@ -1,8 +1,12 @@
-// The operability table on the distributed engine (see operability.hpp): one task per (cell, seed)
-// and per verified (cell, seed) with the converged model; each task's record is its SeedExtremes
-// (operability_criteria.hpp) as text, so the journal holds finished records and a rerun resumes.
+// The operability table on the distributed engine (see operability.hpp): one task per (physical
+// cell, seed) and per verified (cell, seed) with the converged model; each task's record is its
+// SeedExtremes (operability_criteria.hpp) as text, so the journal holds finished records and a rerun
+// resumes. Each task's simulated time is followed (coupling/time_reached.hpp), so that the progress
+// line's ETA moves inside the first records.
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <atomic>
 #include <stdexcept>
 
 #include "coupling/stop_request.hpp"
@@ -50,17 +54,21 @@ void judge_records(const std::vector<const distributed::TaskOutcome*>& outcomes,
 
 OperabilityStudy run_operability(distributed::Session& session, const scene::Scene& scene,
                                  const OperabilityRequest& request, distributed::FarmOptions farm_options) {
+  modal::ModeCache modes;
+  return run_operability(session, scene, request, plan_operability(scene, request, &modes), std::move(farm_options));
+}
+
+OperabilityStudy run_operability(distributed::Session& session, const scene::Scene& scene,
+                                 const OperabilityRequest& request, const OperabilityPlan& plan,
+                                 distributed::FarmOptions farm_options) {
   validate(request);
   OperabilityStudy study;
   study.criteria = resolve_criteria(scene, request.criteria);
+  study.warnings = plan.warnings;
   modal::ModeCache modes;
-  const std::vector<SeaCell> cells = sea_cells(request);
-  std::vector<CellModel> recommended, converged;
-  for (const SeaCell& cell : cells) {
-    recommended.push_back(recommended_model(scene, cell, request, &modes));
-    converged.push_back(converged_model(scene, request, recommended.back()));
-  }
-  const std::vector<std::size_t> verified = verified_cells(cells.size(), request.verify_cells);
+  const std::vector<SeaCell>& cells = plan.cells;
+  const std::vector<CellModel>&recommended = plan.recommended, &converged = plan.converged;
+  const std::vector<std::size_t>& verified = plan.verified;
 
   std::vector<RecordTask> records;
   std::vector<std::string> keys;
@@ -72,6 +80,7 @@ OperabilityStudy run_operability(distributed::Session& session, const scene::Sce
     costs.push_back(model.choice.kind == scene::BoomKind::nodal ? 3.0 * model.choice.elements : 3.0 + model.choice.modes);
   };
   for (std::size_t c = 0; c < cells.size(); ++c) {
+    if (!plan.seas[c].physical()) continue;  // no records: the sea cannot exist
     for (int s = 0; s < request.seeds; ++s) add(c, s, false);
   }
   for (std::size_t c : verified) {
@@ -80,11 +89,22 @@ OperabilityStudy run_operability(distributed::Session& session, const scene::Sce
   std::vector<distributed::Task> tasks = distributed::make_tasks(keys);
   for (std::size_t i = 0; i < tasks.size(); ++i) tasks[i].expected_cost = costs[i];
 
+  // The simulated time each record has reached, and which records are finished (scheduling thread).
+  std::vector<std::atomic<double>> time_reached(tasks.size());
+  for (std::atomic<double>& t : time_reached) t.store(0.0);
+  std::vector<char> finished_record(tasks.size(), 0);
+  farm_options.work_in_progress = [&] {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < tasks.size(); ++i) {
+      if (!finished_record[i]) sum += std::min(time_reached[i].load(std::memory_order_relaxed) / request.duration, 1.0);
+    }
+    return sum;
+  };
   const distributed::WorkFunction work = [&](const distributed::Task& task) {
     const RecordTask& r = records[task.index];
     const CellModel& model = r.converged ? converged[r.cell] : recommended[r.cell];
     try {
-      return encode(run_record(scene, cells[r.cell], r.seed, model, request, &modes));
+      return encode(run_record(scene, cells[r.cell], r.seed, model, request, &modes, &time_reached[task.index]));
     } catch (const coupling::Interrupted& stop) {  // not a result: the rerun computes it again
       throw distributed::TaskAbandoned(fmt::format("{}: interrupted by signal {}", task.key, stop.signal));
     }
@@ -97,9 +117,15 @@ OperabilityStudy run_operability(distributed::Session& session, const scene::Sce
   std::vector<std::vector<distributed::TaskOutcome>> arrived(cells.size());
   std::size_t cells_complete = 0;
   std::string finished = "hs_m,tp_s,heading,status,verdict,governing,utilisation\n";
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    if (plan.seas[c].physical()) continue;
+    finished += fmt::format("{:g},{:g},{},not_physical,,,\n", cells[c].significant_height, cells[c].peak_period,
+                            cells[c].heading == hydro::WaveHeading::head ? "head" : "following");
+  }
   const std::filesystem::path finished_file = farm_options.output_directory / "cells_finished.csv";
   farm_options.on_outcome = [&](const distributed::TaskOutcome& outcome) -> std::string {
     const RecordTask& r = records[outcome.index];
+    finished_record[outcome.index] = 1;
     if (!r.converged) arrived[r.cell].push_back(outcome);
     if (--records_left[r.cell] == 0) {
       ++cells_complete;
@@ -138,7 +164,13 @@ OperabilityStudy run_operability(distributed::Session& session, const scene::Sce
   for (std::size_t c = 0; c < cells.size(); ++c) {
     CellResult result;
     result.cell = cells[c];
+    result.sea = plan.seas[c];
     result.model = recommended[c];
+    if (!result.sea.physical()) {
+      result.failure = not_physical_reason(cells[c].significant_height, cells[c].peak_period, result.sea.steepness);
+      study.cells.push_back(std::move(result));
+      continue;
+    }
     judge_records(by_cell[c], study.criteria, recommended[c].euler_load, result.ok, result.failure, result.statistics,
                   result.verdict, result.wall_seconds);
     if (!converged_by_cell[c].empty()) {

@@ -2,7 +2,9 @@
 // `mpirun --oversubscribe -np 3`, killed mid-way and rerun. Independent facts: the table (timing
 // columns `*_s` removed) is byte-identical whatever the number of processes and threads, and after a
 // kill and a resume; the killed run wrote no table and the rerun computed only the records missing
-// from the journal (counted from the journal's own lines); bad axes are refused with the option named.
+// from the journal (counted from the journal's own lines); bad axes are refused with the option named;
+// a grid with a breaking cell names it not physical and exits 0, a sea that repeats within the record
+// is warned about, and report.md's command reproduces the run.
 #include <gtest/gtest.h>
 #include <signal.h>
 
@@ -140,6 +142,45 @@ TEST(CliOperability, KilledMidWayTheRerunResumesToTheSameTable) {
   const RunOutput whole = run(0, dir / "whole", dir, {"--threads", "1"});
   ASSERT_EQ(whole.end.exit_code, 0) << whole.err;
   EXPECT_EQ(table_without_timing(out / "operability.csv"), table_without_timing(dir / "whole/operability.csv"));
+}
+
+// A 3 × 3 grid whose Hs = 3 m, Tp = 5 s cell is steeper than a sea can be (Hs ≤ λp/15 = 2.60 m at
+// 5 s, 3.75 m at 6 s), with 20 components per record (they repeat within ~30 s at these periods).
+TEST(CliOperability, ABreakingCellIsNotPhysicalAndARepeatingSeaIsWarnedAbout) {
+  ScratchDirectory dir;
+  ChildSpec spec;
+  spec.argv = {ffrf, "operability", scene, "--hs", "1:3:3", "--tp", "5:7:3", "--seeds", "1", "--duration", "100",
+               "--components", "20", "--verify", "0", "--threads", "2", "--cargo-motion-limit", "3",
+               "--out", (dir / "out").string()};
+  const RunOutput run = run_child(spec, dir.path(), std::chrono::minutes(10));
+  // Exit 0: every physical cell has its verdict; the breaking cell is a result (not physical), not a failure.
+  ASSERT_EQ(run.end.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("warning: the synthesized sea repeats within the 100-s record in 8 of 8 cells (20 wave "
+                         "components each)"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("independent wave cycles"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("1 of 9 cells are steeper than a sea can be"), std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find("estimated cost"), std::string::npos) << "the probe runs on a terminal only: " << run.err;
+  EXPECT_NE(run.out.find("9 cells: "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("1 not physical (too steep to exist), 0 with a failed run"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("8 records computed"), std::string::npos) << run.out;
+  const std::string csv = read_text(dir / "out/operability.csv");
+  EXPECT_NE(csv.find("\n3,5,following,not_physical,"), std::string::npos) << csv;
+  EXPECT_EQ(csv.find(",failed,"), std::string::npos) << csv;
+  const std::string report = read_text(dir / "out/report.md");
+  EXPECT_NE(report.find("## Warnings"), std::string::npos);
+  EXPECT_NE(report.find("not physical: Hs = 3 m at Tp = 5 s is steeper than a sea can be"), std::string::npos) << report;
+  // The echoed command reproduces the run: the component count and every criterion are in it.
+  EXPECT_NE(report.find("--seeds 1 --duration 100 --gamma 3.3 --components 20 --band-share 0.995 --tolerance 1% "
+                        "--verify 0 --converged-elements 32 --daf-limit 0 --slack-margin 0.1 --cargo-motion-limit 3"),
+            std::string::npos)
+      << report;
+  const std::string json = read_text(dir / "out/summary.json");
+  EXPECT_NE(json.find("\"not_physical\""), std::string::npos);
+  EXPECT_NE(json.find("repeats within the 100-s record"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(dir / "out/operability.png"));
+  EXPECT_NE(read_text(dir / "out/operability.gp").find("not physical (too steep)"), std::string::npos);
 }
 
 TEST(CliOperability, AnAxisThatIsNotOneIsRefusedWithTheOptionNamed) {

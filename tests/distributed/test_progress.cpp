@@ -1,5 +1,6 @@
 // The progress line: durations, the estimate of the time left (rate of this run's completions
-// times the tasks left, checked by hand), and quiet unless on a terminal.
+// times the tasks left, with and without work inside unfinished tasks, checked by hand), and quiet
+// unless on a terminal.
 #include <gtest/gtest.h>
 
 #include "distributed/progress.hpp"
@@ -22,6 +23,18 @@ TEST(Progress, TheEstimateIsThisRunsRateTimesTheTasksLeft) {
   EXPECT_FALSE(estimated_seconds_left(ProgressCounts{10, 2, 0, 0}, 3.0));  // no rate yet
   EXPECT_EQ(progress_line("sweep", counts, 8.0), "sweep: 6/10 done (2 resumed), 1 failed, elapsed 8s, ETA 8s");
   EXPECT_EQ(progress_line("sweep", ProgressCounts{5, 0, 0, 0}, 1.0), "sweep: 0/5 done, 0 failed, elapsed 1s, ETA ?");
+}
+
+TEST(Progress, WorkInsideTasksGivesAnEstimateBeforeTheFirstFinishes) {
+  // 8 tasks, none finished; after 30 s two workers are each 1/4 through a task: 0.5 tasks done in
+  // 30 s is 60 s a task, and 7.5 tasks' worth is left -> 450 s.
+  const ProgressCounts none{8, 0, 0, 0};
+  ASSERT_TRUE(estimated_seconds_left(none, 30.0, 0.5));
+  EXPECT_DOUBLE_EQ(*estimated_seconds_left(none, 30.0, 0.5), 450.0);
+  EXPECT_EQ(progress_line("records", none, 30.0, "", 0.5), "records: 0/8 done, 0 failed, elapsed 30s, ETA 7m30s");
+  // With finished tasks the work in progress adds to them: 2 done + 1.0 in progress in 30 s -> 10 s
+  // a task, 6 − 1 = 5 tasks' worth left -> 50 s.
+  EXPECT_DOUBLE_EQ(*estimated_seconds_left(ProgressCounts{8, 0, 2, 0}, 30.0, 1.0), 50.0);
 }
 
 TEST(Progress, QuietUnlessOnATerminal) {

@@ -1,6 +1,7 @@
 // Wave spectra against their definitions: ∫S dω = Hs²/16 by an independent Simpson rule on the
 // substitution u = (ωp/ω)⁴ (which maps the ω⁻⁵ tail onto a finite interval), the peak at ωp by a
-// golden-section search on S, PM moments against Γ-function closed forms, DNV's A_γ error.
+// golden-section search on S, PM moments against Γ-function closed forms, DNV's A_γ error; the band
+// rule against PM's closed-form cumulative variance and JONSWAP's Hs²/16 by Simpson's rule.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -106,6 +107,57 @@ TEST(WaveSpectrum, EnergyBandLeavesTheRequestedTails) {
   const double m0 = spectral_moment(s, 0);
   EXPECT_NEAR(spectral_moment(s, 0, 0.0, band.lower) / m0, 5e-4, 1e-6);
   EXPECT_NEAR(spectral_moment(s, 0, band.upper, 200 * s.peak_frequency()) / m0, 5e-4, 1e-6);
+}
+
+// Simpson's rule of S over [a, b] with m (even) intervals: the band's variance, independent of
+// ffrf's Gauss–Legendre panels.
+double simpson_variance(const WaveSpectrum& s, double a, double b, int m) {
+  const double h = (b - a) / m;
+  double sum = spectral_density(s, a) + spectral_density(s, b);
+  for (int i = 1; i < m; ++i) sum += (i % 2 ? 4.0 : 2.0) * spectral_density(s, a + i * h);
+  return sum * h / 3.0;
+}
+
+TEST(WaveSpectrum, VarianceBandOfPiersonMoskowitzIsItsClosedFormQuantiles) {
+  // PM's cumulative variance is m0 exp(−(5/4)(ωp/ω)⁴), so the band holding a share p with the rest
+  // split equally has the edges ωp (1.25 / ln(2/(1−p)))^¼ and ωp (1.25 / ln(2/(1+p)))^¼.
+  for (double tp : {6.0, 12.0}) {
+    const auto s = pierson_moskowitz(2.5, tp);
+    const double wp = 2 * kPi / tp;
+    for (double share : {0.99, 0.995, 0.999}) {
+      const auto band = variance_band(s, share);
+      EXPECT_NEAR(band.lower, wp * std::pow(1.25 / std::log(2.0 / (1.0 - share)), 0.25), 1e-7 * wp) << tp << " " << share;
+      EXPECT_NEAR(band.upper, wp * std::pow(1.25 / std::log(2.0 / (1.0 + share)), 0.25), 1e-7 * wp) << tp << " " << share;
+    }
+  }
+  // The default share's high edge: 4.73 ωp (99.9 %: 7.07 ωp).
+  EXPECT_NEAR(variance_band(pierson_moskowitz(2.5, 8.0)).upper / (2 * kPi / 8.0), 4.727, 1e-3);
+  EXPECT_THROW(variance_band(pierson_moskowitz(2.5, 8.0), 0.4), std::invalid_argument);
+  EXPECT_THROW(variance_band(pierson_moskowitz(2.5, 8.0), 1.0), std::invalid_argument);
+}
+
+TEST(WaveSpectrum, VarianceBandOfJonswapHoldsTheShareOfHsSquaredOver16) {
+  // The exact normalisation makes m0 = Hs²/16; Simpson's rule over the band and over the low tail
+  // (independent of the quadrature that chose the edges) holds the share and half the rest.
+  for (double gamma : {1.0, 3.3, 7.0}) {
+    const auto s = jonswap(2.0, 9.0, gamma);
+    const double m0 = 2.0 * 2.0 / 16.0;
+    const auto band = variance_band(s, 0.995);
+    EXPECT_NEAR(simpson_variance(s, band.lower, band.upper, 400000) / m0, 0.995, 1e-7) << gamma;
+    EXPECT_NEAR(simpson_variance(s, 1e-9, band.lower, 400000) / m0, 0.0025, 1e-7) << gamma;
+  }
+  // JONSWAP γ = 3.3 concentrates the variance at the peak: its band ends at 4.3 ωp, not PM's 4.73.
+  EXPECT_NEAR(variance_band(jonswap(2.0, 9.0, 3.3)).upper / (2 * kPi / 9.0), 4.3, 0.05);
+}
+
+TEST(WaveSpectrum, AnExplicitSynthesisBandOverridesTheRule) {
+  const auto s = jonswap(2.0, 9.0, 3.3);
+  const auto given = synthesis_band(s, 0.3, 2.0);
+  EXPECT_EQ(given.lower, 0.3);
+  EXPECT_EQ(given.upper, 2.0);
+  const auto rule = synthesis_band(s, 0.0, 0.0, 0.99);
+  EXPECT_EQ(rule.lower, variance_band(s, 0.99).lower);
+  EXPECT_EQ(rule.upper, variance_band(s, 0.99).upper);
 }
 
 TEST(WaveSpectrum, TabulatedSpectrumInterpolatesLinearly) {
