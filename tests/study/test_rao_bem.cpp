@@ -46,7 +46,7 @@ void print(const study::TimeDomainCheck& check) {
 TEST(RaoBem, RegularWaveRunsReproduceTheBemRaosOfRigidNodalAndModalBooms) {
   const scene::Scene scene = test::scene_file("bem_barge_crane.toml");
   ASSERT_TRUE(scene.bem && scene.bem->radiation_model == hydro::RadiationKind::convolution);
-  for (const scene::BoomChoice& choice : study::rao_models()) {
+  for (const scene::BoomChoice& choice : study::rao_models(scene)) {
     const study::TimeDomainCheck check = study::check_time_domain(scene, choice, linear_check());
     print(check);
     for (const auto& period : check.periods) {
