@@ -13,6 +13,7 @@
 #include "app/radiation_option.hpp"
 #include "study/radiation_compare.hpp"
 #include "app/commands.hpp"
+#include "report/chart_notes.hpp"
 #include "report/compare_report.hpp"
 #include "report/crane_charts.hpp"
 #include "report/gnuplot.hpp"
@@ -54,9 +55,10 @@ void write_outputs(report::StagedDirectory& out, const report::RunContext& conte
   charts.difference_floors = report::difference_floors(comparison, charts.names);
   out.write(charts.differences_csv, report::difference_csv(comparison, charts.names));
   report::draw_crane_charts(out, charts);
-  out.write("report.md", report::compare_markdown(context, comparison));
-  out.write("summary.json", report::compare_json(context, comparison));
+  out.write("report.md", report::compare_markdown(context, comparison) + report::charts_markdown(out));
+  out.write("summary.json", report::with_charts_json(report::compare_json(context, comparison), out));
   out.commit();
+  fmt::print(stderr, "{}", report::chart_notes_text("compare", out));
 }
 
 int run_compare(const CompareOptions& options) {

@@ -17,6 +17,7 @@
 #include "app/option_checks.hpp"
 #include "fem/beam_model.hpp"
 #include "report/campbell_report.hpp"
+#include "report/chart_notes.hpp"
 #include "report/gnuplot.hpp"
 #include "report/modes_report.hpp"
 #include "report/output_directory.hpp"
@@ -104,12 +105,11 @@ void write_outputs(StagedDirectory& out, const ModesResult& result, const ModesC
   });
   progress_done();
   out.write("frequency_convergence.csv", convergence_csv(convergence));
-  out.write("mode_shapes.gp", mode_shapes_script(result, terminal));
-  out.write("frequency_convergence.gp", convergence_script(result, terminal));
-  run_gnuplot(out.staging(), "mode_shapes.gp");
-  run_gnuplot(out.staging(), "frequency_convergence.gp");
-  out.write("summary.json", modes_json(result, context, convergence));
+  draw_chart(out, "mode_shapes", mode_shapes_script(result, terminal));
+  draw_chart(out, "frequency_convergence", convergence_script(result, terminal));
+  out.write("summary.json", with_charts_json(modes_json(result, context, convergence), out));
   out.commit();
+  fmt::print(stderr, "{}", chart_notes_text("modes", out));
 }
 
 // --spin / --axial-force / --spin-range, after the common options were checked.
@@ -155,8 +155,7 @@ int run_spinning(const ModesOptions& options, const scene::Scene& scene, const f
     json = campbell_json(result, context);
     if (out) {
       out->write("campbell.csv", campbell_csv(result));
-      out->write("campbell.gp", campbell_script(result, png_terminal()));
-      run_gnuplot(out->staging(), "campbell.gp");
+      draw_chart(*out, "campbell", campbell_script(result, png_terminal()));
     }
   } else {
     const SpinModesResult result = solve_spin_modes(model, spin, hub_radius, axial_force, count, solver);
@@ -166,8 +165,9 @@ int run_spinning(const ModesOptions& options, const scene::Scene& scene, const f
     if (out) out->write("prestressed_frequencies.csv", spin_modes_csv(result));
   }
   if (out) {
-    out->write("summary.json", json);
+    out->write("summary.json", with_charts_json(json, *out));
     out->commit();
+    fmt::print(stderr, "{}", chart_notes_text("modes", *out));
   }
   fmt::print("{}", options.json ? json : text);
   if (!options.out.empty() && !options.json) fmt::print("\nwrote {}\n", options.out);

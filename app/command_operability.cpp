@@ -130,7 +130,7 @@ int run_operability_command(const OperabilityOptions& options) {
                                      fmt::format("irregular, JONSWAP γ = {:g}, long-crested, {}", request.peak_enhancement,
                                                  request.components > 0 ? fmt::format("{} components", request.components)
                                                                         : std::string("components every 2π/duration (never repeats)"))};
-  report::write_operability_outputs(options.out, result, context);
+  fmt::print(stderr, "{}", report::write_operability_outputs(options.out, result, context));
   fmt::print("{}\nwrote {} (report.md, operability.csv, operability.png, summary.json; journal {})\n",
              report::operability_text(result), options.out, result.farm.journal.string());
   return result.farm.failed > 0 ? exit_failure : exit_ok;

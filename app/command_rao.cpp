@@ -23,6 +23,7 @@
 #include "app/commands.hpp"
 #include "app/option_checks.hpp"
 #include "hydro/wave_spectrum.hpp"
+#include "report/chart_notes.hpp"
 #include "report/gnuplot.hpp"
 #include "report/output_directory.hpp"
 #include "report/rao_charts.hpp"
@@ -138,13 +139,11 @@ void write_outputs(report::StagedDirectory& out, const study::RaoResult& result,
   if (result.peak_search) out.write("resonance_peaks.csv", report::resonance_peaks_csv(result));
   if (result.sea) out.write("sea_spectrum.csv", report::sea_spectrum_csv(result));
   if (!checks.empty()) out.write("time_domain_check.csv", report::time_domain_check_csv(checks));
-  for (const std::string& name : report::rao_chart_names()) {
-    out.write(name + ".gp", report::rao_chart_script(name, result, terminal));
-    report::run_gnuplot(out.staging(), name + ".gp");
-  }
-  out.write("report.md", report::rao_markdown(result, checks, context, true));
-  out.write("summary.json", report::rao_json(result, checks, context));
+  for (const std::string& name : report::rao_chart_names()) report::draw_chart(out, name, report::rao_chart_script(name, result, terminal));
+  out.write("report.md", report::rao_markdown(result, checks, context, true) + report::charts_markdown(out));
+  out.write("summary.json", report::with_charts_json(report::rao_json(result, checks, context), out));
   out.commit();
+  fmt::print(stderr, "{}", report::chart_notes_text("rao", out));
 }
 
 int run_rao(const RaoOptions& options) {

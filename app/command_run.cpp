@@ -1,7 +1,8 @@
 // `ffrf run SCENE`: one crane model — static equilibrium, then dynamics (study::run_model). Prints
 // the static report and a summary (or --json); --out DIR gets timeseries.csv, summary.json and the
-// PNG charts with their gnuplot scripts, written completely or not at all. Exit 2 for bad input, 3
-// when a solver fails.
+// PNG charts with their gnuplot scripts, written completely or not at all (a chart with nothing to
+// draw is left out, one gnuplot fails on is named: summary.json's "charts" and stderr say which).
+// Exit 2 for bad input, 3 when a solver fails.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -14,6 +15,7 @@
 #include "app/radiation_option.hpp"
 #include "app/commands.hpp"
 #include "app/option_checks.hpp"
+#include "report/chart_notes.hpp"
 #include "report/crane_charts.hpp"
 #include "report/gnuplot.hpp"
 #include "report/output_directory.hpp"
@@ -44,8 +46,9 @@ void write_outputs(report::StagedDirectory& out, const report::RunContext& conte
                                 run.choice.label(), coupling::to_string(context.settings.kind), context.settings.relative_tolerance);
   charts.command = "ffrf run --out";
   report::draw_crane_charts(out, charts);
-  out.write("summary.json", report::run_json(context, run));
+  out.write("summary.json", report::with_charts_json(report::run_json(context, run), out));
   out.commit();
+  fmt::print(stderr, "{}", report::chart_notes_text("run", out));
 }
 
 int run_crane(const RunOptions& options) {

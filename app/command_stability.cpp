@@ -14,6 +14,7 @@
 
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
+#include "report/chart_notes.hpp"
 #include "report/gnuplot.hpp"
 #include "report/stability_section.hpp"
 
@@ -50,9 +51,12 @@ int run_stability(const StabilityCommandOptions& options) {
     } catch (const scene::SceneError& error) {
       return scene_error("stability", options.scene, error, "this crane");
     }
+    report.markdown += report::charts_markdown(out);
+    report.json = report::with_charts_json(report.json, out);
     out.write("report.md", report.markdown);
     out.write("summary.json", report.json);
     out.commit();
+    fmt::print(stderr, "{}", report::chart_notes_text("stability", out));
   }
   if (temporary) std::filesystem::remove_all(target);
   fmt::print("{}", options.json ? report.json : report.markdown);

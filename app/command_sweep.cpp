@@ -90,7 +90,7 @@ int merge(const SweepOptions& options) {
                                   : std::string("# Sweep (merged)\n\nThe shards' context file was not found.\n");
   report::png_terminal();
   try {
-    report::write_sweep_outputs(options.out, rows, context);
+    fmt::print(stderr, "{}", report::write_sweep_outputs(options.out, rows, context));
   } catch (const std::runtime_error& error) {
     if (std::string(error.what()).find("appears twice") != std::string::npos) return bad_input("sweep", error.what());
     throw;
@@ -175,7 +175,7 @@ int run_sweep(const SweepOptions& options) {
   for (const std::string& line : result.records) csv += line;
   std::vector<report::SweepRow> rows = report::read_sweep_csv(csv, "sweep.csv");
   const std::string context = report::sweep_context(options.scene, *scene, request.grid, request.duration, result.study);
-  if (!options.out.empty()) report::write_sweep_outputs(options.out, rows, context);
+  if (!options.out.empty()) fmt::print(stderr, "{}", report::write_sweep_outputs(options.out, rows, context));
   std::size_t failed = 0;
   for (const report::SweepRow& row : rows) failed += row.ok() ? 0 : 1;
   fmt::print("{} configurations{} of the {} grid, {} s simulated, {}, {} threads on rank 0 ({} computed, {} resumed): {} ok, "

@@ -4,7 +4,7 @@
 // model is hard-coded — and both runs go through the one pipeline (study/run_pipeline.hpp): model
 // construction, the KINSOL static equilibrium and the initial state outside the timed region, the
 // integration inside. After Google Benchmark's output it prints the ratio and the solver work
-// (steps × state size). Options (before Google Benchmark's own): --duration=SECONDS another
+// (RHS evaluations × state size). Options (before Google Benchmark's own): --duration=SECONDS another
 // simulated time (default: the scene's 120 s), --tolerance=FRACTION another tolerance (default 0.01).
 #include <benchmark/benchmark.h>
 #include <fmt/core.h>
@@ -32,7 +32,7 @@ struct Model {
 
 struct Measured {
   double milliseconds = 0.0;
-  double work = 0.0;  // steps × state size
+  double work = 0.0;  // RHS evaluations × state size (study::solver_work)
   long steps = 0;
 };
 
@@ -45,18 +45,20 @@ void integrate_model(benchmark::State& state, Comparison* context, const Model& 
   state.SetLabel(model.name);
   study::PreparedRun prepared = study::prepare_run(context->scene, model.choice);
   long steps = 0;
+  double work = 0.0;
   for (auto _ : state) {
     try {
       const study::ModelRun run = study::integrate_run(context->scene, prepared, model.settings);
       benchmark::DoNotOptimize(run.result.samples.data());
       steps = run.result.stats.steps;
+      work = run.work();
     } catch (const std::exception& error) {
       state.SkipWithError(error.what());
       return;
     }
   }
   context->measured[model.name].steps = steps;
-  context->measured[model.name].work = static_cast<double>(steps) * prepared.state_size();
+  context->measured[model.name].work = work;
   state.counters["steps"] = static_cast<double>(steps);
 }
 
@@ -120,7 +122,7 @@ int main(int argc, char** argv) {
   const Measured& recommended = context.measured["recommended"];
   if (reference.milliseconds > 0.0 && recommended.milliseconds > 0.0) {
     fmt::print("\nreference scene, {:g} s simulated: reference {} at rtol {:g}: {:.1f} ms ({} steps); recommended {}, {} at "
-               "rtol {:g}: {:.1f} ms ({} steps)\nwall-time ratio {:.1f}x, solver-work ratio {:.1f}x (steps x state size)\n",
+               "rtol {:g}: {:.1f} ms ({} steps)\nwall-time ratio {:.1f}x, solver-work ratio {:.1f}x (RHS evaluations x state size)\n",
                rec.duration, rec.reference.choice.label(), rec.reference.settings.relative_tolerance, reference.milliseconds,
                reference.steps, chosen.choice.label(), coupling::to_string(chosen.integrator), rec.reasoning.relative_tolerance,
                recommended.milliseconds, recommended.steps, reference.milliseconds / recommended.milliseconds,

@@ -210,6 +210,7 @@ std::vector<SnapLoad> snap_loads(const RunResult& result, const MonitorLimits& l
       }
     }
     snap.ratio = limits.static_tension > 0.0 ? snap.peak_tension / limits.static_tension : 0.0;
+    if (limits.static_tension > 0.0 && !(snap.peak_tension > limits.snap_load_factor * limits.static_tension)) continue;
     snaps.push_back(snap);
   }
   return snaps;

@@ -1,9 +1,10 @@
 // The failure detectors every run carries, so that a run that goes wrong says how and when: while the run goes, a divergence watch on the
 // boom tip's elastic deflection (the linear floating-frame model is meaningless once it is a sizeable
 // fraction of the boom length) and, for a floating hull, a capsize watch (pitch past 90°); after the
-// run, a deck edge or the cargo under water (what the model does not describe), the wire's slack intervals and snap loads (tension
-// from zero back to a peak), the clamp's constraint drift, the boom's compression against its Euler
-// buckling load π²EI/(4L²) (clamped-free), and a high rate of rejected steps. Solver failures
+// run, a deck edge or the cargo under water (what the model does not describe), the wire's slack
+// intervals and snap loads (tension from zero back to a peak above the static tension), the clamp's
+// constraint drift, the boom's compression against its Euler buckling load π²EI/(4L²)
+// (clamped-free), and a high rate of rejected steps. Solver failures
 // (step-size collapse, Newton divergence, non-positive-definite mass matrix, explicit instability)
 // are named by the integrators themselves (coupling/failure.hpp). docs/stability.md explains each.
 #pragma once
@@ -36,6 +37,10 @@ struct MonitorLimits {
   double buckling_warning_ratio = 0.5;    // warn from this fraction of the buckling load
   double wire_unstretched_length = 0.0;   // L0 [m]; 0: no wire
   double static_tension = 0.0;            // the wire's tension at rest [N] (snap ratio); 0: unknown
+  // A snap load is a peak above this multiple of the static tension after a slack interval: the wire
+  // caught the falling cargo and overshot its load at rest. A lower peak is the cargo settling back on
+  // the wire (the slack interval is reported, not a snap).
+  double snap_load_factor = 1.0;
   double error_test_failure_ratio = 0.3;  // warn when rejected steps exceed this fraction of steps
   WaterLimits water = {};                 // capsize, deck submerged, cargo in water
   double cargo_pitch_limit = 1.5707963267948966;  // |cargo pitch| [rad] beyond which the cargo has overturned
@@ -72,7 +77,9 @@ struct SnapLoad {
 
 // Slack intervals from the located wire events (a run that starts slack opens one at t = 0).
 std::vector<SlackInterval> slack_intervals(const RunResult& result, const MonitorLimits& limits);
-// One snap per slack interval that ends within the run: the peak sampled tension that follows.
+// The snap loads: for each slack interval that ends within the run, the peak sampled tension until
+// the next slack interval, when it exceeds snap_load_factor × static_tension (every such peak when
+// the static tension is unknown).
 std::vector<SnapLoad> snap_loads(const RunResult& result, const MonitorLimits& limits);
 // Largest |C| and the buckling load ratio (largest root compression / Euler load) over the samples.
 double max_constraint_drift(const RunResult& result);

@@ -8,6 +8,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include "linalg/dense_solvers.hpp"
 
 namespace ffrf::hydro {
 

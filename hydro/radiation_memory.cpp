@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include "linalg/dense_solvers.hpp"
 
 namespace ffrf::hydro {
 

@@ -11,6 +11,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include "linalg/dense_solvers.hpp"
 
 namespace ffrf::hydro {
 

@@ -10,6 +10,7 @@
 #include <numeric>
 #include <sstream>
 #include <vector>
+#include "linalg/dense_solvers.hpp"
 
 namespace ffrf::modal {
 

@@ -39,7 +39,17 @@ std::string settings_text(const RunContext& c) {
 std::string verdict_sentence(const Comparison& c) {
   const std::vector<study::MeasuredModel> measured = study::measured_models(c);
   const std::string failed = failed_list(c.verdict, measured);
-  return verdict_headline(c.verdict, measured, reference_label(c.reference), "models") + (failed.empty() ? "" : " " + failed);
+  const double rtol = c.settings.relative_tolerance, choice_rtol = study::model_choice_rtol(c.verdict.tolerance);
+  std::string s = verdict_headline(c.verdict, measured, reference_label(c.reference), "models",
+                                   fmt::format(" (all at {} rtol {:g})", coupling::to_string(c.settings.kind), rtol)) +
+                  (failed.empty() ? "" : " " + failed);
+  // recommend and sweep name their cheapest model from runs at the model-choice rtol: say when these are not.
+  if (rtol != choice_rtol) {
+    s += fmt::format(" These models ran at rtol {:g}, not at the model-choice rtol {:g} of τ = {:g} at which recommend and "
+                     "sweep name the cheapest model: run them at rtol = atol = {:g} to compare like for like.",
+                     rtol, choice_rtol, c.verdict.tolerance, choice_rtol);
+  }
+  return s;
 }
 
 // Why the verdict judges the total error, and what the two parts are.
@@ -118,7 +128,7 @@ std::string compare_markdown(const RunContext& ctx, const Comparison& c) {
   // The marks let scripts/regenerate-docs.sh quote this section (the README does).
   r += "## Verdict\n\n<!-- verdict:begin -->\n**" + verdict_sentence(c) + "**\n\n";
   r += verdict_table(c) + "<!-- verdict:end -->\n\n";
-  r += "Speed-ups: the reference's wall time (integration) and solver work (steps × state size, the cost measure of "
+  r += "Speed-ups: the reference's wall time (integration) and solver work (RHS evaluations × state size, the cost measure of "
        "`ffrf recommend`: independent of the machine's load) over the model's. Static and dynamic error: the two parts of "
        "the worst output's error.\n\n";
   r += measure_text(c) + "\n\n";
@@ -259,7 +269,7 @@ std::string compare_text(const RunContext& ctx, const Comparison& c) {
                    c.reference.run.elastic_dof, "-", "-", "-", "-", "-", c.reference.run.result.stats.wall_seconds, "1×", "1×");
   t += "(worst: the largest total normalized RMS error over the judged outputs, what the verdict judges; static, dynamic: "
        "its two parts for that output — the equilibrium offset, and the motion about each model's own equilibrium; x wall, "
-       "x work: the reference's wall time and solver work (steps x state size) over the model's)\n\n";
+       "x work: the reference's wall time and solver work (RHS evaluations x state size) over the model's)\n\n";
   if (has_irregular_errors(c)) t += irregular_errors_text(model_labels(c), c.irregular);
   t += "verdict     " + wrapped(verdict_sentence(c), 100, 12) + "\n";
   return t;

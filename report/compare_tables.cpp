@@ -95,8 +95,9 @@ std::string static_table(const scene::Scene& scene, const Comparison& c) {
       "wire tension [N] | joint moment at B [N m] |\n|---|--:|--:|--:|--:|--:|--:|--:|--:|\n";
   for (const auto& [run, label] : all_runs(c)) {
     const coupling::CraneOutputs& o = run->static_outputs();
-    t += fmt::format("| {} | {} | {:.4f} | {:+.4f} | {:+.5f} | {:+.5f} | {:.5f} | {} | {} |\n", label, run->elastic_dof,
-                     study::draft_at_mid_length(scene, o), o.hull.z() * degrees, o.tip_deflection.y(), o.tip_deflection.x(),
+    const double draft = study::draft_at_mid_length(scene, o);  // NaN without a hull (a hub): shown as "-"
+    t += fmt::format("| {} | {} | {} | {:+.4f} | {:+.5f} | {:+.5f} | {:.5f} | {} | {} |\n", label, run->elastic_dof,
+                     std::isfinite(draft) ? fmt::format("{:.4f}", draft) : std::string("-"), o.hull.z() * degrees, o.tip_deflection.y(), o.tip_deflection.x(),
                      scene.wire ? o.wire_length - scene.wire->unstretched_length : 0.0, format_value(o.wire_tension),
                      format_value(o.joint_reaction.z()));
   }
@@ -115,7 +116,7 @@ std::string wire_table(const Comparison& c) {
 }
 
 std::string cost_table(const Comparison& c) {
-  std::string t = "| model | wall time [s] | real-time factor | steps | state size | work (steps × state size) | function "
+  std::string t = "| model | wall time [s] | real-time factor | steps | state size | work (RHS evaluations × state size) | function "
                   "evaluations | Jacobian evaluations | Newton iterations | error-test failures | max constraint residual [m] |\n"
                   "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
   for (const auto& [run, label] : all_runs(c)) {

@@ -92,8 +92,18 @@ std::string difference_plot(const Chart& c, std::size_t chart_index, const Chart
     plots.push_back(fmt::format("{} skip 1 using 1:(floored(${})) with lines lw 1.5 lc rgb '{}' notitle",
                                 gnuplot_quoted(set.differences_csv), column, palette[m % palette.size()]));
   }
+  // Only rigid booms against the reference on a tip chart: no difference to draw, the panel says so.
+  if (plots.empty()) return "set label 3 'no elastic model: a rigid boom has no tip deflection' at graph 0.5, 0.5 center\nplot [GPVAL_X_MIN:GPVAL_X_MAX] [1:10] NaN notitle  # the upper panel's time range\n";
   return fmt::format("floor = {:.3g}\nfloored(x) = abs(x) > floor ? abs(x) : floor\n", floor) + "plot " +
          fmt::format("{}", fmt::join(plots, ", \\\n     ")) + "\n";
+}
+
+// The curves a chart would draw: the models that have its output (a rigid boom has no tip
+// deflection) and the reference.
+std::size_t curve_count(const Chart& c, const ChartSet& set) {
+  std::size_t curves = 0;
+  for (const ChartSource& s : set.sources) curves += s.reference || !is_tip(c) || s.elastic ? 1 : 0;
+  return curves;
 }
 
 }  // namespace
@@ -216,8 +226,14 @@ std::string crane_chart_script(const std::string& name, const ChartSet& set, con
 void draw_crane_charts(const StagedDirectory& out, const ChartSet& set) {
   const std::string terminal = png_terminal();
   for (const std::string& name : set.names) {
-    out.write(name + ".gp", crane_chart_script(name, set, terminal));
-    run_gnuplot(out.staging(), name + ".gp");
+    const Chart& c = chart(name);
+    if (curve_count(c, set) == 0) {
+      leave_out_chart(out, name,
+                      is_tip(c) ? "a rigid boom has no elastic tip deflection (the column is zero in the CSV)"
+                                : "no model has this output");
+      continue;
+    }
+    draw_chart(out, name, crane_chart_script(name, set, terminal));
   }
 }
 

@@ -56,7 +56,9 @@ std::vector<double> difference_floors(const study::Comparison& comparison, const
 std::string crane_chart_script(const std::string& name, const ChartSet& set, const std::string& terminal);
 
 // Writes every chart's script into the staging directory and runs gnuplot on it (the CSV files
-// must be written first); throws std::runtime_error when gnuplot is missing or fails.
+// must be written first); a chart with no curve (the tip charts of a rigid boom alone) is left out,
+// one gnuplot fails on is recorded (report/gnuplot.hpp's draw_chart); throws std::runtime_error only
+// when gnuplot is missing.
 void draw_crane_charts(const StagedDirectory& out, const ChartSet& set);
 
 }  // namespace ffrf::report

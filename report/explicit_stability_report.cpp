@@ -175,14 +175,14 @@ void write_explicit_stability_map(const StagedDirectory& out, const ExplicitStab
   out.write("explicit_stability.csv", explicit_stability_csv(map));
   const std::string terminal = png_terminal();
   std::string data, cells, trials, theory;
-  out.write("stable_step_vs_frequency.gp", frequency_chart(map, terminal, data));
+  const std::string frequency_script = frequency_chart(map, terminal, data);
   out.write("stable_step_vs_frequency.csv", data);
-  out.write("stability_map.gp", map_chart(map, terminal, cells, trials, theory));
+  const std::string map_script = map_chart(map, terminal, cells, trials, theory);
   out.write("stability_map_cells.csv", cells);
   out.write("stability_map_trials.csv", trials);
   out.write("stability_map_theory.csv", theory);
-  run_gnuplot(out.staging(), "stable_step_vs_frequency.gp");
-  run_gnuplot(out.staging(), "stability_map.gp");
+  draw_chart(out, "stable_step_vs_frequency", frequency_script);
+  draw_chart(out, "stability_map", map_script);
 }
 
 }  // namespace ffrf::report

@@ -10,10 +10,9 @@
 #include <unistd.h>
 
 #include <fmt/format.h>
-#include <fstream>
-#include <vector>
-#include <sstream>
+#include <mutex>
 #include <stdexcept>
+#include <vector>
 
 extern char** environ;
 
@@ -67,18 +66,47 @@ int run_captured(const std::vector<std::string>& argv, const std::filesystem::pa
 }  // namespace
 
 std::string png_terminal() {
+  static std::mutex mutex;
+  static std::string found;  // empty until gnuplot answered once
+  const std::lock_guard lock(mutex);
+  if (!found.empty()) return found;
   // GPVAL_TERMINALS is one line: no pager (`set terminal` pages its list on a terminal).
   std::string terminals;
   if (run_captured({"gnuplot", "-e", "print GPVAL_TERMINALS"}, {}, terminals) != 0) {
     throw std::runtime_error("gnuplot is needed for the charts of --out but could not be run "
                              "(install it: apt-get install gnuplot-nox)");
   }
-  return terminals.find("pngcairo") != std::string::npos ? "pngcairo" : "png";
+  found = terminals.find("pngcairo") != std::string::npos ? "pngcairo" : "png";
+  return found;
 }
 
 void run_gnuplot(const std::filesystem::path& directory, const std::string& script) {
   std::string output;
   if (run_captured({"gnuplot", script}, directory, output) != 0) throw std::runtime_error(fmt::format("gnuplot {} failed: {}", script, output));
+}
+
+void draw_chart(const StagedDirectory& out, const std::string& name, const std::string& script) {
+  out.write(name + ".gp", script);
+  const std::string png = name + ".png";
+  try {
+    run_gnuplot(out.staging(), name + ".gp");
+    std::error_code error;
+    if (std::filesystem::file_size(out.staging() / png, error) > 0 && !error) {
+      out.record_chart({png, ChartRecord::Status::drawn, ""});
+      return;
+    }
+    throw std::runtime_error(fmt::format("gnuplot {}.gp ran but wrote no {}", name, png));
+  } catch (const std::runtime_error& failure) {
+    std::error_code ignored;
+    std::filesystem::remove(out.staging() / png, ignored);  // never a truncated chart posing as one
+    std::string message = failure.what();
+    while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
+    out.record_chart({png, ChartRecord::Status::failed, message});
+  }
+}
+
+void leave_out_chart(const StagedDirectory& out, const std::string& name, const std::string& reason) {
+  out.record_chart({name + ".png", ChartRecord::Status::left_out, reason});
 }
 
 std::string gnuplot_quoted(const std::string& text) {

@@ -10,12 +10,15 @@ namespace ffrf::report {
 
 namespace {
 
-std::string value(double x) { return std::isfinite(x) ? fmt::format("{:.5g}", x) : "-"; }
+// A number, or "-" where there is none (a spectral peak the record is too short to resolve: NaN).
+std::string value(double x, int digits = 5) { return std::isfinite(x) ? fmt::format("{:.{}g}", x, digits) : "-"; }
+// A zero up-crossing period: "-" when the record has no up-crossing to measure it (Tz = 0).
+std::string period(double x, int digits = 5) { return x > 0.0 ? value(x, digits) : "-"; }
 std::string percent(double x) { return std::isfinite(x) ? fmt::format("{:+.2f}%", 100.0 * x) : "-"; }
 
 std::string row(const study::ResponseStatistics& r) {
   return fmt::format("  {:<20} {:>11} {:>11} {:>8} {:>8} {:>11} {:>11} {:>11} {:>11}\n", r.column, value(r.standard_deviation),
-                     value(r.significant), value(r.zero_crossing_period), value(r.peak_frequency),
+                     value(r.significant), period(r.zero_crossing_period), value(r.peak_frequency),
                      value(r.observed_maximum), r.extremes ? value(r.rayleigh) : "-", r.extremes ? value(r.weibull) : "-",
                      r.extremes ? value(r.gumbel) : "-");
 }
@@ -40,13 +43,18 @@ Json response_json(const study::ResponseStatistics& r) {
 }  // namespace
 
 std::string irregular_text(const study::IrregularStatistics& s) {
+  const std::string window =
+      s.after_ramp ? fmt::format("statistics over {:g} s after the ramp (t > {:g} s)", s.record_length, s.window_start)
+                   : fmt::format("statistics over the whole {:g}-s run, which ends within the wave ramp (t < {:g} s): "
+                                 "they include the growing waves of the ramp",
+                                 s.record_length, s.ramp_end);
   std::string text = fmt::format(
-      "\nirregular sea: statistics over {:g} s after the ramp (t > {:g} s), sampled every {:g} s\n"
-      "  incident wave at G1: realised Hs = 4σ = {:.4g} m, Tz {:.4g} s, spectral peak {:.4g} rad/s\n"
+      "\nirregular sea: {}, sampled every {:g} s\n"
+      "  incident wave at G1: realised Hs = 4σ = {} m, Tz {} s, spectral peak {} rad/s\n"
       "  most probable maxima (MPM) over the record, as levels: Rayleigh (narrow-band Gaussian), Weibull fit to the\n"
       "  peaks, Gumbel fit to 10 block maxima; motions about static equilibrium\n",
-      s.record_length, s.window_start, s.sample_interval, s.elevation.significant, s.elevation.zero_crossing_period,
-      s.elevation.peak_frequency);
+      window, s.sample_interval, value(s.elevation.significant, 4), period(s.elevation.zero_crossing_period, 4),
+      value(s.elevation.peak_frequency, 4));
   text += fmt::format("  {:<20} {:>11} {:>11} {:>8} {:>8} {:>11} {:>11} {:>11} {:>11}\n", "output", "sigma", "4 sigma",
                       "Tz [s]", "peak w", "max", "MPM Rayl.", "MPM Weib.", "MPM Gumb.");
   for (const study::ResponseStatistics& r : s.responses) text += row(r);
@@ -64,6 +72,8 @@ Json irregular_json(const study::IrregularStatistics& s) {
   for (const study::ResponseStatistics& r : s.responses) responses[std::string(r.column)] = response_json(r);
   Json json{{"window_start_s", s.window_start},
             {"record_length_s", s.record_length},
+            {"ramp_end_s", s.ramp_end},
+            {"after_ramp", s.after_ramp},
             {"sample_interval_s", s.sample_interval},
             {"incident_wave", response_json(s.elevation)},
             {"responses", std::move(responses)}};

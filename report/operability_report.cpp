@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "report/chart_notes.hpp"
 #include "report/gnuplot.hpp"
 #include "report/json.hpp"
 
@@ -119,8 +120,7 @@ void draw_chart(const StagedDirectory& out, const study::OperabilityStudy& s) {
   for (const std::string& panel : panels) script += panel;
   script += "unset multiplot\n";
   out.write("operability.dat", data);
-  out.write("operability.gp", script);
-  run_gnuplot(out.staging(), "operability.gp");
+  report::draw_chart(out, "operability", script);
 }
 
 }  // namespace
@@ -237,10 +237,11 @@ std::string operability_markdown(const study::OperabilityStudy& s, const Operabi
                       st.compression_mpm.mean / 1e6);
   }
   const ModelSavings m = model_savings(s);
-  md += fmt::format("\n## The boom model per cell\n\nRecommend's reasoning picked each cell's model from the top of its "
-                    "energy band (tolerance {:g}). Verified on {} cells against the converged model (same seeds):\n\n"
+  md += fmt::format("\n## The boom model per cell\n\n`ffrf recommend` picked each cell's model on a probe record of its sea "
+                    "(the first seed, {:g} peak periods or the record if shorter): the cheapest by solver work that passes "
+                    "τ = {:g} against the converged reference. Verified on {} cells against the converged model (same seeds):\n\n"
                     "| Hs [m] | Tp [s] | heading | model | governing (u) | converged model | governing (u) |\n|--:|--:|---|---|---|---|---|\n",
-                    ctx.tolerance, m.cells);
+                    study::probe_peak_periods, ctx.tolerance, m.cells);
   for (const CellResult& c : s.cells) {
     if (!c.verified || !c.ok || !c.converged_ok) continue;
     md += fmt::format("| {:g} | {:g} | {} | {} | {} {} ({:.4f}) | {} | {} {} ({:.4f}) |\n", c.cell.significant_height,
@@ -251,7 +252,7 @@ std::string operability_markdown(const study::OperabilityStudy& s, const Operabi
   }
   if (m.cells > 0) {
     md += fmt::format("\n{} of {} agree on the verdict and the governing criterion; the governing utilisation differs by at most "
-                      "{:.2g} %. The converged model would cost **{:.1f}× the solver work** (steps × state size) and "
+                      "{:.2g} %. The converged model would cost **{:.1f}× the solver work** (RHS evaluations × state size) and "
                       "**{:.1f}× the wall time** of the recommended models on these cells.\n",
                       m.agreeing, m.cells, 100.0 * m.largest_difference, m.work_ratio, m.wall_ratio);
   }
@@ -296,13 +297,14 @@ std::string operability_json(const study::OperabilityStudy& s, const Operability
   return json_text(doc);
 }
 
-void write_operability_outputs(const std::string& dir, const study::OperabilityStudy& s, const OperabilityContext& ctx) {
+std::string write_operability_outputs(const std::string& dir, const study::OperabilityStudy& s, const OperabilityContext& ctx) {
   StagedDirectory out(dir, "report.md");
   out.write("operability.csv", operability_csv(s));
   draw_chart(out, s);
-  out.write("summary.json", operability_json(s, ctx));
-  out.write("report.md", operability_markdown(s, ctx));
+  out.write("summary.json", with_charts_json(operability_json(s, ctx), out));
+  out.write("report.md", operability_markdown(s, ctx) + charts_markdown(out));
   out.commit();
+  return chart_notes_text("operability", out);
 }
 
 }  // namespace ffrf::report

@@ -41,7 +41,8 @@ ModelSavings model_savings(const study::OperabilityStudy& study);
 std::string operability_text(const study::OperabilityStudy& study);
 
 // Writes operability.csv, the chart, summary.json and report.md (the marker) into dir, whole or not at all.
-void write_operability_outputs(const std::string& dir, const study::OperabilityStudy& study,
+// Returns the console lines naming a chart not drawn (report/chart_notes.hpp; empty when it was).
+std::string write_operability_outputs(const std::string& dir, const study::OperabilityStudy& study,
                                const OperabilityContext& context);
 
 }  // namespace ffrf::report

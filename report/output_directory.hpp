@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace ffrf::report {
@@ -20,6 +21,16 @@ namespace ffrf::report {
 class OutputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+// What became of one chart of an output directory (its PNG file name): drawn, left out because it
+// had nothing to draw (the reason says why), or failed (gnuplot's message; its script is kept so the
+// user can rerun it). A chart never costs a command its results: the data are written either way.
+struct ChartRecord {
+  enum class Status { drawn, left_out, failed };
+  std::string png;
+  Status status = Status::drawn;
+  std::string reason;  // left out or failed: why
 };
 
 class StagedDirectory {
@@ -37,6 +48,10 @@ class StagedDirectory {
   // Moves everything into the target (created if needed), the marker last; throws OutputError, or
   // coupling::Interrupted when a stop was requested (nothing is committed then).
   void commit();
+  // The charts drawn (or not) into this directory, in order (report/gnuplot.hpp's draw_chart and
+  // leave_out_chart record them; the commands name the ones not drawn in their reports).
+  void record_chart(ChartRecord record) const { charts_.push_back(std::move(record)); }
+  const std::vector<ChartRecord>& charts() const { return charts_; }
 
  private:
   [[noreturn]] void fail(const std::string& what, const std::error_code& reason) const;
@@ -46,6 +61,7 @@ class StagedDirectory {
   std::string marker_;
   std::vector<std::filesystem::path> created_parents_;  // deepest first; removed again without commit
   bool committed_ = false;
+  mutable std::vector<ChartRecord> charts_;  // a log of what was written, not the directory's identity
 };
 
 // Checks that DIR can take the output of a command that writes it only at the end (creates and

@@ -8,6 +8,7 @@
 
 #include "report/json.hpp"
 #include "report/reference_report.hpp"
+#include "report/verdict_report.hpp"
 #include "study/error_measure.hpp"
 
 namespace ffrf::report {
@@ -38,13 +39,18 @@ std::string decision_sentence(const RecommendContext& ctx, const Recommendation&
                        output_list(rec.outputs), ctx.tolerance, rec.reference.choice.label());
   }
   const Candidate& c = rec.candidates[*rec.chosen];
-  std::string s = fmt::format("Recommended: {} at rtol {:g}: error {:.3g} (worst: {}) ≤ τ = {:g} against {}; {:.3g}× less "
-                              "solver work (steps × state size) and {:.3g}× less wall time than the reference.",
-                              c.label(), rec.reasoning.relative_tolerance, c.error, c.worst_output, ctx.tolerance,
-                              reference_label(rec.reference), rec.work_speedup(), rec.wall_speedup());
+  std::size_t passed = 0;
+  for (const Candidate& x : rec.candidates) passed += x.status == CandidateStatus::passed ? 1 : 0;
+  std::string s = fmt::format("Recommended, the cheapest by solver work ({}) of the {} candidate{} that pass: {} at rtol {:g}, "
+                              "error {:.3g} (worst: {}) ≤ τ = {:g} against {}; {} solver work than the reference; wall "
+                              "time {} (measured; not decisive: it varies with the machine's load).",
+                              study::solver_work_measure, passed, passed == 1 ? "" : "s", c.label(),
+                              rec.reasoning.relative_tolerance, c.error, c.worst_output, ctx.tolerance,
+                              reference_label(rec.reference), speedup_words(rec.work_speedup()),
+                              speedup_words(rec.wall_speedup()));
   if (rec.next_cheaper) {
     const Candidate& n = rec.candidates[*rec.next_cheaper];
-    s += fmt::format(" The next cheaper candidate, {}, fails: {}.", n.label(),
+    s += fmt::format(" The next cheaper candidate of the ladder, {}, fails: {}.", n.label(),
                      n.status == CandidateStatus::solver_failure ? n.failure : fmt::format("error {:.3g}", n.error));
   } else {
     s += " It is the cheapest candidate of the ladder.";
@@ -84,16 +90,18 @@ std::string recommend_text(const RecommendContext& ctx, const Recommendation& re
                               rec.reference.window_start, reference_label(rec.reference));
   t += "reasoning\n";
   for (const std::string& s : rec.reasoning.statements) t += "  - " + s + "\n";
-  t += fmt::format("\n{:<50} {:>5} {:>9} {:>9} {:>7} {:>9} {:>8}  {}\n", "candidate (cheapest first)", "DOFs", "estimate",
-                   "error", "steps", "work", "wall [s]", "outcome");
+  t += fmt::format("\nwork = solver work, {}; expected: before the run (the ladder's order)\n", study::solver_work_measure);
+  t += fmt::format("{:<50} {:>5} {:>9} {:>9} {:>9} {:>7} {:>9} {:>8}  {}\n", "candidate (cheapest expected first)", "DOFs",
+                   "expected", "estimate", "error", "steps", "work", "wall [s]", "outcome");
   for (const Candidate& c : rec.candidates) {
     const bool r = ran(c) && c.status != CandidateStatus::solver_failure;
-    t += fmt::format("{:<50} {:>5} {:>9} {:>9} {:>7} {:>9} {:>8}  {}\n", c.label(), c.elastic_dof, number(c.estimated_error, "{:.2g}"),
-                     r ? number(c.error) : "-", r ? std::to_string(c.steps) : "-", r ? number(c.work()) : "-",
-                     r ? number(c.wall_seconds) : "-", outcome(c));
+    t += fmt::format("{:<50} {:>5} {:>9} {:>9} {:>9} {:>7} {:>9} {:>8}  {}\n", c.label(), c.elastic_dof,
+                     number(c.expected_work, "{:.2g}"), number(c.estimated_error, "{:.2g}"), r ? number(c.error) : "-",
+                     r ? std::to_string(c.steps) : "-", r ? number(c.work()) : "-", r ? number(c.wall_seconds) : "-",
+                     outcome(c));
   }
-  t += fmt::format("{:<50} {:>5} {:>9} {:>9} {:>7} {:>9} {:>8}  reference\n", reference_label(rec.reference),
-                   3 * rec.reference.choice.elements, "-", "-", rec.reference.run.result.stats.steps,
+  t += fmt::format("{:<50} {:>5} {:>9} {:>9} {:>9} {:>7} {:>9} {:>8}  reference\n", reference_label(rec.reference),
+                   3 * rec.reference.choice.elements, "-", "-", "-", rec.reference.run.result.stats.steps,
                    number(rec.reference.run.work()), number(rec.reference.run.result.stats.wall_seconds));
   t += "\n" + decision_sentence(ctx, rec) + "\n";
   if (rec.chosen) t += "\nrun it with\n  " + run_line(ctx, rec) + "\n";
@@ -109,13 +117,15 @@ std::string recommend_markdown(const RecommendContext& ctx, const Recommendation
   if (rec.chosen) m += "```\n" + run_line(ctx, rec) + "\n```\n\n";
   m += "## Reasoning\n\n";
   for (const std::string& s : rec.reasoning.statements) m += "* " + s + "\n";
-  m += "\n## Candidates, cheapest first\n\nWork = steps × state size (solver work, not seconds).\n\n"
-       "| candidate | elastic DOFs | a-priori estimate | error | steps | RHS evaluations | work | wall [s] | outcome |\n"
-       "|---|--:|--:|--:|--:|--:|--:|--:|---|\n";
+  m += fmt::format("\n## Candidates, cheapest expected first\n\nWork = solver work, {} (not seconds); expected: "
+                   "before the run, the ladder's order (docs/recommend.md).\n\n"
+                   "| candidate | elastic DOFs | expected work | a-priori estimate | error | steps | RHS evaluations | work | wall [s] | "
+                   "outcome |\n|---|--:|--:|--:|--:|--:|--:|--:|--:|---|\n",
+                   study::solver_work_measure);
   for (const Candidate& c : rec.candidates) {
     const bool r = ran(c) && c.status != CandidateStatus::solver_failure;
-    m += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", c.label(), c.elastic_dof,
-                     number(c.estimated_error, "{:.2g}"), r ? number(c.error) : "-", r ? std::to_string(c.steps) : "-",
+    m += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", c.label(), c.elastic_dof,
+                     number(c.expected_work, "{:.2g}"), number(c.estimated_error, "{:.2g}"), r ? number(c.error) : "-", r ? std::to_string(c.steps) : "-",
                      r ? std::to_string(c.rhs_evaluations) : "-", r ? number(c.work()) : "-",
                      r ? number(c.wall_seconds) : "-", outcome(c));
   }
@@ -169,6 +179,7 @@ std::string recommend_json(const RecommendContext& ctx, const Recommendation& re
              {"integrator", coupling::to_string(c.integrator)},
              {"elastic_dof", c.elastic_dof},
              {"estimated_error", c.estimated_error},
+             {"expected_work", c.expected_work},
              {"status", study::to_string(c.status)},
              {"reason", c.status == CandidateStatus::solver_failure ? c.failure : c.prune_reason},
              {"minimality_check", c.minimality_check},

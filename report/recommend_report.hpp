@@ -1,5 +1,5 @@
 // The reports of `ffrf recommend`: the decision, the reasoning with its numbers, the candidates
-// tried (error, work = steps × state size, RHS evaluations, wall time), the speed-up over the
+// tried (error, work = RHS evaluations × state size, RHS evaluations, wall time), the speed-up over the
 // reference and the exact `ffrf run` command line of the chosen model; as plain text (stdout),
 // Markdown (recommendation.md) and JSON (recommendation.json, or stdout with --json).
 #pragma once

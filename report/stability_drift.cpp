@@ -94,10 +94,9 @@ StabilitySection constraint_drift_section(const scene::Scene& scene, const study
   }
   section.table = markdown_table({"formulation", "max \\|C\\| [m]", "final \\|C\\| [m]", "steps", "evaluations", "wall [s]"}, rows);
   out.write("constraint_drift.csv", drift_csv(study));
-  out.write("constraint_drift.gp",
-            chart_script(study, fmt::format("{}: |C(t)| of the clamp, {}", scene.name, study.choice.label()),
-                         scene.boom.mesh.length));
-  run_gnuplot(out.staging(), "constraint_drift.gp");
+  draw_chart(out, "constraint_drift",
+             chart_script(study, fmt::format("{}: |C(t)| of the clamp, {}", scene.name, study.choice.label()),
+                          scene.boom.mesh.length));
   section.charts = {"constraint_drift.png"};
   using coupling::Integrator;
   section.finding = fmt::format(

@@ -100,10 +100,9 @@ StabilitySection spin_section(const scene::Scene& scene, const study::SpinStudy&
     if (run.spin == study.chart_spin) charted.push_back(&run);
   }
   out.write("spin_tip_deflection.csv", history_csv(charted));
-  out.write("spin_tip_deflection.gp",
-            history_script(charted, fmt::format("{}: tip deflection at Ωs = {} rad/s (divergent runs up to detection)",
-                                                scene.name, study.chart_spin)));
-  run_gnuplot(out.staging(), "spin_tip_deflection.gp");
+  draw_chart(out, "spin_tip_deflection",
+             history_script(charted, fmt::format("{}: tip deflection at Ωs = {} rad/s (divergent runs up to detection)",
+                                                 scene.name, study.chart_spin)));
   section.numbers = {{"omega1_rad_per_s", study.omega1}, {"nodal_modal_disagreement_stiffened_4", study.agreement}};
 
   std::string script = campbell_script(study.campbell, png_terminal());
@@ -111,8 +110,7 @@ StabilitySection spin_section(const scene::Scene& scene, const study::SpinStudy&
   for (double spin : study.spins) marks += fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dt 4 lc rgb 'gray40'\n", spin);
   script.insert(script.rfind("\nplot ") + 1, marks);
   out.write("campbell.csv", campbell_csv(study.campbell));
-  out.write("campbell.gp", script);
-  run_gnuplot(out.staging(), "campbell.gp");
+  draw_chart(out, "campbell", script);
   section.charts = {"spin_tip_deflection.png", "campbell.png"};
 
   int diverged_plain = 0, diverged_stiff = 0;

@@ -119,12 +119,13 @@ StabilitySection wire_section(const scene::Scene& scene, const study::WireStudy&
   section.table = markdown_table({"model", "static tension [MN]", "slack intervals", "snap loads (peak, time, ratio)",
                                   "first peak / hand k(s + A)"}, rows);
   out.write("wire_tension.csv", tension_csv(runs));
-  out.write("wire_tension.gp", tension_script(runs, fmt::format("{}: wire tension, cargo dropped from {} m", scene.name, lift)));
   bool any = false;
   for (const study::WireRun& wire : runs) any = any || (wire.run && !wire.run->result.time.empty());
   if (any) {
-    run_gnuplot(out.staging(), "wire_tension.gp");
+    draw_chart(out, "wire_tension", tension_script(runs, fmt::format("{}: wire tension, cargo dropped from {} m", scene.name, lift)));
     section.charts = {"wire_tension.png"};
+  } else {
+    leave_out_chart(out, "wire_tension", "no drop run produced a tension history (every run failed before its first output)");
   }
   section.numbers = {{"lift_m", lift}, {"static_stretch_m", s}, {"hand_amplitude_m", amplitude},
                      {"hand_peak_tension_N", hand_peak}, {"hand_peak_ratio", hand_peak / (m * g)}};

@@ -173,8 +173,7 @@ void draw_sweep_charts(const StagedDirectory& out, const std::vector<SweepRow>& 
       "     'pareto.dat' using 1:2 with points pt 6 ps 2.6 lw 1.5 lc rgb '#d62728' notitle, \\\n"
       "     'pareto.dat' using 1:5:3 with labels boxed left offset 1.6,0 font ',8' noenhanced notitle{}{}{}\n",
       subtitle, wall_low / 1.3, wall_high * 6.0, radiation_plot, thresholds.keys, keys);
-  out.write("accuracy_speed.gp", script);
-  run_gnuplot(out.staging(), "accuracy_speed.gp");
+  draw_chart(out, "accuracy_speed", script);
 
   // mode_count.dat: best error per model (over its integrator settings) vs k; nodal vs N.
   std::string modes = "# k worst_nrms cargo_heave_nrms (index 0: modal, 1: modal+static, 2: nodal vs N)\n";
@@ -211,8 +210,7 @@ void draw_sweep_charts(const StagedDirectory& out, const std::vector<SweepRow>& 
       "unset multiplot\n",
       subtitle, y_low, y_high, 1.25 * std::max(2, largest_k), thresholds.keys, 1.25 * std::max(2, largest_n),
       thresholds.keys);
-  out.write("mode_count.gp", script);
-  run_gnuplot(out.staging(), "mode_count.gp");
+  draw_chart(out, "mode_count", script);
 }
 
 }  // namespace ffrf::report

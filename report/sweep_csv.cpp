@@ -62,7 +62,7 @@ std::string sweep_csv_line(const study::SweepResult& r) {
   line += "," + (ok ? number(r.worst.error) : std::string());
   if (ok) {
     line += fmt::format(",{},{},{},{},{},{}", r.stats.steps, r.state_size,
-                        number(static_cast<double>(r.stats.steps) * r.state_size), r.stats.function_evaluations,
+                        number(study::solver_work(r.stats.function_evaluations, r.state_size)), r.stats.function_evaluations,
                         r.stats.jacobian_evaluations, r.stats.newton_iterations);
   } else {
     line += ",,,,,,";
@@ -141,6 +141,7 @@ std::vector<SweepRow> read_sweep_csv(const std::string& text, const std::string&
       row.worst = optional_number(f[column("worst_nrms")]);
       row.steps = f[column("steps")].empty() ? 0 : std::stol(f[column("steps")]);
       row.state_size = f[column("state_size")].empty() ? 0 : std::stoi(f[column("state_size")]);
+      row.rhs_evaluations = f[column("rhs_evaluations")].empty() ? 0 : std::stol(f[column("rhs_evaluations")]);
       row.status = f[column("status")];
       row.reason = f[column("reason")];
       row.wall = optional_number(f[column("wall_s")]);

@@ -1,7 +1,7 @@
 // sweep.csv, the sweep's one table of results (study/sweep.hpp): one row per configuration, written
 // from the study's results and read back, so that a merge of shard CSVs and an unsharded run produce
-// the same outputs. Absolute errors in the channel's unit, pitch in degrees; work = steps × state
-// size. Timing columns are the ones named `*_s`; a failed or skipped row has empty
+// the same outputs. Absolute errors in the channel's unit, pitch in degrees; work = RHS evaluations ×
+// state size (study::solver_work). Timing columns are the ones named `*_s`; a failed or skipped row has empty
 // error and cost cells and its reason, never NaN.
 #pragma once
 
@@ -27,9 +27,9 @@ struct SweepRow {
   std::optional<double> rtol, step;
   std::optional<double> worst, cargo_heave, daf_error;  // normalized RMS errors (ok rows)
   std::optional<double> wall;                         // integration wall time [s] (ok rows)
-  long steps = 0;
+  long steps = 0, rhs_evaluations = 0;                // RHS evaluations include those for Jacobians
   int state_size = 0;                                 // 2 × minimal coordinates (ok rows)
-  double work() const { return static_cast<double>(steps) * state_size; }  // steps × state size
+  double work() const { return study::solver_work(rhs_evaluations, state_size); }  // RHS evaluations × state size
   std::string line;                                   // the CSV line as written, with '\n'
   bool ok() const { return status == "ok" && worst && wall; }
   std::string settings() const;  // "cvode rtol 1e-06", "generalized-alpha h 0.01 s", "…, state-space radiation"

@@ -10,6 +10,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "report/chart_notes.hpp"
 #include "report/json.hpp"
 #include "report/reference_report.hpp"
 #include "report/sweep_csv.hpp"
@@ -74,7 +75,13 @@ std::vector<std::size_t> pareto_front(const std::vector<SweepRow>& rows) {
   return front;
 }
 
-std::vector<study::MeasuredModel> measured_rows(const std::vector<SweepRow>& rows) {
+bool at_choice_rtol(const SweepRow& row, double tolerance) {
+  // An adaptive run (no fixed step) at exactly the model-choice rtol: the decade the CSV writes back.
+  return row.rtol && !(row.step && *row.step > 0.0) && *row.rtol > 0.0 &&
+         std::abs(std::log10(*row.rtol) - std::log10(study::model_choice_rtol(tolerance))) < 1e-6;
+}
+
+std::vector<study::MeasuredModel> measured_rows(const std::vector<SweepRow>& rows, double tolerance) {
   std::vector<study::MeasuredModel> measured;
   for (const SweepRow& row : rows) {
     study::MeasuredModel m;
@@ -86,6 +93,7 @@ std::vector<study::MeasuredModel> measured_rows(const std::vector<SweepRow>& row
       m.wall_seconds = *row.wall;
       m.work = row.work();
     }
+    m.at_choice_rtol = at_choice_rtol(row, tolerance);
     measured.push_back(std::move(m));
   }
   return measured;
@@ -120,13 +128,14 @@ std::string radiation_verdict(const std::vector<SweepRow>& rows, const study::Ve
 }  // namespace
 
 study::Verdict sweep_verdict(const std::vector<SweepRow>& rows, const SweepFacts& facts) {
-  return study::judge(measured_rows(rows), facts.reference_wall_seconds, facts.reference_work, facts.tolerance);
+  return study::judge(measured_rows(rows, facts.tolerance), facts.reference_wall_seconds, facts.reference_work, facts.tolerance);
 }
 
 std::string sweep_verdict_sentence(const std::vector<SweepRow>& rows, const SweepFacts& facts) {
   const study::Verdict verdict = sweep_verdict(rows, facts);
-  const std::vector<study::MeasuredModel> measured = measured_rows(rows);
-  std::string s = verdict_headline(verdict, measured, facts.reference, "configurations");
+  const std::vector<study::MeasuredModel> measured = measured_rows(rows, facts.tolerance);
+  std::string s = verdict_headline(verdict, measured, facts.reference, "configurations",
+                                   fmt::format(" at rtol {:g} (the model-choice rtol of τ)", study::model_choice_rtol(facts.tolerance)));
   // The models none of whose settings passes, with their best error.
   std::set<std::string> passing;
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -160,7 +169,7 @@ std::string sweep_markdown(const std::vector<SweepRow>& rows, const std::string&
   r += "Error measure: the **worst total normalized RMS error over the judged outputs** named above (study/error_measure.hpp: "
        "the same outputs, window and reference physics as compare and recommend; static and dynamic parts together, as "
        "`ffrf compare` splits them) against the reference; cost: the wall time of the integration (static equilibrium and "
-       "mode shapes excluded) and the solver work, steps × state size (recommend's measure, independent of the machine's "
+       "mode shapes excluded) and the solver work, RHS evaluations × state size (recommend's measure, independent of the machine's "
        "load). Speed-ups are the reference's over the run's.\n\n";
   r += fmt::format("## Verdict (τ = {:g})\n\n**{}**\n\n", facts.tolerance, sweep_verdict_sentence(rows, facts));
   if (std::isfinite(facts.reference_change)) {
@@ -169,7 +178,7 @@ std::string sweep_markdown(const std::vector<SweepRow>& rows, const std::string&
   r += "## Pareto-optimal configurations\n\nNo other run is both faster and more accurate (labelled on the chart).\n\n"
        "| id | model | integrator | worst error | cargo heave error | DAF error | wall time [s] | real-time factor | steps | "
        "speed-up (wall) | speed-up (work) | τ |\n|--:|---|---|--:|--:|--:|--:|--:|--:|--:|--:|:-:|\n";
-  const std::vector<study::MeasuredModel> measured = measured_rows(rows);
+  const std::vector<study::MeasuredModel> measured = measured_rows(rows, facts.tolerance);
   for (std::size_t i : pareto_front(rows)) {
     const SweepRow& row = rows[i];
     r += fmt::format("| {} | {} | {} | {} | {} | {} | {:.3g} | {:.3g} | {} | {} | {} | {} |\n", row.id, row.model, row.settings(),
@@ -232,7 +241,7 @@ SweepFacts context_facts(const std::string& context) {
 
 std::string sweep_json(const std::vector<SweepRow>& rows, const SweepFacts& facts) {
   const study::Verdict verdict = sweep_verdict(rows, facts);
-  const std::vector<study::MeasuredModel> measured = measured_rows(rows);
+  const std::vector<study::MeasuredModel> measured = measured_rows(rows, facts.tolerance);
   Json json;
   json["command"] = "sweep";
   json["duration_s"] = facts.duration;
@@ -276,15 +285,16 @@ std::string pareto_text(const std::vector<SweepRow>& rows, const SweepFacts& fac
   return t + fmt::format("\nverdict (tolerance {:g}): {}\n", facts.tolerance, sweep_verdict_sentence(rows, facts));
 }
 
-void write_sweep_outputs(const std::string& dir, std::vector<SweepRow>& rows, const std::string& context) {
+std::string write_sweep_outputs(const std::string& dir, std::vector<SweepRow>& rows, const std::string& context) {
   const SweepFacts facts = context_facts(context);
   StagedDirectory out(dir, "report.md");
   out.write("sweep.csv", sweep_csv(rows));
   out.write(sweep_context_file, context);
   draw_sweep_charts(out, rows, facts);
-  out.write("summary.json", sweep_json(rows, facts));
-  out.write("report.md", sweep_markdown(rows, context));
+  out.write("summary.json", with_charts_json(sweep_json(rows, facts), out));
+  out.write("report.md", sweep_markdown(rows, context) + charts_markdown(out));
   out.commit();
+  return chart_notes_text("sweep", out);
 }
 
 }  // namespace ffrf::report

@@ -29,12 +29,15 @@ struct SweepFacts {
   double tolerance = 0.01;              // of the verdict
   std::string reference;                // "reference (nodal N=16, rtol 1e-07)"
   double reference_wall_seconds = 0.0;  // its integration
-  double reference_work = 0.0;          // steps × state size
+  double reference_work = 0.0;          // RHS evaluations × state size
   double reference_change = NAN;        // its last level's change: errors below are not resolved
 };
 
+// Whether a row is an adaptive run at the model-choice rtol of τ (study::model_choice_rtol): only
+// those may be named the cheapest, so that sweep, compare and recommend judge alike.
+bool at_choice_rtol(const SweepRow& row, double tolerance);
 // The verdict of the sweep: every row a measured configuration ("MODEL, SETTINGS").
-std::vector<study::MeasuredModel> measured_rows(const std::vector<SweepRow>& rows);
+std::vector<study::MeasuredModel> measured_rows(const std::vector<SweepRow>& rows, double tolerance);
 study::Verdict sweep_verdict(const std::vector<SweepRow>& rows, const SweepFacts& facts);
 // The headline and the models that fail at every setting.
 std::string sweep_verdict_sentence(const std::vector<SweepRow>& rows, const SweepFacts& facts);
@@ -66,7 +69,8 @@ std::string sweep_json(const std::vector<SweepRow>& rows, const SweepFacts& fact
 std::string pareto_text(const std::vector<SweepRow>& rows, const SweepFacts& facts);
 
 // Writes sweep.csv, the charts, the context, summary.json and report.md (the completeness marker) into `dir`,
-// completely or not at all; throws std::runtime_error (a duplicate id: overlapping shards).
-void write_sweep_outputs(const std::string& dir, std::vector<SweepRow>& rows, const std::string& context);
+// completely or not at all; throws std::runtime_error (a duplicate id: overlapping shards). Returns
+// the console lines naming the charts not drawn (report/chart_notes.hpp; empty when all were).
+std::string write_sweep_outputs(const std::string& dir, std::vector<SweepRow>& rows, const std::string& context);
 
 }  // namespace ffrf::report

@@ -43,21 +43,22 @@ std::string worst_of(const study::MeasuredModel& m) {
 }  // namespace
 
 std::string verdict_headline(const study::Verdict& v, const std::vector<study::MeasuredModel>& models,
-                             const std::string& reference, const std::string& what) {
+                             const std::string& reference, const std::string& what, const std::string& scope) {
   if (v.cheapest) {
     const study::MeasuredModel& m = models[*v.cheapest];
     const study::ModelVerdict& mv = v.models[*v.cheapest];
-    return fmt::format("{} reproduces the {} to {}{} within τ = {:g}, at {} wall time and {} solver work "
-                       "(steps × state size); it is the cheapest of the {} of {} {} that pass.",
-                       m.label, reference, error_text(m.error), worst_of(m), v.tolerance, speedup_words(mv.wall_speedup),
-                       speedup_words(mv.work_speedup), v.passed_count(), models.size(), what);
+    return fmt::format("Cheapest by solver work ({}) of the {}{} that pass τ = {:g}: {}, error {}{}; {} solver work than the "
+                       "{}; wall time {} (measured; not decisive: it varies with the machine's load). {} of {} {} pass.",
+                       study::solver_work_measure, what, scope, v.tolerance, m.label, error_text(m.error), worst_of(m),
+                       speedup_words(mv.work_speedup), reference, speedup_words(mv.wall_speedup), v.passed_count(),
+                       models.size(), what);
   }
   if (v.most_accurate) {
     const study::MeasuredModel& m = models[*v.most_accurate];
-    return fmt::format("No {} reproduces the {} within τ = {:g}: the most accurate, {}, is at {}{}.", what,
+    return fmt::format("No {}{} reproduces the {} within τ = {:g}: the most accurate, {}, is at {}{}.", what, scope,
                        reference, v.tolerance, m.label, error_text(m.error), worst_of(m));
   }
-  return fmt::format("No {} reproduces the {} within τ = {:g}: none ran to the end.", what, reference, v.tolerance);
+  return fmt::format("No {}{} reproduces the {} within τ = {:g}: none ran to the end.", what, scope, reference, v.tolerance);
 }
 
 std::string failed_list(const study::Verdict& v, const std::vector<study::MeasuredModel>& models) {
@@ -81,6 +82,7 @@ Json verdict_json(const study::Verdict& v, const std::vector<study::MeasuredMode
   Json json;
   json["tolerance"] = v.tolerance;
   json["measure"] = "worst normalized RMS error (total: static and dynamic) over the judged outputs";
+  json["cost_measure"] = fmt::format("solver work: {} (decisive; wall time reported)", study::solver_work_measure);
   json["passed"] = v.passed_count();
   json["failed"] = Json::array();
   for (const std::size_t i : v.failed) json["failed"].push_back(models[i].label);

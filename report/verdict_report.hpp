@@ -21,11 +21,13 @@ std::string speedup_words(double ratio);
 // "5.3×" (a table cell); "-" when not finite.
 std::string speedup_cell(double ratio);
 
-// The verdict's headline: which model is the cheapest to pass, to what error, how much faster than
-// `reference` (wall time and solver work), and how many pass; or that none does and which came
-// closest. `what` names the measured things ("models", "configurations").
+// The verdict's headline: the cheapest model that passes by the decisive measure, solver work
+// (study::solver_work_measure, named in the sentence), to what error, its solver work against
+// `reference` and, reported but not decisive, its wall time; how many pass; or that none does and
+// which came closest. `what` names the measured things ("models", "configurations"); `scope` narrows
+// them (" at rtol 1e-06, the model-choice rtol": only those may be named the cheapest).
 std::string verdict_headline(const study::Verdict& verdict, const std::vector<study::MeasuredModel>& models,
-                             const std::string& reference, const std::string& what);
+                             const std::string& reference, const std::string& what, const std::string& scope = "");
 // "Fail: rigid 2.6 (cargo_heave), modal k=1 (N=16) 6.1e-02 (cargo_heave)." (empty when all pass).
 std::string failed_list(const study::Verdict& verdict, const std::vector<study::MeasuredModel>& models);
 // "pass" / "FAIL" / "not run"

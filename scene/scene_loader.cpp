@@ -11,6 +11,7 @@
 #include <map>
 
 #include "scene/bem_files.hpp"
+#include "scene/computed_quantities.hpp"
 #include "scene/key_values.hpp"
 #include "scene/scene_build.hpp"
 #include "scene/scene_checks.hpp"
@@ -84,9 +85,11 @@ class SceneReader final : public WrittenKeys {
       for (auto&& [leaf, value] : *table) {
         const std::string dotted = section + "." + std::string(leaf.str());
         if (find_key(dotted) == nullptr) {
+          const auto computed = computed_quantity_note(dotted);
           const auto hint = suggest_key(dotted);
           report(line_of(value), dotted, show_value(value),
-                 fmt::format("unknown key{}", hint ? fmt::format("; did you mean {}?", *hint) : ""));
+                 computed ? fmt::format("not a scene key: {}", *computed)
+                          : fmt::format("unknown key{}", hint ? fmt::format("; did you mean {}?", *hint) : ""));
           continue;
         }
         present_[dotted] = &value;

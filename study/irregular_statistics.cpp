@@ -74,6 +74,8 @@ std::optional<IrregularStatistics> irregular_statistics(const scene::Scene& scen
   IrregularStatistics out;
   out.window_start = time[first];
   out.record_length = time.back() - time[first];
+  out.ramp_end = scene::wave_ramp_duration(scene);
+  out.after_ramp = time[first] >= out.ramp_end;
   out.sample_interval = dt;
   const hydro::WaveComponents sea = scene::sea_components(scene);
   const std::vector<double> eta = hydro::elevation_record(sea, time[first], dt, samples.size() - first);

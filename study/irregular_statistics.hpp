@@ -38,6 +38,9 @@ struct ResponseStatistics {
 struct IrregularStatistics {
   double window_start = 0.0;     // [s]
   double record_length = 0.0;    // [s] of the window
+  double ramp_end = 0.0;         // [s] the wave ramp-in ends (scene::wave_ramp_duration)
+  bool after_ramp = false;       // the window starts after the ramp; false: a run that ends within the
+                                 // ramp, whose statistics are over the whole run, ramp included
   double sample_interval = 0.0;  // [s]
   ResponseStatistics elevation;  // the incident wave at x = 0 (G1 at rest)
   std::vector<ResponseStatistics> responses;  // statistics_columns() order

@@ -3,8 +3,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "distributed/stable_hash.hpp"
@@ -112,12 +114,12 @@ scene::Scene record_scene(const scene::Scene& scene, const SeaCell& cell, std::u
   return scene::in_irregular_sea(base, sea);
 }
 
-CellModel recommended_model(const scene::Scene& scene, const SeaCell& cell, const OperabilityRequest& request,
-                            modal::ModeCache* modes) {
-  // The reasoning sees a regular wave at the top of the sea's energy band: the highest frequency the
-  // cell excites with more than band_tail/2 of its variance above it.
-  const hydro::WaveSpectrum spectrum = hydro::jonswap(cell.significant_height, cell.peak_period, request.peak_enhancement);
-  const double top = hydro::energy_band(spectrum, band_tail).upper;
+namespace {
+
+// The reasoning's first kept BDF candidate for the cell's sea seen as a regular wave at the top of its
+// energy band: the model when the probe below cannot be run.
+CellModel reasoned_model(const scene::Scene& scene, const SeaCell& cell, const OperabilityRequest& request,
+                         modal::ModeCache* modes, double top) {
   scene::Scene reasoning_scene = scene;
   reasoning_scene.sea.reset();
   reasoning_scene.wave = scene::Wave{cell.significant_height, 2.0 * std::numbers::pi / top,
@@ -125,13 +127,12 @@ CellModel recommended_model(const scene::Scene& scene, const SeaCell& cell, cons
                                                                               : scene::WaveDirection::following,
                                      2.0};
   const RecommendReasoning reasoning = reason_about(reasoning_scene, request.tolerance, judged_outputs(reasoning_scene));
-  const std::vector<Candidate> ladder = candidate_ladder(reasoning_scene, reasoning, modes);
   CellModel model;
   model.relative_tolerance = reasoning.relative_tolerance;
   model.excitation_top = top;
   model.dynamic_modes = reasoning.dynamic_modes;
   model.euler_load = reasoning.euler_load;
-  for (const Candidate& candidate : ladder) {
+  for (const Candidate& candidate : candidate_ladder(reasoning_scene, reasoning, modes)) {
     if (candidate.prune_reason.empty() && candidate.integrator != coupling::Integrator::arkode) {
       model.choice = candidate.choice;
       model.integrator = candidate.integrator;
@@ -139,6 +140,50 @@ CellModel recommended_model(const scene::Scene& scene, const SeaCell& cell, cons
     }
   }
   throw std::runtime_error(fmt::format("operability: recommend's reasoning kept no model for {}", cell.key()));
+}
+
+}  // namespace
+
+double probe_duration(const SeaCell& cell, const OperabilityRequest& request) {
+  return std::min(request.duration, probe_peak_periods * cell.peak_period);
+}
+
+CellModel recommended_model(const scene::Scene& scene, const SeaCell& cell, const OperabilityRequest& request,
+                            modal::ModeCache* modes) {
+  // The upper edge of the sea's energy band (reported): the highest frequency the cell excites with
+  // more than band_tail/2 of its variance above it.
+  const hydro::WaveSpectrum spectrum = hydro::jonswap(cell.significant_height, cell.peak_period, request.peak_enhancement);
+  const double top = hydro::energy_band(spectrum, band_tail).upper;
+  // recommend on the probe record: its cheapest passing model by solver work at the model-choice rtol.
+  OperabilityRequest probe_request = request;
+  probe_request.duration = probe_duration(cell, request);
+  const scene::Scene probe = record_scene(scene, cell, record_seed(cell, 0), probe_request);
+  RecommendRequest recommend_request;
+  recommend_request.tolerance = request.tolerance;
+  recommend_request.duration = probe_request.duration;
+  std::optional<Recommendation> rec;
+  try {
+    rec = recommend(probe, recommend_request, {}, modes);
+  } catch (const coupling::SolverFailure&) {
+    return reasoned_model(scene, cell, request, modes, top);  // the probe's reference failed: no verification
+  }
+  CellModel model;
+  model.relative_tolerance = rec->reasoning.relative_tolerance;
+  model.excitation_top = top;
+  model.dynamic_modes = rec->reasoning.dynamic_modes;
+  model.euler_load = rec->reasoning.euler_load;
+  const scene::Stiffening stiffening = rec->reference_scene.boom.stiffening;
+  if (rec->chosen) {
+    const Candidate& chosen = rec->candidates[*rec->chosen];
+    model.choice = chosen.choice;
+    model.integrator = chosen.integrator;
+  } else {  // nothing cheaper passes: the reference's model
+    model.choice = rec->reference.choice;
+    model.integrator = rec->reference.settings.kind;
+    model.relative_tolerance = rec->reference.settings.relative_tolerance;
+  }
+  model.choice.stiffening = model.choice.stiffening.value_or(stiffening);
+  return model;
 }
 
 CellModel converged_model(const scene::Scene& scene, const OperabilityRequest& request, const CellModel& recommended) {

@@ -3,9 +3,10 @@
 // task of the distributed engine (distributed/farm.hpp), so that cells and seeds are balanced over
 // threads and MPI ranks, journaled as they finish and resumed on a rerun. Per cell the seeds'
 // extremes become statistics and a verdict (operability_criteria.hpp).
-// The boom model per cell is recommend's reasoning (recommend_reasoning.hpp) applied to the cell's
-// excitation band (the spectrum's upper band edge): the first candidate of the ladder that the
-// physics does not prune. A sample of cells is run again, same seeds, with the converged model (a
+// The boom model per cell is `ffrf recommend`'s on a probe record of the cell's sea (its first seed,
+// probe_peak_periods peak periods or the record if shorter): the cheapest model that passes the
+// tolerance against the converged reference by solver work at the model-choice rtol
+// (study::cheapest_passing, the rule of recommend, compare and sweep). A sample of cells is run again, same seeds, with the converged model (a
 // fine nodal mesh at a tight tolerance) to verify that choice and to measure what it saved.
 #pragma once
 
@@ -50,7 +51,13 @@ std::vector<SeaCell> sea_cells(const OperabilityRequest& request);  // Hs fastes
 // The cells verified against the converged model: `count` cells spread evenly over the list.
 std::vector<std::size_t> verified_cells(std::size_t cells, int count);
 
-// The model the reasoning picks for a cell, and why.
+// The probe record of a cell's model choice: probe_peak_periods × Tp, or the record if shorter [s].
+inline constexpr double probe_peak_periods = 20.0;
+double probe_duration(const SeaCell& cell, const OperabilityRequest& request);
+
+// The model recommend picks for a cell on its probe record (at recommend's rtol; the reference's
+// model when no cheaper one passes; when the probe's reference run fails, the reasoning's first
+// kept candidate, unverified), and why.
 struct CellModel {
   scene::BoomChoice choice;
   coupling::Integrator integrator = coupling::Integrator::cvode;

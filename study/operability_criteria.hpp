@@ -57,7 +57,7 @@ struct SeedExtremes {
   double root_moment_mpm = 0.0;      // [N m] MPM level of |M| (on the side of the mean moment)
   double compression_mpm = 0.0;      // [N] MPM level of the root's axial compression
   double cycles = 0.0;               // zero up-crossing cycles of the tension (N of the MPM)
-  double work = 0.0;                 // solver work: steps × state size
+  double work = 0.0;                 // solver work: RHS evaluations × state size
   double rhs_evaluations = 0.0;
 };
 

@@ -63,6 +63,7 @@ double series_reference(const SeriesSpec& spec, const CraneOutputs& statics) {
 StatsWindow stats_window(const scene::Scene& scene, const std::vector<double>& time) {
   StatsWindow window;
   if ((!scene.wave && !scene.sea) || time.empty()) return window;
+  window.ramp_end_s = ramp_end(scene);
   const auto first = std::upper_bound(time.begin(), time.end(), ramp_end(scene));
   if (first == time.end()) return window;  // the run ends before the ramp does
   window.first = static_cast<std::size_t>(first - time.begin());

@@ -37,6 +37,7 @@ struct StatsWindow {
   std::size_t first = 0;     // first sample index in the window
   double start_s = 0.0;      // its time
   bool after_ramp = false;   // true when the window starts after a wave ramp
+  double ramp_end_s = 0.0;   // the wave ramp's end (0: calm water); a run ending before it has no window after it
 };
 StatsWindow stats_window(const scene::Scene& scene, const std::vector<double>& time);
 

@@ -16,6 +16,7 @@
 #include "scene/crane_model_cache.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/run_pipeline.hpp"
+#include "linalg/dense_solvers.hpp"
 
 namespace ffrf::study {
 namespace {

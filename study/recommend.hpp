@@ -1,13 +1,13 @@
-// The candidate models of `ffrf recommend` (docs/recommend.md), cheapest first, each pruned by the reasoning
-// (recommend_reasoning.hpp) or verified against the converged reference; the search stops at the
-// first candidate whose worst normalized RMS error over the chosen outputs (coupling/error_metrics.hpp,
-// the error of `ffrf compare` and `ffrf sweep`) is within the tolerance, then proves minimality by
-// running the next cheaper candidate of the ladder even when the reasoning pruned it.
-// Cost is solver work: steps × state size (and the RHS evaluations), never seconds. Integrator twins
-// of one model (explicit RK and BDF) do the same work per right-hand-side evaluation, but an explicit
-// step costs several evaluations and a stiff wire can make it take many more steps: when a model
-// passes, every twin of it that the reasoning kept is run too, and the one with the fewest RHS
-// evaluations among those that pass is recommended (cheapest_passing_twin).
+// The candidate models of `ffrf recommend`, in order of expected solver work (study/expected_work.hpp),
+// each pruned by the reasoning (recommend_reasoning.hpp) or verified against the converged reference
+// at the model-choice rtol (study/verdict.hpp); the search stops at the first candidate whose worst
+// normalized RMS error over the chosen outputs (coupling/error_metrics.hpp, the error of `ffrf
+// compare` and `ffrf sweep`) is within the tolerance, then proves minimality by running the next
+// cheaper candidate of the ladder even when the reasoning pruned it. The expected work is a
+// prediction, the measured one scatters about it: the kept candidates whose expected work is within
+// the scatter of the chosen one's (its integrator twins among them) are run too, and the recommendation
+// is study::cheapest_passing of every candidate run — the rule and measure (solver work, RHS
+// evaluations × state size) by which compare, sweep and operability name their cheapest model.
 #pragma once
 
 #include <functional>
@@ -19,6 +19,7 @@
 #include "coupling/simulation.hpp"
 #include "study/recommend_reasoning.hpp"
 #include "study/reference.hpp"
+#include "study/verdict.hpp"
 
 namespace ffrf::study {
 
@@ -28,7 +29,8 @@ std::string_view to_string(CandidateStatus status);
 struct Candidate {
   scene::BoomChoice choice;
   coupling::Integrator integrator = coupling::Integrator::cvode;
-  int elastic_dof = 0;                  // predicted size of the elastic coordinates (the ladder's order)
+  int elastic_dof = 0;                  // predicted size of the elastic coordinates
+  double expected_work = 0.0;           // the ladder's order: expected_solver_work (study/expected_work.hpp)
   double estimated_error = std::numeric_limits<double>::quiet_NaN();  // a priori (NaN: none)
   double explicit_step_limit = 0.0;     // arkode candidates: β_I/ω_max of the boom and wire [s]
   std::string prune_reason;             // empty: kept
@@ -40,7 +42,7 @@ struct Candidate {
   long steps = 0, rhs_evaluations = 0;
   int state_size = 0;
   double wall_seconds = 0.0;
-  double work() const { return static_cast<double>(steps) * state_size; }
+  double work() const { return solver_work(rhs_evaluations, state_size); }  // RHS evaluations × state size
   std::string label() const;  // "nodal N=1, cvode rtol 1e-04"
 };
 
@@ -52,7 +54,7 @@ struct RecommendRequest {
   double tolerance = 0.01;                       // in (0, 1)
   std::vector<coupling::OutputChannel> outputs;  // judged; empty: judged_outputs(scene)
   double duration = 0.0;                         // of every run [s]; 0: simulation.duration of the scene
-  ReferenceOptions reference;  // its first level's rtol is tightened to a tenth of the candidates'
+  ReferenceOptions reference;  // its first level's rtol is at most the candidates' (a one-level reference: a tenth)
 };
 
 struct Recommendation {
@@ -63,16 +65,16 @@ struct Recommendation {
   ConvergedReference reference;
   std::vector<Candidate> candidates;
   std::optional<std::size_t> chosen;      // index into candidates
-  std::optional<std::size_t> next_cheaper;  // the candidate just below the chosen one, run and failed
+  std::optional<std::size_t> next_cheaper;  // the candidate just below the first that passed, run and failed
   double work_speedup() const;            // reference steps × size over the chosen one's
   double wall_speedup() const;
 };
 
-// Among the candidates that are the same model as candidates[chosen] (kind, mesh, modes, static
-// modes, stiffening) and passed, the index of the one with the fewest RHS evaluations (ties: the
-// earlier one); `scene_stiffening` stands for an unset stiffening.
-std::size_t cheapest_passing_twin(const std::vector<Candidate>& candidates, std::size_t chosen,
-                                  scene::Stiffening scene_stiffening);
+// The verdict's view of the candidates that ran (label, error, work, wall time; all at the model-choice rtol).
+std::vector<MeasuredModel> measured_candidates(const std::vector<Candidate>& candidates);
+// study::cheapest_passing over the candidates (empty: none passed).
+std::optional<std::size_t> cheapest_passing_candidate(const std::vector<Candidate>& candidates, double tolerance);
+// Same kind, mesh, modes, static modes and stiffening (`scene_stiffening` stands for an unset one).
 bool same_model(const Candidate& a, const Candidate& b, scene::Stiffening scene_stiffening);
 
 // Throws scene::SceneError, coupling::SolverFailure (the reference), modal::EigenSolverError,

@@ -10,6 +10,7 @@
 
 #include "scene/irregular_sea.hpp"
 #include "study/error_measure.hpp"
+#include "study/verdict.hpp"
 #include "study/modes.hpp"
 #include "fem/analytic_beam.hpp"
 
@@ -160,10 +161,11 @@ RecommendReasoning reason_about(const scene::Scene& scene, double tolerance,
   excitation(scene, r);
   frequencies(scene, r);
   loads(scene, outputs, r);
-  r.relative_tolerance = std::pow(10.0, std::floor(std::log10(tolerance / 100.0) + 1e-9));
+  r.relative_tolerance = model_choice_rtol(tolerance);
   r.statements.push_back(fmt::format(
-      "Integrator: BDF (CVODE) at rtol = {:g}, two decades below τ (a BDF run's global error is ~10× its rtol), so the "
-      "model, not the integrator, decides each candidate's error.",
+      "Integrator: BDF (CVODE) at rtol = {:g}, the model-choice rtol of τ (four decades below it: a BDF run's global error "
+      "reaches ~100× its rtol), so the model, not the integrator, decides each candidate's error; compare and sweep name "
+      "their cheapest model at the same rtol.",
       r.relative_tolerance));
   return r;
 }

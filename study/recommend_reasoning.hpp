@@ -15,7 +15,8 @@
 //    P_E = π²EI/(4L²) amplifies the deflection by 1/(1 − P/P_E) (static stiffening needed when that
 //    changes the outputs by more than τ); a spin Ω softens the unstiffened boom to ω1² − Ω²
 //    (centrifugal stiffening needed when Ω²/ω1² > τ; Ω ≥ ω1 diverges).
-//  * Integrator: BDF with rtol = τ/100 (its global error runs ~10× rtol, leaving τ/10 to spare);
+//  * Integrator: BDF at the model-choice rtol, the decade at or below τ/10⁴ (study/verdict.hpp: its
+//    global error reaches ~100× rtol, leaving the model to decide);
 //    an explicit RK only where its stability limit β_I/ω_max (damped: docs/performance.md) is at
 //    least the output interval, i.e. where the stiffness of the retained modes does not bind.
 #pragma once
@@ -49,7 +50,7 @@ struct RecommendReasoning {
   double centrifugal_softening = 0.0;          // Ω²/ω1²
   scene::Stiffening required_stiffening = scene::Stiffening::none;  // what the physics needs
   scene::Stiffening reference_stiffening = scene::Stiffening::none; // required ∪ the scene's
-  double relative_tolerance = 1e-4;    // the integrators' rtol (τ/100)
+  double relative_tolerance = 1e-6;    // the integrators' rtol (model_choice_rtol(τ))
   std::vector<std::string> statements; // the reasoning in plain words with its numbers
 };
 

@@ -24,6 +24,7 @@
 #include "scene/scene.hpp"
 #include "study/irregular_statistics.hpp"
 #include "study/output_series.hpp"
+#include "study/verdict.hpp"
 
 namespace ffrf::study {
 
@@ -106,7 +107,8 @@ struct ModelRun {
 
   const coupling::CraneOutputs& static_outputs() const { return statics.outputs; }
   long slack_events() const;       // the wire went slack
-  double work() const { return static_cast<double>(result.stats.steps) * state_size; }  // steps × state size
+  // Solver work, RHS evaluations × state size (study/verdict.hpp: the measure every verdict decides by).
+  double work() const { return solver_work(result.stats.function_evaluations, state_size); }
 };
 
 // Builds the crane (modes from `modes`, or solved here), solves its static equilibrium, applies

@@ -8,6 +8,7 @@
 
 #include "coupling/explicit_stability.hpp"
 #include "coupling/simulation.hpp"
+#include "linalg/dense_solvers.hpp"
 
 namespace ffrf::study {
 namespace {

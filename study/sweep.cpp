@@ -55,7 +55,8 @@ SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config
     if (config.integrator == coupling::Integrator::arkode) {
       r.stable_step = coupling::explicit_stable_step(*prepared.equations, prepared.initial_state);
       const double h = config.stability_factor > 0.0 ? config.stability_factor * r.stable_step : r.stable_step;
-      if (config.stability_factor > 0.0) r.step = settings.fixed_step = h;
+      // A model with nothing free to move has no stability limit: it keeps the adaptive step.
+      if (config.stability_factor > 0.0 && std::isfinite(h)) r.step = settings.fixed_step = h;
       const double needed = setup.duration / h;
       if (config.stability_factor <= 1.0 && needed > static_cast<double>(setup.max_explicit_steps)) {
         r.status = RunStatus::skipped;
@@ -114,7 +115,7 @@ SweepStudy sweep_reference(const scene::Scene& scene, const SweepRequest& reques
 
 std::vector<SweepConfig> sweep_configurations(const SweepRequest& request) {
   std::vector<SweepConfig> configs;
-  for (const SweepConfig& config : sweep_grid(request.grid, request.radiation_axis)) {
+  for (const SweepConfig& config : sweep_grid(request.grid, request.radiation_axis, model_choice_rtol(request.tolerance))) {
     if (request.shard.contains(config)) configs.push_back(config);
   }
   return configs;

@@ -21,6 +21,7 @@
 #include "study/error_measure.hpp"
 #include "study/reference.hpp"
 #include "study/sweep_grid.hpp"
+#include "study/verdict.hpp"
 
 namespace ffrf::study {
 
@@ -36,7 +37,7 @@ struct SweepResult {
   coupling::RunErrors errors;   // ok rows
   WorstError worst;             // ok rows: over the judged outputs
   coupling::SolverStats stats;  // ok rows
-  int state_size = 0;           // ok rows: 2 × minimal coordinates (work = steps × state size)
+  int state_size = 0;           // ok rows: 2 × minimal coordinates (work = RHS evaluations × state size)
 };
 
 struct SweepRequest {

@@ -4,6 +4,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+#include <cmath>
+
 
 namespace ffrf::study {
 namespace {
@@ -61,7 +64,8 @@ std::string grid_description(SweepGrid grid) {
   for (Integrator i : s.adaptive) adaptive += std::string(coupling::to_string(i)) + ", ";
   std::string text = fmt::format(
       "grid `{}`: models rigid, nodal N ∈ {{{}}}, modal k ∈ {{{}}} with and without static modes (N = 16 mesh); "
-      "integrators {}at rtol ∈ {{{}}}; generalized-alpha at h ∈ {{{}}} s",
+      "integrators {}at rtol ∈ {{{}}} (and at the model-choice rtol of the verdict's τ when not among them); "
+      "generalized-alpha at h ∈ {{{}}} s",
       to_string(grid), fmt::join(s.nodal_elements, ", "), fmt::join(s.modal_modes, ", "), adaptive,
       fmt::join(s.tolerances, ", "), fmt::join(s.alpha_steps, ", "));
   text += s.erk_factors.empty()
@@ -70,8 +74,14 @@ std::string grid_description(SweepGrid grid) {
   return text;
 }
 
-std::vector<SweepConfig> sweep_grid(SweepGrid grid, bool radiation_axis) {
-  const GridSpec s = spec(grid);
+std::vector<SweepConfig> sweep_grid(SweepGrid grid, bool radiation_axis, double choice_rtol) {
+  GridSpec s = spec(grid);
+  // The adaptive integrators also run at the model-choice rtol (the one the verdict names its
+  // cheapest model from), appended when the grid lacks it: the default grids have 1e-6, τ = 1 %'s.
+  const bool has_choice = std::any_of(s.tolerances.begin(), s.tolerances.end(), [&](double rtol) {
+    return std::abs(std::log10(rtol) - std::log10(choice_rtol)) < 1e-6;
+  });
+  if (!has_choice) s.tolerances.push_back(choice_rtol);
   std::vector<SweepConfig> configs;
   auto add = [&](const BoomChoice& choice, Integrator integrator, double rtol, double step, double factor) {
     configs.push_back({static_cast<int>(configs.size()), choice, integrator, rtol, step, factor, std::nullopt});

@@ -33,7 +33,9 @@ struct SweepConfig {
 // Every configuration of the grid, ids 0, 1, 2, ... in order. With `radiation_axis` (a scene with
 // [bem]) every boom/integrator configuration is crossed with the three radiation models
 // (constant, state-space, convolution: consecutive ids); without it the ids are those of the plain grid.
-std::vector<SweepConfig> sweep_grid(SweepGrid grid, bool radiation_axis = false);
+// The adaptive integrators run at `choice_rtol` too (study::model_choice_rtol of the verdict's τ; the
+// grids' own tolerances include 1e-6, that of τ = 1 %), appended after the grid's own.
+std::vector<SweepConfig> sweep_grid(SweepGrid grid, bool radiation_axis = false, double choice_rtol = 1e-6);
 // "constant", "state-space", "convolution"; empty when the configuration keeps the scene's model.
 std::string radiation_name(const SweepConfig& config);
 

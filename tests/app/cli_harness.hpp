@@ -55,12 +55,13 @@ class TempDir {
   fs::path path_;
 };
 
-// Runs `ffrf ARGS` (ARGS already shell-quoted where needed).
-inline RunResult run_ffrf(const std::string& args, const fs::path& scratch) {
+// Runs `ffrf ARGS` (ARGS already shell-quoted where needed); `environment` is put before the
+// command ("PATH='/x':$PATH": variables for this run only).
+inline RunResult run_ffrf(const std::string& args, const fs::path& scratch, const std::string& environment = "") {
   const fs::path out = scratch / "stdout.txt";
   const fs::path err = scratch / "stderr.txt";
-  const std::string command = std::string(FFRF_BINARY_DIR "/app/ffrf ") + args + " >'" + out.string() + "' 2>'" +
-                              err.string() + "'";
+  const std::string command = environment + (environment.empty() ? "" : " ") + std::string(FFRF_BINARY_DIR "/app/ffrf ") +
+                              args + " >'" + out.string() + "' 2>'" + err.string() + "'";
   const int status = std::system(command.c_str());
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return {code, read_text(out), read_text(err)};

@@ -3,6 +3,8 @@
 // standard input that stays open and never delivers a byte: a child process that inherits the
 // terminal and waits for a key press (gnuplot's pager did: "Press return for more:") would block
 // until the time limit. Independent check: the process finishes, exits 0, and the charts exist.
+// Where no pseudo-terminal can be opened (a container without /dev/pts) or `script` is missing, the
+// tests skip and say why.
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -12,6 +14,7 @@
 #include <string>
 #include <thread>
 
+#include "../pseudo_terminal.hpp"
 #include "cli_harness.hpp"
 
 namespace ffrf::test {
@@ -74,6 +77,8 @@ void PrintTo(const ChartingCommand& c, std::ostream* os) { *os << c.name << ' ' 
 class CliTerminal : public ::testing::TestWithParam<ChartingCommand> {};
 
 TEST_P(CliTerminal, ChartingCommandFinishesUnderAPseudoTerminalWithoutInput) {
+  if (const std::string reason = pseudo_terminal_unavailable_reason(); !reason.empty()) GTEST_SKIP() << reason;
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "the script program (util-linux) is not installed";
   TempDir dir;
   const ChartingCommand& c = GetParam();
   const fs::path out = dir / "out";

@@ -1,5 +1,6 @@
 # The layering of docs/architecture.md, checked on the sources (ctest `architecture_layers`):
-#   fem <- modal, nodal <- coupling <- scene <- study <- report <- app, with hydro beside coupling
+#   linalg (dense Eigen solvers compiled once) <- fem <- modal, nodal <- coupling <- scene <- study <-
+#   report <- app, with hydro beside coupling on linalg
 #   (coupling may use hydro; hydro knows nothing of the crane); distributed/ (the task-farm engine)
 #   knows nothing of ffrf and serves study/ and app/;
 #   CLI11 only in app/, nlohmann-json only in report/, toml++ only in scene/;
@@ -12,17 +13,18 @@ if(NOT SOURCE_DIR)
 endif()
 
 # Which library folders a folder may include from (itself always).
-set(allowed_fem "")
-set(allowed_modal fem)
-set(allowed_nodal fem)
-set(allowed_hydro "")
+set(allowed_linalg "")
+set(allowed_fem linalg)
+set(allowed_modal linalg fem)
+set(allowed_nodal linalg fem)
+set(allowed_hydro linalg)
 set(allowed_distributed "")
-set(allowed_coupling fem modal nodal hydro)
-set(allowed_scene fem modal nodal hydro coupling)
-set(allowed_study fem modal nodal hydro coupling scene distributed)
-set(allowed_report fem modal nodal hydro coupling scene study distributed)
-set(allowed_app fem modal nodal hydro coupling scene study report distributed)
-set(layers fem modal nodal hydro distributed coupling scene study report app)
+set(allowed_coupling linalg fem modal nodal hydro)
+set(allowed_scene linalg fem modal nodal hydro coupling)
+set(allowed_study linalg fem modal nodal hydro coupling scene distributed)
+set(allowed_report linalg fem modal nodal hydro coupling scene study distributed)
+set(allowed_app linalg fem modal nodal hydro coupling scene study report distributed)
+set(layers linalg fem modal nodal hydro distributed coupling scene study report app)
 
 set(violations "")
 set(checked 0)

@@ -12,6 +12,7 @@
 #include "coupling/error_metrics.hpp"
 #include "study/error_measure.hpp"
 #include "crane_test_support.hpp"
+#include "linalg/dense_solvers.hpp"
 
 namespace {
 

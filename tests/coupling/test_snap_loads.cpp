@@ -16,6 +16,7 @@
 // with Δt = 0.002 s and ω ≈ 12.4 rad/s that is 3.1e-4 of k A, inside the 0.1 % tolerance.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -206,6 +207,56 @@ TEST(SnapLoads, ElasticBoomFirstSnapAfterTheSameFreeFallButSofter) {
               "deflection under self-weight %.3g m\n",
               run.wire_events.front().time, hand.t_free, snaps.front().peak_tension, hand.peak,
               self_weight.tip_deflection.norm());
+}
+
+// The rule of a snap load, on a record written from the hand derivation above (no integrator): a
+// peak after a slack interval counts when it exceeds the static tension (snap_load_factor = 1). A
+// cargo caught after a free fall through h always overshoots: A = √(s² + 2gh/ω²) ≥ s, so the peak
+// k(s + A) ≥ 2 k s, twice the static tension even for the smallest fall. A re-tensioning that only
+// reaches 0.89 of the static tension (the cargo settling back as the wave lifts the hook) is not one.
+TEST(SnapLoads, OnlyAPeakAboveTheStaticTensionAfterSlackIsASnap) {
+  const double m = 1.0e5, k = 1.0e7, g = 9.81;  // s = 0.0981 m, ω = 10 rad/s
+  const double s = m * g / k, omega = std::sqrt(k / m), static_tension = m * g;
+  const double fall = 1e-3;  // h [m]: a small free fall
+  const double v = std::sqrt(2.0 * g * fall), amplitude = std::sqrt(s * s + (v / omega) * (v / omega));
+  const double phi0 = std::asin(s / amplitude);
+  coupling::MonitorLimits limits;
+  limits.wire_unstretched_length = 10.0;
+  limits.static_tension = static_tension;
+  coupling::RunResult record;
+  // Slack on [0, 0.1) (the run starts slack); taut 0.1–0.5 rising to 0.89 of the static tension and
+  // back (0.89 T0 sin²); slack 0.5–0.6; taut from 0.6 as the hand's caught cargo, k(s + A sin(ωτ − φ0)).
+  const double dt = 1e-3;
+  for (int i = 0; i <= 1000; ++i) {
+    const double t = i * dt;
+    double tension = 0.0;
+    if (t >= 0.1 && t < 0.5) tension = 0.89 * static_tension * std::pow(std::sin(std::numbers::pi * (t - 0.1) / 0.4), 2);
+    if (t >= 0.6) tension = std::max(0.0, k * (s + amplitude * std::sin(omega * (t - 0.6) - phi0)));
+    coupling::CraneOutputs sample;
+    sample.wire_tension = tension;
+    sample.wire_length = limits.wire_unstretched_length + (tension > 0.0 ? tension / k : -0.01);
+    record.time.push_back(t);
+    record.samples.push_back(sample);
+  }
+  record.wire_events = {{0.1, false}, {0.5, true}, {0.6, false}};
+
+  ASSERT_EQ(coupling::slack_intervals(record, limits).size(), 2u);
+  const auto snaps = coupling::snap_loads(record, limits);
+  ASSERT_EQ(snaps.size(), 1u) << "the 0.89 x static re-tensioning is not a snap";
+  EXPECT_EQ(snaps[0].time, 0.6);
+  // The peak at ωτ − φ0 = π/2, sampled within dt: low by at most k A (ω dt)²/2.
+  const double hand_peak = k * (s + amplitude);
+  EXPECT_NEAR(snaps[0].peak_tension, hand_peak, k * amplitude * std::pow(omega * dt, 2) / 2.0);
+  EXPECT_NEAR(snaps[0].peak_time, 0.6 + (std::numbers::pi / 2.0 + phi0) / omega, dt);
+  EXPECT_GE(snaps[0].ratio, 2.0 - 1e-4) << "a caught free fall overshoots to at least twice the static tension";
+  // The detections list the one snap, and the slack intervals both.
+  const auto found = coupling::post_run_detections(record, limits);
+  EXPECT_EQ(std::count_if(found.begin(), found.end(), [](const coupling::Detection& d) { return d.kind == coupling::FailureKind::snap_load; }), 1);
+  // Raising the factor past the caught cargo's ratio lists none; an unknown static tension lists both peaks.
+  limits.snap_load_factor = snaps[0].ratio * 1.01;
+  EXPECT_TRUE(coupling::snap_loads(record, limits).empty());
+  limits.static_tension = 0.0;
+  EXPECT_EQ(coupling::snap_loads(record, limits).size(), 2u);
 }
 
 }  // namespace

@@ -3,7 +3,8 @@
 // single-thread run (timing.csv, the timing, is apart); every task is computed exactly once (the
 // program's own trace files); rank 0 computes too; a failing task is a row and the others
 // complete; a rank that built another task list is named; a mismatched journal is refused; a torn last line is ignored and its task recomputed;
-// shard jobs merge into the whole table; progress only on a terminal. Kills: test_farm_kill_resume.
+// shard jobs merge into the whole table; progress only on a terminal (skipped where no pseudo-terminal
+// can be opened). Kills: test_farm_kill_resume.
 #include <gtest/gtest.h>
 #include <fmt/format.h>
 #include <pty.h>
@@ -11,6 +12,7 @@
 
 #include <fstream>
 
+#include "../pseudo_terminal.hpp"
 #include "scratch_directory.hpp"
 #include "toy_farm_runs.hpp"
 
@@ -163,6 +165,7 @@ TEST(Terminal, QuietWhenStderrIsNotATerminal) {
 }
 
 TEST(Terminal, ProgressIsDrawnInPlaceOnATerminal) {
+  if (const std::string reason = ffrf::test::pseudo_terminal_unavailable_reason(); !reason.empty()) GTEST_SKIP() << reason;
   ScratchDirectory dir;
   int master = -1, slave = -1;
   ASSERT_EQ(::openpty(&master, &slave, nullptr, nullptr, nullptr), 0);

@@ -9,16 +9,16 @@ namespace {
 
 using namespace ffrf::fem;
 
-const BeamMesh mesh{10.0, 7, {2.1e11, 0.01, 8.333e-6, 78.5}};
+const BeamMesh assembly_mesh{10.0, 7, {2.1e11, 0.01, 8.333e-6, 78.5}};
 
 // Full-DOF nodal vectors of rigid motions: translation along u, along v, rotation about x = 0.
 Eigen::VectorXd rigid_field(int kind) {
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(mesh.full_dof_count());
-  for (int n = 0; n < mesh.node_count(); ++n) {
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(assembly_mesh.full_dof_count());
+  for (int n = 0; n < assembly_mesh.node_count(); ++n) {
     if (kind == 0) q(full_dof(n, NodeDof::axial)) = 1.0;
     if (kind == 1) q(full_dof(n, NodeDof::transverse)) = 1.0;
     if (kind == 2) {
-      q(full_dof(n, NodeDof::transverse)) = mesh.node_position(n);
+      q(full_dof(n, NodeDof::transverse)) = assembly_mesh.node_position(n);
       q(full_dof(n, NodeDof::rotation)) = 1.0;
     }
   }
@@ -26,8 +26,8 @@ Eigen::VectorXd rigid_field(int kind) {
 }
 
 TEST(Assembly, ConsistentMassIntegratesMassAndMomentsExactly) {
-  const SparseMatrix m = assemble_mass(mesh);
-  const double rho = mesh.section.mass_per_length, length = mesh.length;
+  const SparseMatrix m = assemble_mass(assembly_mesh);
+  const double rho = assembly_mesh.section.mass_per_length, length = assembly_mesh.length;
   const Eigen::VectorXd tu = rigid_field(0), tv = rigid_field(1), rot = rigid_field(2);
   EXPECT_NEAR(tu.dot(m * tu), rho * length, 1e-12 * rho * length);
   EXPECT_NEAR(tv.dot(m * tv), rho * length, 1e-12 * rho * length);
@@ -37,15 +37,15 @@ TEST(Assembly, ConsistentMassIntegratesMassAndMomentsExactly) {
 }
 
 TEST(Assembly, StiffnessAnnihilatesRigidMotion) {
-  const SparseMatrix k = assemble_stiffness(mesh);
+  const SparseMatrix k = assemble_stiffness(assembly_mesh);
   for (int kind = 0; kind < 3; ++kind) {
     EXPECT_LT((k * rigid_field(kind)).norm(), 1e-6 * k.norm()) << "rigid field " << kind;
   }
 }
 
 TEST(Assembly, MatricesAreSymmetricAndBanded) {
-  const SparseMatrix m = assemble_mass(mesh);
-  const SparseMatrix k = assemble_stiffness(mesh);
+  const SparseMatrix m = assemble_mass(assembly_mesh);
+  const SparseMatrix k = assemble_stiffness(assembly_mesh);
   EXPECT_LT((SparseMatrix(m.transpose()) - m).norm(), 1e-12 * m.norm());
   EXPECT_LT((SparseMatrix(k.transpose()) - k).norm(), 1e-12 * k.norm());
   for (int c = 0; c < k.outerSize(); ++c)
@@ -53,18 +53,18 @@ TEST(Assembly, MatricesAreSymmetricAndBanded) {
 }
 
 TEST(Assembly, BoundaryConditionsFixTheRightDofs) {
-  EXPECT_EQ(make_dof_map(mesh, Boundary::clamped_free).free_count(), 3 * mesh.element_count);
-  EXPECT_EQ(make_dof_map(mesh, Boundary::free_free).free_count(), 3 * mesh.node_count());
-  const DofMap pinned = make_dof_map(mesh, Boundary::pinned_pinned);
-  EXPECT_EQ(pinned.free_count(), 3 * mesh.node_count() - 3);
-  EXPECT_EQ(pinned.full_to_free[full_dof(mesh.element_count, NodeDof::transverse)], -1);
+  EXPECT_EQ(make_dof_map(assembly_mesh, Boundary::clamped_free).free_count(), 3 * assembly_mesh.element_count);
+  EXPECT_EQ(make_dof_map(assembly_mesh, Boundary::free_free).free_count(), 3 * assembly_mesh.node_count());
+  const DofMap pinned = make_dof_map(assembly_mesh, Boundary::pinned_pinned);
+  EXPECT_EQ(pinned.free_count(), 3 * assembly_mesh.node_count() - 3);
+  EXPECT_EQ(pinned.full_to_free[full_dof(assembly_mesh.element_count, NodeDof::transverse)], -1);
   EXPECT_GE(pinned.full_to_free[full_dof(0, NodeDof::rotation)], 0);
-  const FreeMatrices free = assemble_free(mesh, Boundary::clamped_free);
-  EXPECT_EQ(free.mass.rows(), 3 * mesh.element_count);
-  Eigen::VectorXd full = Eigen::VectorXd::LinSpaced(mesh.full_dof_count(), 1.0, 2.0);
+  const FreeMatrices free = assemble_free(assembly_mesh, Boundary::clamped_free);
+  EXPECT_EQ(free.mass.rows(), 3 * assembly_mesh.element_count);
+  Eigen::VectorXd full = Eigen::VectorXd::LinSpaced(assembly_mesh.full_dof_count(), 1.0, 2.0);
   const Eigen::VectorXd round_trip = extend_to_full(restrict_to_free(full, free.dofs), free.dofs);
   EXPECT_EQ(round_trip.head(3).norm(), 0.0);
-  EXPECT_EQ((round_trip - full).tail(mesh.full_dof_count() - 3).norm(), 0.0);
+  EXPECT_EQ((round_trip - full).tail(assembly_mesh.full_dof_count() - 3).norm(), 0.0);
 }
 
 TEST(Assembly, BoundaryKeywordsRoundTrip) {

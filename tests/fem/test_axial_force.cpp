@@ -15,7 +15,7 @@ namespace {
 
 using namespace ffrf::fem;
 
-const BeamMesh mesh{10.0, 8, {2.1e11, 0.01, 8.333e-6, 78.5}};
+const BeamMesh prestressed_mesh{10.0, 8, {2.1e11, 0.01, 8.333e-6, 78.5}};
 
 double max_abs_difference(const Eigen::SparseMatrix<double>& a, const Eigen::SparseMatrix<double>& b) {
   return Eigen::MatrixXd(a - b).cwiseAbs().maxCoeff();
@@ -23,41 +23,41 @@ double max_abs_difference(const Eigen::SparseMatrix<double>& a, const Eigen::Spa
 
 TEST(AxialForce, ConstantForceEqualsTheClosedFormElementMatrix) {
   for (Boundary boundary : {Boundary::clamped_free, Boundary::pinned_pinned, Boundary::free_free}) {
-    const DofMap dofs = make_dof_map(mesh, boundary);
+    const DofMap dofs = make_dof_map(prestressed_mesh, boundary);
     const double force = -3.7e5;
-    const auto quadrature = assemble_geometric_stiffness(mesh, dofs, [&](double) { return force; });
-    const auto closed_form = restrict_to_free(assemble_geometric_stiffness(mesh, force), dofs);
+    const auto quadrature = assemble_geometric_stiffness(prestressed_mesh, dofs, [&](double) { return force; });
+    const auto closed_form = restrict_to_free(assemble_geometric_stiffness(prestressed_mesh, force), dofs);
     const double scale = Eigen::MatrixXd(closed_form).cwiseAbs().maxCoeff();
     EXPECT_LT(max_abs_difference(quadrature, closed_form), 1e-14 * scale) << to_string(boundary);
   }
 }
 
 TEST(AxialForce, StaticDistributionIsLoadTimesRemainingLengthPlusTipForce) {
-  const AxialForce n = static_axial_force(mesh, 250.0, -4.0e3);
-  EXPECT_DOUBLE_EQ(n(mesh.length), -4.0e3);                 // the tip carries the tip force only
-  EXPECT_DOUBLE_EQ(n(0.0), 250.0 * mesh.length - 4.0e3);    // the root carries everything
+  const AxialForce n = static_axial_force(prestressed_mesh, 250.0, -4.0e3);
+  EXPECT_DOUBLE_EQ(n(prestressed_mesh.length), -4.0e3);                 // the tip carries the tip force only
+  EXPECT_DOUBLE_EQ(n(0.0), 250.0 * prestressed_mesh.length - 4.0e3);    // the root carries everything
   EXPECT_NEAR(n(2.0) - n(3.0), 250.0, 1e-9);                // dN/dx = −p
-  EXPECT_THROW(static_axial_force(mesh, std::nan(""), 0.0), std::invalid_argument);
+  EXPECT_THROW(static_axial_force(prestressed_mesh, std::nan(""), 0.0), std::invalid_argument);
 }
 
 TEST(AxialForce, CentrifugalDistributionSatisfiesEquilibriumAndFreeTip) {
   const double hub_radius = 2.5, spin = 3.0;
-  const AxialForce per_spin2 = centrifugal_axial_force(mesh, hub_radius);
-  const double rho_a = mesh.section.mass_per_length;
-  EXPECT_NEAR(per_spin2(mesh.length), 0.0, 1e-12);
+  const AxialForce per_spin2 = centrifugal_axial_force(prestressed_mesh, hub_radius);
+  const double rho_a = prestressed_mesh.section.mass_per_length;
+  EXPECT_NEAR(per_spin2(prestressed_mesh.length), 0.0, 1e-12);
   // N is quadratic in x: the central difference is its exact derivative up to round-off.
   for (double x : {0.0, 1.3, 5.0, 9.9}) {
     const double h = 1e-3;
     const double slope = spin * spin * (per_spin2(x + h) - per_spin2(x - h)) / (2 * h);
-    EXPECT_NEAR(slope, -rho_a * spin * spin * (hub_radius + x), 1e-7 * rho_a * spin * spin * mesh.length) << "x = " << x;
+    EXPECT_NEAR(slope, -rho_a * spin * spin * (hub_radius + x), 1e-7 * rho_a * spin * spin * prestressed_mesh.length) << "x = " << x;
   }
   // The root carries the whole centrifugal force ∫₀ᴸ ρAΩ²(r + s) ds.
-  EXPECT_NEAR(per_spin2(0.0), rho_a * (hub_radius * mesh.length + 0.5 * mesh.length * mesh.length), 1e-9);
-  EXPECT_THROW(centrifugal_axial_force(mesh, std::nan("")), std::invalid_argument);
+  EXPECT_NEAR(per_spin2(0.0), rho_a * (hub_radius * prestressed_mesh.length + 0.5 * prestressed_mesh.length * prestressed_mesh.length), 1e-9);
+  EXPECT_THROW(centrifugal_axial_force(prestressed_mesh, std::nan("")), std::invalid_argument);
   // An axis ahead of the root (r < 0, on the beam's line): the same integral ∫ₓᴸ ρA (r + s) ds.
-  const AxialForce ahead = centrifugal_axial_force(mesh, -1.0);
-  EXPECT_NEAR(ahead(0.0), rho_a * (-1.0 * mesh.length + 0.5 * mesh.length * mesh.length), 1e-9 * rho_a * mesh.length * mesh.length);
-  EXPECT_NEAR(ahead(mesh.length), 0.0, 1e-12);
+  const AxialForce ahead = centrifugal_axial_force(prestressed_mesh, -1.0);
+  EXPECT_NEAR(ahead(0.0), rho_a * (-1.0 * prestressed_mesh.length + 0.5 * prestressed_mesh.length * prestressed_mesh.length), 1e-9 * rho_a * prestressed_mesh.length * prestressed_mesh.length);
+  EXPECT_NEAR(ahead(prestressed_mesh.length), 0.0, 1e-12);
 }
 
 // Transverse slope dv/dx of the element's Hermite functions as polynomials in ξ (coefficients of
@@ -89,14 +89,14 @@ Eigen::Matrix4d linear_force_element(double n0, double n1, double l) {
 
 TEST(AxialForce, LinearForceMatchesExactElementIntegrals) {
   const double p = 1.7e3, tip = -2.0e4;  // N(x) = p(L − x) + F: linear
-  const AxialForce n = static_axial_force(mesh, p, tip);
-  const DofMap dofs = make_dof_map(mesh, Boundary::free_free);  // all DOFs: compare the full matrix
-  const Eigen::MatrixXd kg(assemble_geometric_stiffness(mesh, dofs, n));
-  Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(mesh.full_dof_count(), mesh.full_dof_count());
-  const double l = mesh.element_length();
+  const AxialForce n = static_axial_force(prestressed_mesh, p, tip);
+  const DofMap dofs = make_dof_map(prestressed_mesh, Boundary::free_free);  // all DOFs: compare the full matrix
+  const Eigen::MatrixXd kg(assemble_geometric_stiffness(prestressed_mesh, dofs, n));
+  Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(prestressed_mesh.full_dof_count(), prestressed_mesh.full_dof_count());
+  const double l = prestressed_mesh.element_length();
   const int v[4] = {1, 2, 4, 5};
-  for (int e = 0; e < mesh.element_count; ++e) {
-    const Eigen::Matrix4d local = linear_force_element(n(mesh.node_position(e)), n(mesh.node_position(e + 1)), l);
+  for (int e = 0; e < prestressed_mesh.element_count; ++e) {
+    const Eigen::Matrix4d local = linear_force_element(n(prestressed_mesh.node_position(e)), n(prestressed_mesh.node_position(e + 1)), l);
     for (int i = 0; i < 4; ++i) {
       for (int j = 0; j < 4; ++j) expected(3 * e + v[i], 3 * e + v[j]) += local(i, j);
     }
@@ -104,13 +104,13 @@ TEST(AxialForce, LinearForceMatchesExactElementIntegrals) {
   const double scale = expected.cwiseAbs().maxCoeff();
   EXPECT_LT((kg - expected).cwiseAbs().maxCoeff(), 1e-13 * scale);
   // Axial DOFs carry no geometric stiffness.
-  for (int node = 0; node < mesh.node_count(); ++node) EXPECT_EQ(kg.row(3 * node).cwiseAbs().sum(), 0.0);
+  for (int node = 0; node < prestressed_mesh.node_count(); ++node) EXPECT_EQ(kg.row(3 * node).cwiseAbs().sum(), 0.0);
 }
 
 TEST(AxialForce, CubicForceIsIntegratedExactly) {
   // N(x) = x³ on one element of length 2: compare with a fine composite Simpson rule, which is
   // exact for the degree-7 integrand only in the limit; 1e-9 relative at 2000 panels.
-  const BeamMesh one{2.0, 1, mesh.section};
+  const BeamMesh one{2.0, 1, prestressed_mesh.section};
   const DofMap dofs = make_dof_map(one, Boundary::free_free);
   const Eigen::MatrixXd kg(assemble_geometric_stiffness(one, dofs, [](double x) { return x * x * x; }));
   const auto c = hermite_slope_coefficients(2.0);

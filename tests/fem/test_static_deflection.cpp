@@ -10,6 +10,7 @@
 
 #include "fem/assembly.hpp"
 #include "fem/point_shape.hpp"
+#include "linalg/dense_solvers.hpp"
 
 namespace {
 

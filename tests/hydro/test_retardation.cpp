@@ -16,7 +16,6 @@ using namespace ffrf::hydro;
 using ffrf::hydro::test::DampedCosine;
 using ffrf::hydro::test::heave_only;
 using ffrf::hydro::test::Lorentzian;
-constexpr double kPi = std::numbers::pi;
 
 template <class Pair>
 double max_kernel_error(const Pair& pair, const RetardationFunction& k) {
@@ -46,7 +45,7 @@ TEST(Retardation, WithoutTheTailTheKernelMissesThePredictedAmount) {
   const Lorentzian pair;
   const auto r = heave_only(pair, 0.01, 10.0);
   const auto cut = retardation_function(r, {.time_step = 0.05, .truncation_time = 20.0, .high_frequency_tail = false});
-  const double predicted = 2.0 / kPi * pair.b * pair.a * (kPi / 2 - std::atan(10.0 / pair.a));  // exact ∫_{ω_N}^∞
+  const double predicted = 2.0 / std::numbers::pi * pair.b * pair.a * (std::numbers::pi / 2 - std::atan(10.0 / pair.a));  // exact ∫_{ω_N}^∞
   EXPECT_NEAR(pair.kernel(0.0) - cut.kernel[0](1, 1), predicted, 0.01 * predicted);
   EXPECT_GT(predicted, 0.01 * pair.kernel(0.0));
 }

@@ -12,6 +12,7 @@
 #include "hydro/state_space_fit.hpp"
 #include "hydro/wamit_reader.hpp"
 #include "kernel_pairs.hpp"
+#include "linalg/dense_solvers.hpp"
 
 namespace {
 

@@ -21,7 +21,6 @@
 namespace {
 
 using namespace ffrf::hydro;
-constexpr double kPi = std::numbers::pi;
 
 std::vector<double> sinusoid(double amplitude, double omega, double dt, std::size_t n, double offset = 0.0) {
   std::vector<double> x(n);
@@ -32,7 +31,7 @@ std::vector<double> sinusoid(double amplitude, double omega, double dt, std::siz
 TEST(WelchSpectrum, SinusoidPowerAndWhiteNoiseLevel) {
   const double dt = 0.1;
   const std::size_t n = 1 << 16, length = 1024;
-  const double omega = 2 * kPi * 100.0 / (length * dt);  // on bin 100
+  const double omega = 2 * std::numbers::pi * 100.0 / (length * dt);  // on bin 100
   const auto s = welch_spectrum(sinusoid(2.0, omega, dt, n), dt, {.segment_length = length});
   EXPECT_NEAR(spectral_moment(s, 0), 2.0, 1e-3 * 2.0);  // a²/2 (the Hann window spreads it over 3 bins)
   EXPECT_NEAR(peak_frequency(s), omega, 1e-9);
@@ -40,11 +39,11 @@ TEST(WelchSpectrum, SinusoidPowerAndWhiteNoiseLevel) {
   const RandomStream stream(5, 0);
   std::vector<double> noise(n);
   for (std::size_t i = 0; i < n; ++i)
-    noise[i] = std::sqrt(-2 * std::log(stream.uniform_open(2 * i))) * std::cos(2 * kPi * stream.uniform(2 * i + 1));
+    noise[i] = std::sqrt(-2 * std::log(stream.uniform_open(2 * i))) * std::cos(2 * std::numbers::pi * stream.uniform(2 * i + 1));
   const auto w = welch_spectrum(noise, dt, {.segment_length = length});
   double level = 0.0;
   for (double d : w.density) level += d / static_cast<double>(w.density.size());
-  EXPECT_NEAR(level, dt / kPi, 0.02 * dt / kPi);  // 513 bins × ~127 segments average
+  EXPECT_NEAR(level, dt / std::numbers::pi, 0.02 * dt / std::numbers::pi);  // 513 bins × ~127 segments average
 }
 
 // A deterministic-amplitude JONSWAP sea (Hs 2 m, Tp 8 s, γ 3.3) that repeats after `period`.
@@ -68,11 +67,11 @@ TEST(WelchSpectrum, SynthesizedSeaReturnsItsSpectrumMoments) {
   EXPECT_NEAR(spectral_moment(s, 2), m2, 0.03 * m2);
   // Each bin scatters by ~1/sqrt(segments) (~25 %): the estimate's peak is good to half the
   // spectral peak's width σa ωp.
-  EXPECT_NEAR(peak_frequency(s), 2 * kPi / 8.0, 0.5 * 0.07 * 2 * kPi / 8.0);
+  EXPECT_NEAR(peak_frequency(s), 2 * std::numbers::pi / 8.0, 0.5 * 0.07 * 2 * std::numbers::pi / 8.0);
 }
 
 TEST(RecordStatistics, SinusoidHasExactWaves) {
-  const double dt = 0.01, omega = 2 * kPi / 7.0;
+  const double dt = 0.01, omega = 2 * std::numbers::pi / 7.0;
   const auto st = record_statistics(sinusoid(1.5, omega, dt, 70000, 3.0), dt);
   EXPECT_NEAR(st.mean, 3.0, 1e-4);
   EXPECT_NEAR(st.standard_deviation, 1.5 / std::sqrt(2.0), 1e-4);
@@ -86,7 +85,7 @@ std::vector<double> narrow_band_record(std::uint64_t realisation, double record,
   const auto spectrum = tabulated_spectrum({0.792, 0.808}, {1.0, 1.0});
   SynthesisOptions o;
   o.record_length = record;
-  o.frequency_step = 2 * kPi / record;
+  o.frequency_step = 2 * std::numbers::pi / record;
   o.omega_min = 0.792;
   o.omega_max = 0.808;
   o.seed = 3;
@@ -141,7 +140,7 @@ TEST(ExtremeValues, RecordMaximaFallBelowTheRayleighMpmWithTheExpectedProbabilit
     if (r == 0) {
       const double lo = sea.components.frequency.front(), hi = sea.components.frequency.back();
       const double m0 = sea.band_m0, m2 = spectral_moment(spectrum, 2, lo, hi);
-      cycles = record / (2 * kPi * std::sqrt(m0 / m2));
+      cycles = record / (2 * std::numbers::pi * std::sqrt(m0 / m2));
       theory = rayleigh_most_probable_maximum(std::sqrt(m0), cycles);
     }
     const auto e = most_probable_maxima(elevation_record(sea.components, 0.0, dt, static_cast<std::size_t>(record / dt)), dt);

@@ -18,7 +18,6 @@
 namespace {
 
 using namespace ffrf::hydro;
-constexpr double kPi = std::numbers::pi;
 const std::string kData = std::string(FFRF_SOURCE_DIR) + "/tests/hydro/data/";
 
 std::size_t index_of(const std::vector<double>& omega, double value) {
@@ -46,7 +45,7 @@ TEST(WamitReader, RadiationValuesAreTheFileNumbersTimesTheScaling) {
     // "  6.000002E+00     3     3  3.177641E+03  1.236651E+03"
     // "  6.000002E+00     1     5 -4.948301E+02  3.812040E+03"
     // "  6.000002E+00     5     5  1.574752E+06  5.721268E+05"
-    const double omega = 2 * kPi / 6.000002;
+    const double omega = 2 * std::numbers::pi / 6.000002;
     const std::size_t i = index_of(r.frequency, omega);
     ASSERT_LT(i, r.frequency.size());
     EXPECT_DOUBLE_EQ(r.added_mass[i](1, 1), 3.177641E+03 * rho * std::pow(L, 3));
@@ -61,18 +60,18 @@ TEST(WamitReader, FrequenciesAscendFromTheLongestPeriod) {
   const auto r = read_wamit_radiation(kData + "barge.1", {1.0, 1000.0, 9.81});
   // 277 finite periods: 0.90 to 30.0 s every 0.15 s, then every 1.5 s to 150 s (README).
   ASSERT_EQ(r.frequency.size(), 275u);
-  EXPECT_NEAR(r.frequency.front(), 2 * kPi / 1.500000E+02, 1e-15);
-  EXPECT_NEAR(r.frequency.back(), 2 * kPi / 9.000000E-01, 1e-12);
+  EXPECT_NEAR(r.frequency.front(), 2 * std::numbers::pi / 1.500000E+02, 1e-15);
+  EXPECT_NEAR(r.frequency.back(), 2 * std::numbers::pi / 9.000000E-01, 1e-12);
   for (std::size_t i = 1; i < r.frequency.size(); ++i) EXPECT_GT(r.frequency[i], r.frequency[i - 1]);
   // "  1.500000E+02     5     5  2.405670E+06  2.523773E-01": the longest period is the first ω.
-  EXPECT_DOUBLE_EQ(r.damping.front()(2, 2), 2.523773E-01 * 1000.0 * 2 * kPi / 150.0);
+  EXPECT_DOUBLE_EQ(r.damping.front()(2, 2), 2.523773E-01 * 1000.0 * 2 * std::numbers::pi / 150.0);
 }
 
 TEST(WamitReader, ExcitationIsTheFileNumbersTimesRhoGLm) {
   for (double L : {1.0, 2.0}) {
     const auto x = read_wamit_excitation(kData + "barge.3", {L, 1000.0, 9.81});
     ASSERT_EQ(x.heading_degrees, std::vector<double>{0.0});
-    const std::size_t i = index_of(x.frequency, 2 * kPi / 6.000002);
+    const std::size_t i = index_of(x.frequency, 2 * std::numbers::pi / 6.000002);
     ASSERT_LT(i, x.frequency.size());
     const double rg = 1000.0 * 9.81;
     // "  6.000002E+00  0.000000E+00     1  7.401694E+01 -8.555367E+01  5.738186E+00 -7.379417E+01"
@@ -134,7 +133,7 @@ std::string period_block(const std::string& per) {
 TEST(WamitReader, ReadsAMinimalFileWithoutHeader) {
   const auto r = read_wamit_radiation(write_file("ok.1", kLimits + period_block("5.0") + period_block("6.0")), {1.0, 1000.0, 9.81});
   EXPECT_EQ(r.frequency.size(), 2u);
-  EXPECT_NEAR(r.frequency[0], 2 * kPi / 6.0, 1e-15);
+  EXPECT_NEAR(r.frequency[0], 2 * std::numbers::pi / 6.0, 1e-15);
 }
 
 TEST(WamitReader, NamesNonNumericAndNonFiniteFields) {

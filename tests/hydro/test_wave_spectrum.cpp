@@ -11,12 +11,11 @@
 namespace {
 
 using namespace ffrf::hydro;
-constexpr double kPi = std::numbers::pi;
 
 // ∫₀^∞ ω^n S(ω) dω split at ωp: above, ω = ωp / w (w ∈ (0, 1], dω = ωp w⁻² dw, so the ω⁻⁵ tail
 // becomes the smooth w^(3−n)); below, ω = ωp v. Composite Simpson with many points on each side.
 double independent_moment(const WaveSpectrum& s, int n) {
-  const double wp = 2 * kPi / s.peak_period;
+  const double wp = 2 * std::numbers::pi / s.peak_period;
   auto above = [&](double w) {
     if (w <= 0) return 0.0;  // the limit of ωp^(n+1) w^(n−2) S(ωp/w) for n ≤ 2
     const double omega = wp / w;
@@ -75,7 +74,7 @@ TEST(WaveSpectrum, DnvNormalisationErrorIsTheDocumentedFewPercent) {
 TEST(WaveSpectrum, PeakIsAtTheGivenPeriod) {
   for (double gamma : {1.0, 3.3, 7.0}) {
     const auto s = jonswap(2.0, 8.0, gamma);
-    const double wp = 2 * kPi / 8.0;
+    const double wp = 2 * std::numbers::pi / 8.0;
     EXPECT_NEAR(golden_section_peak(s, 0.5 * wp, 2.0 * wp), wp, 1e-6 * wp) << "gamma " << gamma;
   }
 }
@@ -83,13 +82,13 @@ TEST(WaveSpectrum, PeakIsAtTheGivenPeriod) {
 TEST(WaveSpectrum, PiersonMoskowitzMomentsMatchTheGammaFunctionClosedForm) {
   // m_n = (Hs²/16) ωp^n (5/4)^(n/4) Γ(1 − n/4): derived by the substitution u = (5/4)(ωp/ω)⁴.
   const auto s = pierson_moskowitz(2.0, 8.0);
-  const double wp = 2 * kPi / 8.0;
+  const double wp = 2 * std::numbers::pi / 8.0;
   const double m1 = 0.25 * wp * std::pow(1.25, 0.25) * std::tgamma(0.75);
-  const double m2 = 0.25 * wp * wp * std::sqrt(1.25) * std::sqrt(kPi);
+  const double m2 = 0.25 * wp * wp * std::sqrt(1.25) * std::sqrt(std::numbers::pi);
   EXPECT_NEAR(independent_moment(s, 1), m1, m1 * 1e-8);
   EXPECT_NEAR(independent_moment(s, 2), m2, m2 * 1e-6);
   // Zero-crossing period Tz = 2π sqrt(m0/m2) = Tp / sqrt(sqrt(5π)/2) = 0.7104 Tp (DNV-RP-C205 for γ = 1).
-  EXPECT_NEAR(2 * kPi * std::sqrt(spectral_moment(s, 0) / spectral_moment(s, 2)) / 8.0, 0.71033, 1e-4);
+  EXPECT_NEAR(2 * std::numbers::pi * std::sqrt(spectral_moment(s, 0) / spectral_moment(s, 2)) / 8.0, 0.71033, 1e-4);
 }
 
 TEST(WaveSpectrum, JonswapMomentsAgreeWithTheIndependentIntegral) {

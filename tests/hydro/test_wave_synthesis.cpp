@@ -18,7 +18,6 @@
 namespace {
 
 using namespace ffrf::hydro;
-constexpr double kPi = std::numbers::pi;
 
 double mean_square(const std::vector<double>& x) {
   double sum = 0.0;
@@ -159,7 +158,7 @@ TEST(WaveSynthesis, FlagsASeaThatRepeatsWithinTheRecord) {
   SynthesisOptions options;
   options.record_length = 10800.0;
   EXPECT_FALSE(synthesize(spectrum, options).repeats_within_record);
-  options.frequency_step = 2 * kPi / 3600.0;
+  options.frequency_step = 2 * std::numbers::pi / 3600.0;
   const auto sea = synthesize(spectrum, options);
   EXPECT_TRUE(sea.repeats_within_record);
   EXPECT_NEAR(sea.repeat_period, 3600.0, 1e-9);

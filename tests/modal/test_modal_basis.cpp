@@ -10,6 +10,7 @@
 #include "fem/point_shape.hpp"
 #include "modal/modal_coordinates.hpp"
 #include "nodal/nodal_coordinates.hpp"
+#include "linalg/dense_solvers.hpp"
 
 namespace {
 

@@ -14,6 +14,7 @@
 #include "fem/beam_model.hpp"
 #include "modal/eigen_solver.hpp"
 #include "modal/mode_cache.hpp"
+#include "linalg/dense_solvers.hpp"
 
 namespace {
 

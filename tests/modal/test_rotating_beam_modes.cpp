@@ -15,6 +15,7 @@
 #include "fem/analytic_rotating_beam.hpp"
 #include "fem/axial_force.hpp"
 #include "modal/rotating_beam_modes.hpp"
+#include "linalg/dense_solvers.hpp"
 
 namespace {
 

@@ -6,8 +6,11 @@
 #include <fstream>
 #include <iterator>
 #include <numbers>
+#include <regex>
+#include <tuple>
 
 #include "scene/scene_loader.hpp"
+#include "scene/scene_schema.hpp"
 
 namespace ffrf::scene {
 namespace {
@@ -215,6 +218,27 @@ TEST(SceneLoader, OverflowingIntegerNamesKeyAndRange) {
 TEST(SceneLoader, UnknownKeySuggestsTheClosest) {
   const auto p = single_problem(std::string(kBoom) + "elemnts = 8\n", "boom.elemnts", "8");
   EXPECT_NE(p.message.find("unknown key; did you mean boom.elements?"), std::string::npos) << p.message;
+}
+
+// Keys a user may expect to set but ffrf computes (the draft, the static tension): the message says
+// so and names the keys that change the quantity, and every key it names is one the schema has.
+TEST(SceneLoader, ComputedQuantityIsNamedAsComputedWithTheKeysThatChangeIt) {
+  const std::string crane = FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml";
+  std::ifstream in(crane);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const auto& [section, leaf, value, key] : {std::tuple{"[hull]\n", "draft", "4.2", "hull.draft"},
+                                                  std::tuple{"[hull]\n", "displacement", "12600", "hull.displacement"},
+                                                  std::tuple{"[wire]\n", "tension", "1.2e7", "wire.tension"}}) {
+    const std::string line = std::string(leaf) + " = " + value + "\n";
+    const auto p = single_problem(replaced(text, section, section + line), key, value);
+    EXPECT_NE(p.message.find("not a scene key: computed, not set"), std::string::npos) << p.message;
+    EXPECT_EQ(p.message.find("unknown key"), std::string::npos) << p.message;
+    EXPECT_NE(p.message.find("cargo.mass"), std::string::npos) << "the cargo's mass changes it: " << p.message;
+    const std::regex dotted(R"(\b([a-z]+\.[a-z0-9_]*[a-z])\b)");
+    for (std::sregex_iterator it(p.message.begin(), p.message.end(), dotted), end; it != end; ++it) {
+      EXPECT_NE(find_key((*it)[1].str()), nullptr) << (*it)[1].str() << " named in: " << p.message;
+    }
+  }
 }
 
 TEST(SceneLoader, ReportsEveryProblemAtOnce) {

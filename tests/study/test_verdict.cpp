@@ -24,7 +24,7 @@ MeasuredModel model(const char* label, double error, double wall, double work) {
 }
 
 TEST(Verdict, HandComputedPassFailSpeedUpsAndCheapestByWork) {
-  // Reference: 10 s of wall time, work 1200 (steps × state size). τ = 1 %.
+  // Reference: 10 s of wall time, work 1200 (RHS evaluations × state size). τ = 1 %.
   MeasuredModel not_run = model("D", NAN, 0.0, 0.0);
   not_run.ran = false;
   not_run.reason = "failed";
@@ -87,6 +87,28 @@ TEST(Verdict, ToleranceOutOfRangeIsASettingError) {
   } catch (const ffrf::study::SettingError& error) {
     EXPECT_EQ(error.setting(), ffrf::study::Setting::tolerance);
   }
+}
+
+// The model-choice rtol: the decade at or below τ/10⁴, by hand.
+TEST(Verdict, ModelChoiceRtolIsTheDecadeAtOrBelowTauOverTenThousand) {
+  EXPECT_DOUBLE_EQ(ffrf::study::model_choice_rtol(0.01), 1e-6);
+  EXPECT_DOUBLE_EQ(ffrf::study::model_choice_rtol(0.05), 1e-6);
+  EXPECT_DOUBLE_EQ(ffrf::study::model_choice_rtol(0.1), 1e-5);
+  EXPECT_DOUBLE_EQ(ffrf::study::model_choice_rtol(0.001), 1e-7);
+  EXPECT_DOUBLE_EQ(ffrf::study::solver_work(1500, 18), 27000.0);
+}
+
+// Only models run at the model-choice rtol compete for the cheapest: a cheaper pass at another rtol
+// is a pass, not the verdict's model.
+TEST(Verdict, TheCheapestIsNamedAmongRunsAtTheModelChoiceRtolOnly) {
+  MeasuredModel loose = model("N=1 rtol 1e-4", 0.009, 0.5, 100.0);
+  loose.at_choice_rtol = false;
+  const std::vector<MeasuredModel> models{loose, model("N=1 rtol 1e-6", 0.002, 0.8, 150.0), model("k=4", 0.004, 0.7, 170.0)};
+  const auto v = judge(models, 10.0, 1200.0, 0.01);
+  EXPECT_TRUE(v.models[0].passed);
+  ASSERT_TRUE(v.cheapest.has_value());
+  EXPECT_EQ(*v.cheapest, 1u);
+  EXPECT_TRUE(ffrf::study::cheapest_passing(models, 0.01) == v.cheapest);
 }
 
 }  // namespace
