@@ -2,8 +2,10 @@
 // static equilibrium, rigid, nodal and modal booms side by side (or the one model the options
 // name), the coupled natural modes, and with --check-time-domain the regular-wave time-domain runs
 // judged against the RAOs (study/rao.hpp, study/rao_check.hpp). Text on stdout (--json: the JSON
-// summary); --out DIR: per model rao_MODEL.csv, natural_modes.csv, report.md, summary.json, the
-// charts (with their gnuplot scripts) and time_domain_check.csv — written completely or not at all.
+// summary); --out DIR: per model rao_MODEL.csv, natural_modes.csv, resonance_peaks.csv (the grid
+// refined at each resonance peak unless --no-refine-peaks), sea_spectrum.csv (with --spectrum or the
+// scene's irregular sea), report.md, summary.json, the charts (with their gnuplot scripts) and
+// time_domain_check.csv — written completely or not at all.
 // Exit 0, 1 when the time-domain check fails, 2 bad input, 3 a solver failed.
 #include <fmt/format.h>
 
@@ -20,10 +22,14 @@
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
 #include "app/option_checks.hpp"
+#include "hydro/wave_spectrum.hpp"
 #include "report/chart_notes.hpp"
 #include "report/gnuplot.hpp"
 #include "report/output_directory.hpp"
+#include "report/rao_charts.hpp"
 #include "report/rao_report.hpp"
+#include "report/rao_resonance.hpp"
+#include "scene/irregular_sea.hpp"
 #include "study/rao.hpp"
 #include "study/rao_check.hpp"
 
@@ -39,6 +45,8 @@ struct RaoOptions {
   std::string check_periods = "8,10,14";
   double check_wave_height = 0.2;
   std::string tolerance = "1%";
+  std::string spectrum;     // "jonswap:Hs:Tp[:gamma]", "pm:Hs:Tp", "none"; empty: the scene's sea
+  bool no_refine_peaks = false;
   bool json = false;
   std::string out;
 };
@@ -95,6 +103,28 @@ std::vector<double> parse_list(const std::string& option, const std::string& tex
   return values;
 }
 
+// --spectrum: "jonswap:Hs:Tp[:gamma]" or "pm:Hs:Tp" (Hs in m, Tp in s), "none"; empty: the scene's own
+// parametric irregular sea when it has one (a sea of given components has no spectrum to draw).
+std::optional<hydro::WaveSpectrum> sea_spectrum(const std::string& text, const scene::Scene& scene) {
+  if (text.empty()) {
+    if (!scene.sea || scene.sea->spectrum == scene::SeaSpectrum::components) return std::nullopt;
+    return scene::sea_spectrum(*scene.sea);
+  }
+  if (text == "none") return std::nullopt;
+  const std::vector<std::string> parts = fields(text, ':');
+  const std::string expected = "expected jonswap:Hs:Tp[:gamma] or pm:Hs:Tp with 0 < Hs <= 30 m, 0 < Tp <= 100 s, 1 <= gamma <= 20, or none";
+  const bool jonswap = !parts.empty() && parts[0] == "jonswap", pm = !parts.empty() && parts[0] == "pm";
+  if (!(jonswap && (parts.size() == 3 || parts.size() == 4)) && !(pm && parts.size() == 3)) {
+    throw BadOption(fmt::format("--spectrum {}: malformed ({})", text, expected));
+  }
+  const double hs = number("--spectrum", text, parts[1]), tp = number("--spectrum", text, parts[2]);
+  const double gamma = parts.size() == 4 ? number("--spectrum", text, parts[3]) : 3.3;
+  if (!(hs > 0.0 && hs <= 30.0) || !(tp > 0.0 && tp <= 100.0) || !(gamma >= 1.0 && gamma <= 20.0)) {
+    throw BadOption(fmt::format("--spectrum {}: out of range ({})", text, expected));
+  }
+  return jonswap ? hydro::jonswap(hs, tp, gamma) : hydro::pierson_moskowitz(hs, tp);
+}
+
 bool model_given(const ModelOptions& m) {
   return !m.boom.empty() || m.elements || m.modes || m.static_modes || m.no_static_modes || !m.stiffening.empty();
 }
@@ -106,6 +136,8 @@ void write_outputs(report::StagedDirectory& out, const study::RaoResult& result,
     out.write(fmt::format("rao_{}.csv", report::model_slug(result.models[m].choice)), report::rao_csv(result, m));
   }
   out.write("natural_modes.csv", report::natural_modes_csv(result));
+  if (result.peak_search) out.write("resonance_peaks.csv", report::resonance_peaks_csv(result));
+  if (result.sea) out.write("sea_spectrum.csv", report::sea_spectrum_csv(result));
   if (!checks.empty()) out.write("time_domain_check.csv", report::time_domain_check_csv(checks));
   for (const std::string& name : report::rao_chart_names()) report::draw_chart(out, name, report::rao_chart_script(name, result, terminal));
   out.write("report.md", report::rao_markdown(result, checks, context, true) + report::charts_markdown(out));
@@ -128,6 +160,8 @@ int run_rao(const RaoOptions& options) {
     check_request.periods = parse_list("--check-periods", options.check_periods, max_period, "s");
     check_request.wave_height = options.check_wave_height;
     check_request.tolerance = parse_tolerance(options.tolerance);
+    request.refine_peaks = !options.no_refine_peaks;
+    request.sea_spectrum = sea_spectrum(options.spectrum, *scene);
   } catch (const BadOption& error) {
     return bad_input(error.what());
   }
@@ -152,8 +186,8 @@ int run_rao(const RaoOptions& options) {
     if (options.check_time_domain) {
       for (const study::ModelRao& model : result.models) {
         running = model.choice.label();
-        checks.push_back(study::check_time_domain(*scene, model.choice, check_request, [&](double period) {
-          progress("rao", fmt::format("time-domain check {}: {:g} s wave ...", running, period));
+        checks.push_back(study::check_time_domain(*scene, model.choice, check_request, [&](double period, double height) {
+          progress("rao", fmt::format("time-domain check {}: {:g} s wave, {:g} m high ...", running, period, height));
         }, &modes));
       }
     }
@@ -172,8 +206,10 @@ int run_rao(const RaoOptions& options) {
   if (!options.out.empty() && !options.json) fmt::print("\nwrote {} (report.md)\n", options.out);
   for (const study::TimeDomainCheck& check : checks) {
     if (!check.passed()) {
-      fmt::print(stderr, "ffrf rao: the time-domain check failed: {} deviates {:.3f} % from its RAO (tolerance {:.3f} %)\n",
-                 check.choice.label(), 100.0 * check.worst_deviation(), 100.0 * check.request.tolerance);
+      const std::string hint = report::check_hint(check);
+      fmt::print(stderr, "ffrf rao: the time-domain check failed: {} deviates {:.3f} % from its RAO (tolerance {:.3f} %){}\n",
+                 check.choice.label(), 100.0 * check.worst_deviation(), 100.0 * check.request.tolerance,
+                 hint.empty() ? "" : "; " + hint);
       return exit_failure;
     }
   }
@@ -186,7 +222,8 @@ Command add_rao_command(CLI::App& parent) {
   auto options = std::make_shared<RaoOptions>();
   CLI::App* sub = parent.add_subcommand(
       "rao", "Frequency domain: RAOs and coupled natural modes of the crane linearised about its static equilibrium, rigid, "
-             "nodal N = 16 and modal k = 2 + static booms side by side; --check-time-domain against regular-wave runs");
+             "nodal and modal k = 2 + static booms (the scene's boom.elements) side by side, the grid refined at the resonance "
+             "peaks, a sea spectrum over the charts; --check-time-domain against regular-wave runs");
   sub->add_option("scene", options->scene, "Scene file (TOML) with [hull], [boom], [cargo] and [wire]")->required();
   add_model_options(*sub, options->model);
   auto* periods = sub->add_option("--periods", options->periods,
@@ -201,6 +238,13 @@ Command add_rao_command(CLI::App& parent) {
       ->capture_default_str()
       ->check(finite_number(0.0, 10.0, "m", true));
   add_tolerance_option(*sub, options->tolerance, "the time-domain amplitudes pass when within it of the RAOs");
+  sub->add_option("--spectrum", options->spectrum,
+                  "Sea spectrum drawn over the RAO charts (second axis), with each output's significant response "
+                  "4 sqrt(int |RAO|^2 S dw): jonswap:Hs:Tp[:gamma] (gamma 3.3 unless given) or pm:Hs:Tp; none: no spectrum "
+                  "(default: the scene's own irregular sea when it has a JONSWAP or Pierson-Moskowitz one)");
+  sub->add_flag("--no-refine-peaks", options->no_refine_peaks,
+                "Evaluate the requested frequencies only (default: each model's grid is refined around its resonance peaks "
+                "until the peak amplitude is within 0.1 %)");
   sub->add_flag("--json", options->json, "Print the JSON summary on stdout instead of the text summary");
   sub->add_option("--out", options->out,
                   "Write rao_MODEL.csv per model, natural_modes.csv, report.md, summary.json, the PNG charts (with their "

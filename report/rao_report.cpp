@@ -11,6 +11,8 @@
 
 #include "report/gnuplot.hpp"
 #include "report/json.hpp"
+#include "report/rao_charts.hpp"
+#include "report/rao_resonance.hpp"
 
 namespace ffrf::report {
 namespace {
@@ -27,23 +29,18 @@ std::string unit_slug(LinearOutput output) {  // "m/m" → "m_per_m"
 }
 double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
 double period_of(double omega) { return 2.0 * std::numbers::pi / omega; }
-// The tip outputs are the boom's elastic deflection: identically zero for the rigid boom.
-bool drawn(const study::ModelRao& model, LinearOutput output) {
-  return model.choice.kind != scene::BoomKind::rigid ||
-         (output != LinearOutput::tip_axial && output != LinearOutput::tip_transverse);
+// The boom's element count as the model uses it ("rigid" for the rigid boom).
+std::string boom_elements(const scene::BoomChoice& choice) {
+  return choice.kind == scene::BoomKind::rigid ? std::string("rigid") : std::to_string(choice.elements);
 }
-
-struct Chart {
-  const char* name;
-  const char* title;
-  std::array<LinearOutput, 3> outputs;
-};
-constexpr std::array<Chart, 3> charts{{
-    {"rao_hull", "Hull RAOs", {LinearOutput::hull_surge, LinearOutput::hull_heave, LinearOutput::hull_pitch}},
-    {"rao_cargo", "Cargo RAOs", {LinearOutput::cargo_surge, LinearOutput::cargo_heave, LinearOutput::cargo_pitch}},
-    {"rao_boom_wire", "Boom tip (elastic deflection) and wire tension RAOs",
-     {LinearOutput::tip_transverse, LinearOutput::tip_axial, LinearOutput::wire_tension}},
-}};
+Json boom_elements_json(const scene::BoomChoice& choice) {
+  return choice.kind == scene::BoomKind::rigid ? Json(nullptr) : Json(choice.elements);
+}
+// "109" or "109 + 38" (the refinement's).
+std::string frequency_count(const study::ModelRao& model) {
+  const std::size_t requested = model.angular_frequencies.size() - model.added_frequencies;
+  return model.added_frequencies > 0 ? fmt::format("{} + {}", requested, model.added_frequencies) : std::to_string(requested);
+}
 
 std::string percent(double fraction) { return fmt::format("{:.3f} %", 100.0 * fraction); }
 
@@ -66,8 +63,8 @@ std::string rao_csv(const study::RaoResult& result, std::size_t model) {
     out += fmt::format(",{0}_amplitude_{1},{0}_phase_deg", name_of(output_at(k)), unit_slug(output_at(k)));
   }
   out += '\n';
-  for (std::size_t f = 0; f < result.angular_frequencies.size(); ++f) {
-    const double omega = result.angular_frequencies[f];
+  for (std::size_t f = 0; f < m.angular_frequencies.size(); ++f) {
+    const double omega = m.angular_frequencies[f];
     out += fmt::format("{:.10g},{:.10g}", period_of(omega), omega);
     for (int k = 0; k < coupling::linear_output_count; ++k) {
       const std::complex<double> value = m.response[static_cast<std::size_t>(k)][f];
@@ -130,50 +127,6 @@ std::string time_domain_check_csv(const std::vector<study::TimeDomainCheck>& che
   return out;
 }
 
-std::vector<std::string> rao_chart_names() {
-  std::vector<std::string> names;
-  for (const Chart& chart : charts) names.emplace_back(chart.name);
-  return names;
-}
-
-std::string rao_chart_script(const std::string& name, const study::RaoResult& result, const std::string& terminal) {
-  const auto chart = std::find_if(charts.begin(), charts.end(), [&](const Chart& c) { return name == c.name; });
-  if (chart == charts.end()) throw std::invalid_argument("rao_chart_script: unknown chart " + name);
-  std::string script = fmt::format(
-      "# Drawn by `ffrf rao --out`; restyle and rerun with `gnuplot {0}.gp` in this directory.\n"
-      "set terminal {1} size 1500,860 font ',11'\n"
-      "set output '{0}.png'\n"
-      "set datafile separator ','\n"
-      "set grid\n"
-      "set multiplot layout 2,3 title {2} noenhanced\n",
-      chart->name, terminal, gnuplot_quoted(std::string(chart->title) + " per metre of wave amplitude"));
-  for (const bool amplitude : {true, false}) {
-    for (const LinearOutput output : chart->outputs) {
-      const int k = static_cast<int>(output);
-      std::vector<std::string> curves;
-      for (std::size_t m = 0; m < result.models.size(); ++m) {
-        if (!drawn(result.models[m], output)) continue;
-        curves.push_back(fmt::format("'rao_{}.csv' skip 1 using 1:{} with lines lw 2 lc {} title {}",
-                                     model_slug(result.models[m].choice), amplitude ? 3 + 2 * k : 4 + 2 * k, m + 1,
-                                     gnuplot_quoted(result.models[m].choice.label())));
-      }
-      script += fmt::format("set title {} noenhanced\nset xlabel 'wave period [s]'\n",
-                            gnuplot_quoted(name_of(output) + (amplitude ? " amplitude" : " phase")));
-      script += amplitude ? fmt::format("set logscale y\nset format y '%g'\nset ylabel '[{}]'\nset yrange [*:*]\n", coupling::unit_per_amplitude(output))
-                          : "unset logscale y\nset format y '%g'\nset ylabel 'phase vs elevation at x = 0 [deg]'\nset yrange [-180:180]\n";
-      if (curves.empty()) {
-        // No curve: a linear axis for the placeholder (a log axis refuses its [0:1] range).
-        script += "unset key\nunset logscale y\nset label 1 'zero for the rigid boom' at graph 0.5, 0.5 center\n"
-                  "plot [0:1] [0:1] NaN notitle\n"
-                  "unset label 1\n";
-      } else {
-        script += fmt::format("set key opaque box bottom right font ',9'\nplot {}\n", fmt::join(curves, ", \\\n     "));
-      }
-    }
-  }
-  return script + "unset multiplot\n";
-}
-
 namespace {
 
 // The memory hull's modes Newton could not refine (study::NaturalMode::unrefined), one line each
@@ -200,13 +153,14 @@ std::string rao_markdown(const study::RaoResult& result, const std::vector<study
                      "minimal coordinates (mass, damping and stiffness from the equations' own Newton blocks; wave "
                      "excitation as the derivative of the generalized forces in the wave amplitude, central difference "
                      "of ±{:g} m). Responses per metre of wave amplitude, phase relative to the elevation at x = 0. "
-                     "{} frequencies, periods {:.4g}–{:.4g} s. Hull radiation: {}. Wall time {:.3g} s.\n\n",
+                     "{} frequencies, periods {:.4g}–{:.4g} s{}. Hull radiation: {}. Wall time {:.3g} s.\n\n",
                      context.scene_file, result.excitation_amplitude, omegas.size(), period_of(*std::max_element(omegas.begin(), omegas.end())),
-                     period_of(*std::min_element(omegas.begin(), omegas.end())),
+                     period_of(*std::min_element(omegas.begin(), omegas.end())), result.peak_search ? " and the refinement's frequencies at the resonance peaks" : "",
                      hull_hydrodynamics(result), context.wall_seconds);
-  out += "| model | coordinates | wall time [s] |\n|---|---:|---:|\n";
+  out += "| model | boom elements | coordinates | frequencies | wall time [s] |\n|---|---:|---:|---:|---:|\n";
   for (const study::ModelRao& m : result.models) {
-    out += fmt::format("| {} | {} | {:.3g} |\n", m.choice.label(), m.coordinates, m.wall_seconds);
+    out += fmt::format("| {} | {} | {} | {} | {:.3g} |\n", m.choice.label(), boom_elements(m.choice), m.coordinates,
+                       frequency_count(m), m.wall_seconds);
   }
   out += "\n## Coupled natural modes\n\nPeriod [s], damping ratio and the coordinate holding most of the mode's kinetic "
          "energy, lowest modes first.\n\n| mode |";
@@ -239,15 +193,18 @@ std::string rao_markdown(const study::RaoResult& result, const std::vector<study
       const auto& values = m.response[static_cast<std::size_t>(k)];
       const auto peak = std::max_element(values.begin(), values.end(),
                                          [](auto a, auto b) { return std::abs(a) < std::abs(b); });
-      out += drawn(m, output_at(k)) ? fmt::format(" {:.4g} at {:.4g} s |", std::abs(*peak),
-                                                  period_of(omegas[static_cast<std::size_t>(peak - values.begin())]))
-                                    : " 0 (rigid) |";
+      out += rao_drawn(m, output_at(k)) ? fmt::format(" {:.4g} at {:.4g} s |", std::abs(*peak),
+                                                      period_of(m.angular_frequencies[static_cast<std::size_t>(peak - values.begin())]))
+                                        : " 0 (rigid) |";
     }
     out += '\n';
   }
+  out += resonance_markdown(result);
   if (with_charts) {
-    out += "\n## Charts\n\n";
-    for (const Chart& chart : charts) out += fmt::format("![{}]({}.png)\n\n", chart.title, chart.name);
+    out += "\n## Charts\n\nDashed vertical lines: the resonant coupled natural periods, in each model's colour";
+    out += result.sea ? fmt::format("; dotted grey on the right axis: the sea spectrum ({}).\n\n", spectrum_label(result.sea->spectrum))
+                      : ".\n\n";
+    for (const std::string& name : rao_chart_names()) out += fmt::format("![{}]({}.png)\n\n", rao_chart_title(name), name);
   }
   out += "\n## Time-domain check\n\n";
   if (checks.empty()) return out + "Not run (`--check-time-domain` runs it).\n";
@@ -287,6 +244,9 @@ std::string rao_markdown(const study::RaoResult& result, const std::vector<study
       }
     }
   }
+  std::string diagnosis;
+  for (const auto& check : checks) diagnosis += check_diagnosis(check, "- ");
+  if (!diagnosis.empty()) out += "\nWhy the failed periods fail (each run again at half the wave height):\n\n" + diagnosis;
   return out;
 }
 
@@ -298,9 +258,19 @@ std::string rao_json(const study::RaoResult& result, const std::vector<study::Ti
             {"frequency_dependent_hydrodynamics", result.frequency_dependent_hydrodynamics},
             {"hull_hydrodynamics", hull_hydrodynamics(result)},
             {"angular_frequencies_rad_per_s", result.angular_frequencies}};
+  if (result.peak_search) {
+    json["peak_refinement"] = {{"tolerance", result.peak_search->tolerance}, {"max_steps", result.peak_search->max_steps},
+                               {"window_zeta_omega", result.peak_search->window}};
+  }
+  if (result.sea) {
+    json["sea"] = {{"spectrum", spectrum_label(result.sea->spectrum)}, {"m0_m2", result.sea->m0},
+                   {"share_of_m0_in_band", result.sea->band_share()}};
+  }
   json["models"] = Json::array();
   for (const study::ModelRao& m : result.models) {
-    Json model{{"model", m.choice.label()}, {"coordinates", m.coordinates}, {"wall_s", m.wall_seconds}, {"natural_modes", Json::array()}};
+    Json model{{"model", m.choice.label()}, {"boom_elements", boom_elements_json(m.choice)}, {"coordinates", m.coordinates},
+               {"wall_s", m.wall_seconds}, {"angular_frequencies_rad_per_s", m.angular_frequencies},
+               {"added_frequencies", m.added_frequencies}, {"natural_modes", Json::array()}};
     for (const study::NaturalMode& mode : m.modes) {
       model["natural_modes"].push_back({{"angular_frequency_rad_per_s", mode.angular_frequency},
                                         {"period_s", mode.period()},
@@ -318,6 +288,7 @@ std::string rao_json(const study::RaoResult& result, const std::vector<study::Ti
       raos[name_of(output_at(k))] = {{"unit", coupling::unit_per_amplitude(output_at(k))}, {"amplitude", amplitude}, {"phase_deg", phase}};
     }
     model["rao"] = std::move(raos);
+    add_resonance_json(model, m, result);
     json["models"].push_back(std::move(model));
   }
   Json check_json = Json::array();
@@ -325,11 +296,21 @@ std::string rao_json(const study::RaoResult& result, const std::vector<study::Ti
     Json entry{{"model", check.choice.label()}, {"tolerance", check.request.tolerance}, {"wave_height_m", check.request.wave_height},
                {"integrator_tolerance", check.request.relative_tolerance}, {"worst_deviation", check.worst_deviation()},
                {"passed", check.passed()}, {"periods", Json::array()}};
+    if (const auto height = check.suggested_wave_height()) entry["suggested_wave_height_m"] = *height;
     for (const auto& p : check.periods) {
       Json period{{"period_s", p.period}, {"duration_s", p.duration}, {"window_start_s", p.window_start},
                   {"fitted_free_modes", p.fitted_modes}, {"steps", p.stats.steps},
                   {"function_evaluations", p.stats.function_evaluations}, {"wall_s", p.stats.wall_seconds},
                   {"channels", Json::array()}};
+      if (p.nearest_mode) {
+        period["nearest_resonant_mode"] = {{"dominant", p.nearest_mode->dominant}, {"period_s", p.nearest_mode->period()},
+                                           {"damping_ratio", p.nearest_mode->damping_ratio},
+                                           {"in_half_power_band", p.in_half_power_band}};
+      }
+      if (p.probe) {
+        period["half_height_probe"] = {{"wave_height_m", p.probe->wave_height}, {"worst_deviation", p.probe->worst_deviation},
+                                       {"exponent", p.probe->exponent}, {"amplitude_dependent", p.amplitude_dependent()}};
+      }
       for (const auto& c : p.channels) {
         period["channels"].push_back({{"output", name_of(c.output)}, {"rao_amplitude", c.frequency_domain},
                                       {"time_domain_amplitude", c.time_domain}, {"deviation", c.deviation()},
@@ -351,7 +332,8 @@ std::string rao_text(const study::RaoResult& result, const std::vector<study::Ti
                                 period_of(*std::min_element(result.angular_frequencies.begin(), result.angular_frequencies.end())),
                                 context.wall_seconds, hull_hydrodynamics(result));
   for (const study::ModelRao& m : result.models) {
-    out += fmt::format("\n{} ({} coordinates): coupled natural modes\n", m.choice.label(), m.coordinates);
+    out += fmt::format("\n{} ({} coordinates, boom elements {}, frequencies {}): coupled natural modes\n", m.choice.label(),
+                       m.coordinates, boom_elements(m.choice), frequency_count(m));
     for (std::size_t j = 0; j < std::min<std::size_t>(shown_modes, m.modes.size()); ++j) {
       const study::NaturalMode& mode = m.modes[j];
       out += fmt::format("  {:>2}  T = {:>9.4f} s  omega = {:>9.4f} rad/s  zeta = {:>7.3f} %  {}{}\n", j + 1, mode.period(),
@@ -360,9 +342,11 @@ std::string rao_text(const study::RaoResult& result, const std::vector<study::Ti
     }
   }
   if (const std::string unrefined = unrefined_modes(result, "warning: "); !unrefined.empty()) out += "\n" + unrefined;
+  out += resonance_text(result);
   for (const auto& check : checks) {
     out += fmt::format("\ntime-domain check {}: {} (worst amplitude deviation {} against {})\n", check.choice.label(),
                        check.passed() ? "PASS" : "FAIL", percent(check.worst_deviation()), percent(check.request.tolerance));
+    out += check_diagnosis(check, "  ");
   }
   return out;
 }

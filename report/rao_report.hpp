@@ -1,9 +1,9 @@
 // What `ffrf rao` writes: per model a CSV of the RAOs (period, ω, then amplitude and phase of every
 // output per metre of wave amplitude; column names carry units), the natural modes CSV, the
 // Markdown report (provenance, coupled natural frequencies and damping ratios side by side, the
-// largest RAOs, the time-domain check's verdict when it ran), the JSON summary, and the gnuplot
-// scripts of the charts (amplitude on a log scale and phase against period, models overlaid):
-// rao_hull.png, rao_cargo.png, rao_boom_wire.png. Formatting only.
+// largest RAOs, the resonance peaks and the sea's significant responses (report/rao_resonance.hpp),
+// the time-domain check's verdict when it ran), the JSON summary; the charts are
+// report/rao_charts.hpp's. Formatting only.
 #pragma once
 
 #include <optional>
@@ -29,10 +29,6 @@ std::string rao_csv(const study::RaoResult& result, std::size_t model);
 std::string natural_modes_csv(const study::RaoResult& result);
 // The time-domain check: model, period_s, output, rao_amplitude, time_domain_amplitude, deviation, ...
 std::string time_domain_check_csv(const std::vector<study::TimeDomainCheck>& checks);
-
-// The chart names (without .gp/.png) and their scripts.
-std::vector<std::string> rao_chart_names();
-std::string rao_chart_script(const std::string& name, const study::RaoResult& result, const std::string& terminal);
 
 std::string rao_markdown(const study::RaoResult& result, const std::vector<study::TimeDomainCheck>& checks,
                          const RaoContext& context, bool charts);

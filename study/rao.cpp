@@ -50,12 +50,6 @@ std::string dominant_coordinate(const LinearisedCrane& linear, const Eigen::Vect
   return boom_share > best_share ? "boom" : best;
 }
 
-}  // namespace
-
-double NaturalMode::period() const { return 2.0 * std::numbers::pi / angular_frequency; }
-
-namespace {
-
 struct RootAndShape {
   std::complex<double> root;
   Eigen::VectorXcd shape;
@@ -169,9 +163,10 @@ Eigen::VectorXcd frequency_response(const Eigen::MatrixXd& mass, const Eigen::Ma
   return lu.solve(force);
 }
 
-std::vector<scene::BoomChoice> rao_models() {
+std::vector<scene::BoomChoice> rao_models(const scene::Scene& scene) {
   using scene::BoomKind;
-  return {{BoomKind::rigid, 1}, {BoomKind::nodal, 16}, {BoomKind::modal, 16, 2, true}};
+  const int elements = scene.boom.mesh.element_count;
+  return {{BoomKind::rigid, 1}, {BoomKind::nodal, elements}, {BoomKind::modal, elements, 2, true}};
 }
 
 scene::Scene with_regular_wave(const scene::Scene& scene, double height, double period, double ramp_periods) {
@@ -184,6 +179,16 @@ scene::Scene with_regular_wave(const scene::Scene& scene, double height, double 
 }
 
 namespace {
+
+// The outputs whose resonance peaks are refined: all but the rigid boom's tip deflection (zero).
+std::vector<bool> searched_outputs(const scene::BoomChoice& choice) {
+  std::vector<bool> searched(coupling::linear_output_count, true);
+  if (choice.kind == scene::BoomKind::rigid) {
+    searched[static_cast<std::size_t>(coupling::LinearOutput::tip_axial)] = false;
+    searched[static_cast<std::size_t>(coupling::LinearOutput::tip_transverse)] = false;
+  }
+  return searched;
+}
 
 void require_crane(const scene::Scene& scene) {
   if (!scene.is_crane()) {
@@ -233,6 +238,7 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
   RaoResult result;
   result.angular_frequencies = request.angular_frequencies;
   result.excitation_amplitude = request.excitation_amplitude;
+  if (request.refine_peaks) result.peak_search = request.peak_search;
   result.frequency_dependent_hydrodynamics = static_cast<bool>(request.hydrodynamics) || static_cast<bool>(impedance);
   if (impedance) {
     result.bem_radiation = request.bem_radiation;
@@ -245,7 +251,7 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
   // the same model in that regular wave (scene::with_waters: the hull and wave replaced, the boom not
   // rebuilt); A(ω), B(ω), X(ω) of the hull enter per frequency below.
   scene::CraneModelCache models(calm, &cache);
-  for (const scene::BoomChoice& choice : request.models.empty() ? rao_models() : request.models) {
+  for (const scene::BoomChoice& choice : request.models.empty() ? rao_models(scene) : request.models) {
     if (progress) progress(choice.label());
     const auto start = std::chrono::steady_clock::now();
     PreparedRun prepared = prepare_run(models, choice);
@@ -256,7 +262,8 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
     model.choice = choice;
     model.coordinates = linear.size();
     model.modes = model_impedance && request.memory_natural_modes ? natural_modes(linear, model_impedance, refine_below) : natural_modes(linear);
-    for (const double omega : request.angular_frequencies) {
+    // The outputs Y = (G + iωH) X at ω.
+    const OutputResponse response_at = [&](double omega) -> Eigen::VectorXcd {
       const auto waved = scene::with_waters(*calm_model, with_regular_wave(scene, 2.0 * a, 2.0 * std::numbers::pi / omega, 0.0))->equations();
       Eigen::VectorXcd force = coupling::wave_excitation(*waved, linear, omega, a);
       Eigen::MatrixXd mass = linear.mass, damping = linear.damping;
@@ -275,12 +282,35 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
         damping.block<3, 3>(linear.hull_at, linear.hull_at) += z.imag() / omega;
       }
       const Eigen::VectorXcd motion = frequency_response(mass, damping, linear.stiffness, force, omega);
-      const Eigen::VectorXcd response = outputs.position.cast<std::complex<double>>() * motion +
-                                        std::complex<double>(0.0, omega) * (outputs.velocity.cast<std::complex<double>>() * motion);
+      return outputs.position.cast<std::complex<double>>() * motion +
+             std::complex<double>(0.0, omega) * (outputs.velocity.cast<std::complex<double>>() * motion);
+    };
+    std::vector<Eigen::VectorXcd> responses;
+    for (const double omega : request.angular_frequencies) responses.push_back(response_at(omega));
+    model.angular_frequencies = request.angular_frequencies;
+    if (request.refine_peaks) {
+      RefinedResponse refined = refine_resonance_peaks(request.angular_frequencies, responses, model.modes, response_at,
+                                                       searched_outputs(choice), request.peak_search);
+      model.angular_frequencies = std::move(refined.angular_frequencies);
+      responses = std::move(refined.responses);
+      model.peaks = std::move(refined.peaks);
+      model.added_frequencies = refined.added;
+    }
+    for (const Eigen::VectorXcd& response : responses) {
       for (int k = 0; k < coupling::linear_output_count; ++k) model.response[static_cast<std::size_t>(k)].push_back(response(k));
+    }
+    if (request.sea_spectrum) {
+      for (int k = 0; k < coupling::linear_output_count; ++k) {
+        model.significant_response[static_cast<std::size_t>(k)] =
+            significant_response(model.angular_frequencies, model.response[static_cast<std::size_t>(k)], *request.sea_spectrum);
+      }
     }
     model.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.models.push_back(std::move(model));
+  }
+  if (request.sea_spectrum) {
+    const auto [low, high] = std::minmax_element(request.angular_frequencies.begin(), request.angular_frequencies.end());
+    result.sea = sea_weighting(*request.sea_spectrum, *low, *high);
   }
   return result;
 }

@@ -10,7 +10,8 @@
 // files' A(ω), B(ω), or the radiation model's kernel), its excitation is the .3 file's through the
 // waved crane, and its natural modes are the memory hull's roots of det(s²M + sC + K + Z(s)). Natural frequencies and damping ratios of the coupled system from
 // the eigenvalues λ of the first-order form of M ẍ + C ẋ + K x = 0: ω_n = |λ|, ζ = −Re λ / |λ|.
-// Rigid, nodal and modal booms side by side (rao_models()).
+// Rigid, nodal and modal booms side by side (rao_models(scene)); with a request to, each model's grid refined around its resonance peaks
+// (study/rao_peaks.hpp) and its significant responses in a sea spectrum (study/rao_spectrum.hpp).
 #pragma once
 
 #include <Eigen/Core>
@@ -25,7 +26,10 @@
 #include "modal/mode_cache.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
+#include "study/natural_mode.hpp"
 #include "study/rao_bem.hpp"
+#include "study/rao_peaks.hpp"
+#include "study/rao_spectrum.hpp"
 
 namespace ffrf::study {
 
@@ -39,17 +43,6 @@ struct HullFrequencyTerms {
 };
 // ω [rad/s] → the hull's frequency-dependent terms. Empty function: the model's constant coefficients.
 using HullHydrodynamics = std::function<HullFrequencyTerms(double angular_frequency)>;
-
-// One natural mode of the linearised coupled system.
-struct NaturalMode {
-  double angular_frequency = 0.0;  // |λ| [rad/s]
-  double damping_ratio = 0.0;      // −Re λ / |λ| [-]
-  std::string dominant;            // the coordinate with the largest share of the mode's kinetic energy ("hull heave", "boom")
-  // A memory hull's mode that Newton could not refine (natural_modes with an impedance): why — the
-  // mode is then the constant system's root, not a root of det D(s). Empty: refined, or not asked to be.
-  std::string unrefined;
-  double period() const;           // 2π / ω_n [s]
-};
 
 // M, C, K: the natural modes, lowest first (one per complex pair; overdamped ones as real roots).
 std::vector<NaturalMode> natural_modes(const coupling::LinearisedCrane& linear);
@@ -74,7 +67,7 @@ std::vector<NaturalMode> coupled_natural_modes(const scene::Scene& scene, const 
                                                modal::ModeCache* modes = nullptr);
 
 struct RaoRequest {
-  std::vector<scene::BoomChoice> models;  // empty: rao_models()
+  std::vector<scene::BoomChoice> models;  // empty: rao_models(scene)
   std::vector<double> angular_frequencies;  // [rad/s], each > 0
   HullHydrodynamics hydrodynamics;        // empty: the constant coefficients of the scene, or its [bem] files
   // A [bem] scene without `hydrodynamics`: the hull's radiation from the files (the physical RAO) or as
@@ -84,22 +77,36 @@ struct RaoRequest {
   // memory hull; kept to show what the time-domain check's fit needs, docs/hydrodynamics.md §6.1).
   bool memory_natural_modes = true;
   double excitation_amplitude = 0.01;     // wave amplitude of the excitation's central difference [m]
+  // Refine each model's grid around its resonance peaks (study/rao_peaks.hpp); false: the requested
+  // frequencies only, in the order given.
+  bool refine_peaks = false;
+  PeakSearch peak_search;
+  // A sea spectrum to weigh the RAOs with: each model's significant responses (study/rao_spectrum.hpp).
+  std::optional<hydro::WaveSpectrum> sea_spectrum;
 };
 
-// rigid; nodal N = 16; modal k = 2 + static modes on N = 16 (the set `compare` plots).
-std::vector<scene::BoomChoice> rao_models();
+// rigid; nodal N; modal k = 2 + static modes on N, with N the scene's boom.elements (as `ffrf run`
+// builds the boom unless told otherwise).
+std::vector<scene::BoomChoice> rao_models(const scene::Scene& scene);
 
 struct ModelRao {
   scene::BoomChoice choice;
   int coordinates = 0;  // minimal coordinates n
   std::vector<NaturalMode> modes;
+  // The model's frequencies [rad/s]: the requested ones (in their order), or with refine_peaks the
+  // requested ones and the refinement's, ascending.
+  std::vector<double> angular_frequencies;
   // response[output][frequency index], per metre of wave amplitude (LinearOutput order)
   std::array<std::vector<std::complex<double>>, coupling::linear_output_count> response;
+  std::vector<ResonancePeak> peaks;  // refine_peaks: each output's peak at each resonant mode in the band (output = LinearOutput)
+  std::size_t added_frequencies = 0;  // refine_peaks: frequencies the refinement added
+  // sea_spectrum: 4 √(∫ |Y(ω)|² S(ω) dω) per output over the model's frequencies (LinearOutput order)
+  std::array<double, coupling::linear_output_count> significant_response{};
   double wall_seconds = 0.0;
 };
 
 struct RaoResult {
-  std::vector<double> angular_frequencies;  // [rad/s], as requested
+  std::vector<double> angular_frequencies;  // [rad/s], as requested (each model's own grid: ModelRao)
   double excitation_amplitude = 0.0;
   bool frequency_dependent_hydrodynamics = false;
   // [bem] scenes: where A(ω), B(ω) came from, and the time domain's radiation model (whose kernel gives
@@ -109,6 +116,8 @@ struct RaoResult {
   std::string bem_radiation_file;   // the .1 file
   std::string bem_excitation_file;  // the .3 file when it owns the excitation (excitation = "bem"), else empty
   std::vector<ModelRao> models;
+  std::optional<PeakSearch> peak_search;  // refine_peaks: the search's settings; empty: not refined
+  std::optional<SeaWeighting> sea;  // sea_spectrum: the spectrum and its share inside the frequencies
 };
 
 // The scene must float a crane (hull) in water. Throws scene::SceneError (the scene cannot make

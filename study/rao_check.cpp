@@ -80,16 +80,37 @@ std::vector<LinearOutput> checked_outputs() {
   return {LinearOutput::hull_heave, LinearOutput::hull_pitch, LinearOutput::cargo_heave};
 }
 
-double TimeDomainCheck::worst_deviation() const {
+double PeriodCheck::worst_deviation() const {
   double worst = 0.0;
-  for (const PeriodCheck& period : periods) {
-    for (const ChannelCheck& channel : period.channels) worst = std::max(worst, std::abs(channel.deviation()));
-  }
+  for (const ChannelCheck& channel : channels) worst = std::max(worst, std::abs(channel.deviation()));
   return worst;
 }
 
+bool PeriodCheck::amplitude_dependent() const {
+  return probe && probe->worst_deviation <= amplitude_dependent_ratio * worst_deviation();
+}
+
+double TimeDomainCheck::worst_deviation() const {
+  double worst = 0.0;
+  for (const PeriodCheck& period : periods) worst = std::max(worst, period.worst_deviation());
+  return worst;
+}
+
+std::optional<double> TimeDomainCheck::suggested_wave_height() const {
+  std::optional<double> height;
+  for (const PeriodCheck& period : periods) {
+    if (period.worst_deviation() <= request.tolerance || !period.amplitude_dependent()) continue;
+    const double exponent = std::clamp(period.probe->exponent, 1.0, 3.0);
+    const double scaled = request.wave_height * std::pow(0.5 * request.tolerance / period.worst_deviation(), 1.0 / exponent);
+    height = std::min(height.value_or(scaled), scaled);
+  }
+  if (!height) return height;
+  const double unit = std::pow(10.0, std::floor(std::log10(*height)) - 1.0);  // two significant digits, rounded down
+  return std::floor(*height / unit) * unit;
+}
+
 TimeDomainCheck check_time_domain(const scene::Scene& scene, const scene::BoomChoice& choice,
-                                  const TimeDomainCheckRequest& request, const std::function<void(double)>& progress,
+                                  const TimeDomainCheckRequest& request, const std::function<void(double, double)>& progress,
                                   modal::ModeCache* modes) {
   if (request.periods.empty()) throw std::invalid_argument("no wave period to check the time domain at");
   for (const double period : request.periods) {
@@ -117,11 +138,11 @@ TimeDomainCheck check_time_domain(const scene::Scene& scene, const scene::BoomCh
     linear_request.bem_radiation = BemRadiationSource::model;
     model_linear = response_amplitude_operators(scene, linear_request, {}, &cache);
   }
-  const double amplitude = 0.5 * request.wave_height;
-  for (std::size_t p = 0; p < request.periods.size(); ++p) {
-    const double period = request.periods[p], omega = linear.angular_frequencies[p];
-    if (progress) progress(period);
-    scene::Scene waved = with_regular_wave(scene, request.wave_height, period, request.ramp_periods);
+  // One regular-wave run at a period and height, its channels fitted against the RAOs.
+  const auto run_period = [&](std::size_t p, double height) {
+    const double period = request.periods[p], omega = linear.angular_frequencies[p], amplitude = 0.5 * height;
+    if (progress) progress(period, height);
+    scene::Scene waved = with_regular_wave(scene, height, period, request.ramp_periods);
     waved.simulation.output_interval = period / samples_per_period;
     if (scene.bem) {  // the memory's recording step: no coarser than the kernel's
       waved.simulation.output_interval = period / std::ceil(period / std::min(period / samples_per_period, scene.bem->kernel_time_step));
@@ -168,6 +189,25 @@ TimeDomainCheck check_time_domain(const scene::Scene& scene, const scene::BoomCh
       channel.phase_difference = wrapped(std::arg(fitted) - std::arg(expected));
       channel.fit_residual = residual / std::abs(fitted);
       result.channels.push_back(channel);
+    }
+    return result;
+  };
+  for (std::size_t p = 0; p < request.periods.size(); ++p) {
+    PeriodCheck result = run_period(p, request.wave_height);
+    const double omega = linear.angular_frequencies[p];
+    for (const NaturalMode& mode : rao.modes) {
+      if (!mode.resonant()) continue;
+      const auto distance = [omega](const NaturalMode& m) { return std::abs(std::log(m.angular_frequency / omega)); };
+      if (!result.nearest_mode || distance(mode) < distance(*result.nearest_mode)) result.nearest_mode = mode;
+    }
+    result.in_half_power_band = result.nearest_mode && result.nearest_mode->in_half_power_band(omega);
+    if (request.probe_nonlinearity && result.worst_deviation() > request.tolerance) {
+      const PeriodCheck half = run_period(p, 0.5 * request.wave_height);
+      NonlinearityProbe probe{0.5 * request.wave_height, half.worst_deviation(), 0.0};
+      if (probe.worst_deviation > 0.0 && probe.worst_deviation < result.worst_deviation()) {
+        probe.exponent = std::log2(result.worst_deviation() / probe.worst_deviation);
+      }
+      result.probe = probe;
     }
     check.periods.push_back(std::move(result));
   }

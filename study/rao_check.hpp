@@ -16,6 +16,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@
 #include "modal/mode_cache.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
+#include "study/natural_mode.hpp"
 
 namespace ffrf::study {
 
@@ -35,6 +37,8 @@ struct TimeDomainCheckRequest {
   double relative_tolerance = 1e-8;  // of the integrator (CVODE BDF, minimal coordinates)
   double tolerance = 0.01;     // relative amplitude deviation that passes
   bool memory_free_modes = true;  // [bem]: fit the memory hull's own free modes (false: the constant system's)
+  // A period that fails is run again at half the wave height (nonlinearity_probe below).
+  bool probe_nonlinearity = true;
 };
 
 // The judged channels: hull heave and pitch, cargo heave.
@@ -53,6 +57,21 @@ struct ChannelCheck {
   double model_deviation() const { return model_frequency_domain > 0.0 ? time_domain / model_frequency_domain - 1.0 : 0.0; }
 };
 
+// Why a period may fail: the linear theory's error of a small wave grows with its height (the hull
+// pressure on the moving wetted box, the wire's and the cargo's swing are nonlinear), a numerical
+// error (integrator tolerance, the fit) does not. A failed period is run again at half the height:
+// the deviation is amplitude-dependent when it falls to at most `amplitude_dependent_ratio` of the
+// full height's (a quadratic error falls to 1/4, a linear one to 1/2). Near a resonance the
+// response to a given wave is largest, so the nearest resonant mode is named, and whether the
+// period lies inside its half-power band.
+constexpr double amplitude_dependent_ratio = 0.6;
+
+struct NonlinearityProbe {
+  double wave_height = 0.0;      // the probe's (half the check's) [m]
+  double worst_deviation = 0.0;  // max |deviation| over the channels at that height
+  double exponent = 0.0;         // p of deviation ∝ Hᵖ, log₂(full / half) (0 when the deviation did not fall)
+};
+
 struct PeriodCheck {
   double period = 0.0;  // [s]
   double duration = 0.0;  // simulated [s]
@@ -60,6 +79,12 @@ struct PeriodCheck {
   int fitted_modes = 0;   // free modes in the fit basis
   std::vector<ChannelCheck> channels;
   coupling::SolverStats stats;
+  std::optional<NaturalMode> nearest_mode;  // the resonant natural mode nearest in frequency
+  bool in_half_power_band = false;          // the wave's ω within the nearest mode's half-power band
+  std::optional<NonlinearityProbe> probe;   // a failed period with probe_nonlinearity
+  double worst_deviation() const;           // max |deviation| over the channels
+  // The failure shrinks with the wave height (see above).
+  bool amplitude_dependent() const;
 };
 
 struct TimeDomainCheck {
@@ -68,12 +93,16 @@ struct TimeDomainCheck {
   std::vector<PeriodCheck> periods;
   double worst_deviation() const;  // max |deviation| over every period and channel
   bool passed() const { return worst_deviation() <= request.tolerance; }
+  // The largest wave height [m] (two significant digits, rounded down) at which every
+  // amplitude-dependent failed period is expected to deviate at most half the tolerance, by its
+  // measured deviation ∝ Hᵖ (p clamped to [1, 3]); empty when no failed period is amplitude-dependent.
+  std::optional<double> suggested_wave_height() const;
 };
 
 // Throws scene::SceneError, coupling::SolverFailure, std::invalid_argument (a period ≤ 0, a wave
-// height ≤ 0, a tolerance outside (0, 1)). `progress` is told each period as it starts.
+// height ≤ 0, a tolerance outside (0, 1)). `progress` is told each run's period and wave height as it starts.
 TimeDomainCheck check_time_domain(const scene::Scene& scene, const scene::BoomChoice& choice,
                                   const TimeDomainCheckRequest& request,
-                                  const std::function<void(double period)>& progress = {}, modal::ModeCache* modes = nullptr);
+                                  const std::function<void(double period, double wave_height)>& progress = {}, modal::ModeCache* modes = nullptr);
 
 }  // namespace ffrf::study

@@ -118,6 +118,7 @@ TEST(RaoReport, ModesNewtonDidNotRefineAreFlaggedWithTheReason) {
   model.choice = {scene::BoomKind::rigid, 1};
   model.coordinates = 6;
   model.modes = {{0.6, 0.05, "hull heave", ""}, {0.9, 0.02, "hull pitch", "did not converge in 0 steps"}};
+  model.angular_frequencies = result.angular_frequencies;
   for (auto& values : model.response) values = {{1.0, 0.0}, {0.5, 0.1}};
   result.models.push_back(model);
   const report::RaoContext context{"barge.toml", "barge", 1.0};
