@@ -11,6 +11,7 @@
 //  * the regular-wave run settles to the RAO (study/rao_check.hpp, hull heave and pitch, cargo heave).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -125,16 +126,20 @@ TEST(BemAsymmetry, RaoIsTheDirectSolveWithTheFilesExcitation) {
   const Eigen::MatrixXcd dynamic = (-omega * omega) * linear.mass.cast<Complex>() + Complex(0.0, omega) * linear.damping.cast<Complex>() +
                                    linear.stiffness.cast<Complex>();
   const Eigen::VectorXcd motion = dynamic.partialPivLu().solve(force);
-  // Hull and cargo (surge, heave, pitch) are coordinates 0–5: their outputs are the coordinates themselves.
-  double worst = 0.0;
+  // Hull and cargo (surge, heave, pitch) are coordinates 0–5, and their outputs the coordinates
+  // themselves — through `rao`'s output map, central differences with a 1e-6 step: exact to round-off
+  // for the hull at G1 near the origin, to ε·60 m / 1e-6 m ≈ 1e-8 for the cargo 60 m away.
+  double hull = 0.0, cargo = 0.0;
   for (int j = 0; j < 6; ++j) {
     const Complex got = rao.models.front().response[static_cast<std::size_t>(j)].front();
+    double& worst = j < 3 ? hull : cargo;
     worst = std::max(worst, std::abs(got - motion(j)) / std::abs(motion(j)));
     std::printf("%s: rao %.9e%+.9ei, direct %.9e%+.9ei\n", std::string(coupling::to_string(static_cast<coupling::LinearOutput>(j))).c_str(),
                 got.real(), got.imag(), motion(j).real(), motion(j).imag());
   }
-  std::printf("largest relative difference rao/direct: %.2e\n", worst);
-  EXPECT_LT(worst, 1e-9);
+  std::printf("largest relative difference rao/direct: hull %.2e, cargo %.2e\n", hull, cargo);
+  EXPECT_LT(hull, 1e-10);
+  EXPECT_LT(cargo, 1e-8);
 }
 
 TEST(BemAsymmetry, CvodeAndIdaAgreeInASmallRegularWave) {
@@ -158,7 +163,7 @@ TEST(BemAsymmetry, CvodeAndIdaAgreeInASmallRegularWave) {
       gap = std::max(gap, std::abs(cvode.result.samples[i].hull(dof) - ida.result.samples[i].hull(dof)));
     }
     std::printf("hull dof %d: amplitude %.4e, CVODE − IDA %.2e (%.1e of it)\n", dof, amplitude, gap, gap / amplitude);
-    EXPECT_LT(gap, 1e-4 * amplitude) << "hull dof " << dof;
+    EXPECT_LT(gap, 1e-4 * amplitude) << "hull dof " << dof;  // measured 1.2e-5 (surge) and below
   }
 }
 
@@ -172,7 +177,7 @@ TEST(BemAsymmetry, TheRegularWaveRunSettlesToTheRao) {
     for (const auto& c : period.channels) {
       std::printf("%-11s RAO %.6g time domain %.6g: deviation %+.2e, phase %+.1e rad\n", std::string(coupling::to_string(c.output)).c_str(),
                   c.frequency_domain, c.time_domain, c.deviation(), c.phase_difference);
-      EXPECT_LT(std::abs(c.deviation()), 2e-3) << coupling::to_string(c.output);
+      EXPECT_LT(std::abs(c.deviation()), 2e-3) << coupling::to_string(c.output);  // measured ≤ 4.9e-4
       EXPECT_LT(std::abs(c.phase_difference), 2e-3) << coupling::to_string(c.output);
     }
   }
