@@ -24,6 +24,7 @@ struct Command {
 Command add_check_command(CLI::App& parent);            // command_check.cpp
 Command add_modes_command(CLI::App& parent);            // command_modes.cpp
 Command add_run_command(CLI::App& parent);              // command_run.cpp
+Command add_statics_command(CLI::App& parent);          // command_statics.cpp
 Command add_compare_command(CLI::App& parent);          // command_compare.cpp
 Command add_sweep_command(CLI::App& parent);            // command_sweep.cpp
 Command add_stability_command(CLI::App& parent);        // command_stability.cpp

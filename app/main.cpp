@@ -1,4 +1,4 @@
-// `ffrf`: the floating-crane toolkit's command-line program (DESIGN.md §5). One file per
+// `ffrf`: the floating-crane toolkit's command-line program (docs/architecture.md). One file per
 // subcommand; this file wires them to CLI11, installs the SIGINT/SIGTERM handling, and maps every
 // error to a message and an exit code (commands.hpp): no bare library message (std::bad_alloc, a
 // std::logic_error's text, a filesystem error) reaches the user.
@@ -69,6 +69,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", version_text(), "Print the version, the git commit and the build's features (MPI)");
   app.require_subcommand(1);
   std::vector<Command> commands{add_check_command(app), add_modes_command(app), add_run_command(app),
+                                add_statics_command(app),
                                 add_compare_command(app), add_sweep_command(app),
                                 add_stability_command(app),
                                 add_recommend_command(app),

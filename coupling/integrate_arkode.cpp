@@ -5,6 +5,14 @@
 // them before overflow: the kinetic energy must stay below 10⁶ × (E_ref + E_floor), E_ref the kinetic
 // energy at the first output, E_floor = ½ Σ M_ii (1 s⁻¹)² (every coordinate moving at one unit per
 // second). The failure names the linearized stability limit (explicit_stable_step).
+// Adaptive runs on a stiff model take steps bound by stability (h ≤ h*), not accuracy: before the
+// first step, the linearized limit h* (for models up to stiff_check_max_size coordinates: a dense
+// eigenproblem of size 2n) gives the steps the run needs, N ≈ duration / h*; during the run, the
+// mean step of the steps taken so far does, every stiff_check_interval steps. A run that needs more
+// than stiff_steps_per_output steps per output interval (steps set by the boom's fastest modes, not
+// by the motion the outputs resolve) stops at once as too much work naming h* and N: an implicit
+// solver's steps follow the motion instead. (A run that merely needs more steps than its step limit
+// runs into the limit and keeps its samples, as every integrator does.)
 #include <arkode/arkode_erkstep.h>
 
 #include <Eigen/Eigenvalues>
@@ -24,6 +32,9 @@ namespace ffrf::coupling {
 namespace {
 
 constexpr double energy_growth_bound = 1e6;
+constexpr int stiff_check_max_size = 300;
+constexpr long stiff_check_interval = 1000;
+constexpr double stiff_steps_per_output = 1000.0;
 constexpr const char* solver_name = "ARKODE ERK";
 const sundials::SolverCalls erk_calls{ERKStepGetNumSteps,  ERKStepSetMaxNumSteps,    ERKStepGetCurrentStep,
                                       ERKStepGetRootInfo,  ERKStepGetReturnFlagName, {ARK_TOO_MUCH_WORK, ARK_ERR_FAILURE, ARK_CONV_FAILURE}};
@@ -35,7 +46,24 @@ struct ErkData {
   double energy_reference = 0.0;  // E_ref + E_floor
   double diverged_energy = 0.0, diverged_time = 0.0;
   sundials::CallbackGuard* guard = nullptr;  // every callback runs inside it
+  // Adaptive steps: the stiffness watch (see the file comment).
+  double output_interval = 0.0;
+  long steps = 0;
+  double stiff_mean_step = 0.0;  // > 0: the watch stopped the run with this mean step [s]
 };
+
+// Steps finer than the output interval by more than stiff_steps_per_output.
+bool stiff_for_explicit(const ErkData& data, double step) { return data.output_interval / step > stiff_steps_per_output; }
+
+// After every adaptive step: the mean step so far against the run's needs.
+int stiffness_watch(sunrealtype t, N_Vector, void* user) {
+  auto* data = static_cast<ErkData*>(user);
+  if (++data->steps % stiff_check_interval != 0 || !(t > 0.0)) return 0;
+  const double mean_step = t / static_cast<double>(data->steps);
+  if (!stiff_for_explicit(*data, mean_step)) return 0;
+  data->stiff_mean_step = mean_step;
+  return 1;
+}
 
 int erk_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
   auto* data = static_cast<ErkData*>(user);
@@ -125,6 +153,18 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
   sundials::CallbackGuard guard(solver_name, settings.work);
   ErkData data{&equations, n};
   data.guard = &guard;
+  data.output_interval = settings.output_interval;
+  // Explicit RK on a stiff model: the steps it would need, named with the limit that sets them.
+  const auto too_stiff = [&](double t, double step_limit, const std::string& measured) {
+    char cause[400];
+    std::snprintf(cause, sizeof cause,
+                  "the explicit step limit ~%.2g s (%s) needs ~%.2g steps over %g s, %.2g per output interval of %g s: "
+                  "explicit RK's steps are bound by the model's fastest modes, not by its motion",
+                  step_limit, measured.c_str(), settings.duration / step_limit, settings.duration,
+                  settings.output_interval / step_limit, settings.output_interval);
+    return SolverFailure(FailureKind::too_much_work, solver_name, cause, t,
+                         "use cvode (implicit BDF: its steps follow the motion), or fewer elements or modes", step_limit);
+  };
   {
     Eigen::VectorXd q(equations.full_size()), v(equations.full_size());
     equations.full_from_minimal(0.0, z0, Eigen::VectorXd::Zero(n), q, v);
@@ -147,8 +187,14 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
   if (fixed) {
     check(ERKStepSetFixedStep(erk, settings.fixed_step), "ERKStepSetFixedStep");
     check(ERKStepSetPostprocessStepFn(erk, energy_watch), "ERKStepSetPostprocessStepFn");
+  } else {
+    check(ERKStepSetPostprocessStepFn(erk, stiffness_watch), "ERKStepSetPostprocessStepFn");
   }
   ERKStepSetNoInactiveRootWarn(erk);
+  if (!fixed && n <= stiff_check_max_size) {  // before the first step: the linearized limit
+    const double limit = explicit_stable_step(equations, z0);
+    if (stiff_for_explicit(data, limit)) throw too_stiff(0.0, limit, "the linearized crane's fastest eigenvalue");
+  }
 
   RunResult result;
   DivergenceWatch watch(settings.monitor, solver_name);
@@ -196,6 +242,9 @@ RunResult integrate_explicit(CraneEquations& equations, const Eigen::VectorXd& z
       },
       [&] { return steps.root_direction(); },
       [&](int flag, double t) {
+        if (flag == ARK_POSTPROCESS_STEP_FAIL && data.stiff_mean_step > 0.0) {
+          throw too_stiff(t, data.stiff_mean_step, "the mean of the first " + std::to_string(data.steps) + " steps");
+        }
         if (flag == ARK_POSTPROCESS_STEP_FAIL && !guard.failed()) throw unstable(data.diverged_time, data.diverged_energy);
         guard.rethrow(t);
         if (fixed && flag != ARK_TOO_MUCH_WORK) throw unstable(t, std::numeric_limits<double>::infinity());

@@ -72,10 +72,13 @@ RunContext make_context(const std::string& scene_file, const scene::Scene& scene
 }
 
 std::string static_report(const scene::Scene& scene, const study::ModelRun& run) {
-  const coupling::StaticEquilibrium& s = run.statics;
+  return static_report(scene, run.choice, run.statics);
+}
+
+std::string static_report(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::StaticEquilibrium& s) {
   const coupling::CraneOutputs& o = s.outputs;
   std::string text = fmt::format("static equilibrium ({}; KINSOL: {} Newton iterations, scaled residual {:.2g}, {:.3g} s)\n",
-                                 run.choice.label(), s.newton_iterations, s.scaled_residual, s.wall_seconds);
+                                 choice.label(), s.newton_iterations, s.scaled_residual, s.wall_seconds);
   if (scene.hull) {
     text += fmt::format("  hull      draft {:.4f} m at mid-length, trim {:+.4f} deg (+ = bow up)\n",
                         study::draft_at_mid_length(scene, o), o.hull.z() * degrees);
@@ -93,7 +96,7 @@ std::string static_report(const scene::Scene& scene, const study::ModelRun& run)
   const double euler = study::monitor_limits(scene).buckling_load;
   text += fmt::format("  boom      root axial force {:.6g} N, {:.3g} of the Euler buckling load {:.4g} N\n",
                       o.root_axial_force, std::max(0.0, -o.root_axial_force) / euler, euler);
-  const scene::Stiffening stiffening = run.choice.stiffening.value_or(scene.boom.stiffening);
+  const scene::Stiffening stiffening = choice.stiffening.value_or(scene.boom.stiffening);
   text += stiffening == scene::Stiffening::none
               ? "  model     linear-elastic boom: geometric stiffening off (--stiffening static|centrifugal|both)\n"
               : fmt::format("  model     linear-elastic boom with {} geometric stiffening\n", scene::to_string(stiffening));
@@ -121,15 +124,9 @@ Json settings_json(const RunContext& c) {
   return json;
 }
 
-Json model_json(const scene::Scene& scene, const study::ModelRun& run) {
-  const coupling::StaticEquilibrium& s = run.statics;
+Json static_equilibrium_json(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::StaticEquilibrium& s) {
   const coupling::CraneOutputs& o = s.outputs;
-  Json json;
-  json["model"] = run.choice.label();
-  json["boom"] = scene::to_string(run.choice.kind);
-  json["elastic_dof"] = run.elastic_dof;
-  json["initial_state"] = initial_state_name(run);
-  json["static_equilibrium"] = Json{
+  return Json{
       {"hull_draft_mid_length_m", study::draft_at_mid_length(scene, o)},
       {"hull_trim_deg", o.hull.z() * degrees},
       {"hull_x_m", o.hull.x()},
@@ -149,7 +146,16 @@ Json model_json(const scene::Scene& scene, const study::ModelRun& run) {
       {"scaled_residual", s.scaled_residual},
       {"wall_time_s", s.wall_seconds},
       {"root_axial_force_N", o.root_axial_force},
-      {"geometric_stiffening", scene::to_string(run.choice.stiffening.value_or(scene.boom.stiffening))}};
+      {"geometric_stiffening", scene::to_string(choice.stiffening.value_or(scene.boom.stiffening))}};
+}
+
+Json model_json(const scene::Scene& scene, const study::ModelRun& run) {
+  Json json;
+  json["model"] = run.choice.label();
+  json["boom"] = scene::to_string(run.choice.kind);
+  json["elastic_dof"] = run.elastic_dof;
+  json["initial_state"] = initial_state_name(run);
+  json["static_equilibrium"] = static_equilibrium_json(scene, run.choice, run.statics);
   json["statistics_window"] = Json{
       {"start_s", run.window.start_s},
       {"after_ramp", run.window.after_ramp},
@@ -166,7 +172,7 @@ Json model_json(const scene::Scene& scene, const study::ModelRun& run) {
   }
   json["outputs"] = std::move(outputs);
   const coupling::MonitorLimits limits = run_limits(scene, run);
-  Json wire{{"static_tension_N", o.wire_tension},
+  Json wire{{"static_tension_N", run.statics.outputs.wire_tension},
             {"dynamic_amplification_factor", run.amplification},
             {"slack_events", run.slack_events()},
             {"taut_events", static_cast<long>(run.result.wire_events.size()) - run.slack_events()}};

@@ -28,9 +28,12 @@ std::string utc_date();
 
 // The static equilibrium in a few lines (draft and trim, tip deflection, wire, joint reaction).
 std::string static_report(const scene::Scene& scene, const study::ModelRun& run);
+std::string static_report(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::StaticEquilibrium& statics);
 
 // The settings' keys (scene, integrator, tolerances, duration, version, date).
 Json settings_json(const RunContext& context);
+// The static equilibrium's keys (summary.json's "static_equilibrium"; `ffrf statics --json`).
+Json static_equilibrium_json(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::StaticEquilibrium& statics);
 // One model's keys (model, static_equilibrium, outputs, wire, solver, ...).
 Json model_json(const scene::Scene& scene, const study::ModelRun& run);
 // One detection {kind, time_s, fatal, cause, remedy, value}.

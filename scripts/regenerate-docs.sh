@@ -76,6 +76,7 @@ example "$guide" modes-campbell "modes cases/spin_up_beam.toml --spin-range 0:20
 example "$guide" modes-axial "modes cases/cantilever.toml --axial-force -20000 --modes 3" \
   "awk '/^axial/ { print \"...\"; print; next } /^mode / { print \"...\"; table = 1 } table && NF'"
 example "$guide" run-example "run cases/paper_floating_crane.toml --integrator ida --out run-out"
+example "$guide" statics-example "statics cases/large_crane.toml"
 example "$guide" run-divergence "run cases/spin_up_beam.toml --stiffening none" "grep 'solver failure'"
 sed 's/^mass = 1.3e6 /mass = 14.0e6/' cases/paper_floating_crane.toml > heavy_cargo.toml
 example "$guide" run-newton "run heavy_cargo.toml --out out" "grep -v 'warning:\|note:'"
