@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -65,6 +66,17 @@ CraneConstants<Coords>::CraneConstants(CraneModel<Coords> crane)
       n(static_cast<int>(model.boom.elastic_size())),
       cargo_at(model.hull.fixed ? 0 : 3),
       elastic_at(cargo_at + (model.cargo.present ? 3 : 0)) {
+  // The hull's mass is read whole by the residual and the Jacobian but by its lower triangle in the
+  // LDLᵀ of the minimal-coordinate accelerations: one matrix for every path needs a symmetric added
+  // mass (scene/scene_loader.cpp makes the BEM files' symmetric when they are read).
+  if (model.hull.radiation_memory) {
+    const Eigen::Matrix3d& added = model.hull.radiation_memory->added_mass;
+    const double asymmetry = (added - added.transpose()).cwiseAbs().maxCoeff();
+    if (!(asymmetry <= 1e-12 * added.cwiseAbs().maxCoeff())) {
+      throw std::invalid_argument("the hull's radiation added mass is not symmetric (largest |A_ij − A_ji| = " +
+                                  std::to_string(asymmetry) + "): give its symmetric part (hydro::symmetrise_added_mass)");
+    }
+  }
   // Typical size of each elastic coordinate: the η_i that moves some nodal DOF by 1 cm (1 cm or
   // 0.01 rad for nodal coordinates; 0.01 / max|Φ e_i| for mass-normalized modal ones, whose units
   // are m·√kg), so tolerances mean the same physical displacement in every coordinate set.

@@ -59,6 +59,9 @@ class CraneEquations {
   virtual Eigen::VectorXd initial_guess() const = 0;  // rest pose before static equilibrium
   virtual void minimal_accelerations(double t, ConstRef z, ConstRef z_dot, Ref z_ddot) = 0;
   virtual void static_residual(ConstRef z, Ref residual) = 0;  // Q_z at rest, calm water
+  // Q_z(z, ż, t) in the waves, the right-hand side of M_z z̈ = Q_z, without solving for z̈ (the
+  // linearisation's wave excitation is this force itself).
+  virtual void minimal_generalized_forces(double t, ConstRef z, ConstRef z_dot, Ref forces) = 0;
   virtual Eigen::VectorXd static_residual_scale() const = 0;   // 1 / typical force per row
   virtual Eigen::VectorXd coordinate_scale() const = 0;        // typical size of each z
   virtual CraneOutputs minimal_outputs(double t, ConstRef z, ConstRef z_dot) = 0;

@@ -24,6 +24,10 @@ struct HullModel {
   BoxHullSection section{};                                 // box, hull frame at G1
   Eigen::Vector3d added_mass = Eigen::Vector3d::Zero();     // A11, A33, A55 (surge, heave, pitch)
   Eigen::Vector3d radiation_damping = Eigen::Vector3d::Zero();  // B11, B33, B55 [N s/m, N m s/rad]
+  // Damping beside the radiation (viscous, skin friction), per DOF at G1: F_i = −b_i v_i − q_i |v_i| v_i;
+  // kept whatever the radiation model ([radiation] or [bem]).
+  Eigen::Vector3d added_linear_damping = Eigen::Vector3d::Zero();  // b [N s/m, N s/m, N m s/rad]
+  Eigen::Vector3d quadratic_damping = Eigen::Vector3d::Zero();     // q [N s²/m², N s²/m², N m s²/rad²]
   // Radiation from BEM coefficients, referred to G1 (hydro/radiation_memory.hpp): constant A(ω_c),
   // B(ω_c), Cummins convolution or its state-space fit; its 3 × 3 added mass joins the hull's mass.
   // Empty: the diagonal added_mass and radiation_damping above.

@@ -23,6 +23,7 @@ class CraneSystem final : public CraneEquations {
   Eigen::VectorXd initial_guess() const override;
   void minimal_accelerations(double t, ConstRef z, ConstRef z_dot, Ref z_ddot) override;
   void static_residual(ConstRef z, Ref residual) override;
+  void minimal_generalized_forces(double t, ConstRef z, ConstRef z_dot, Ref forces) override;
   Eigen::VectorXd static_residual_scale() const override;
   Eigen::VectorXd coordinate_scale() const override;
   CraneOutputs minimal_outputs(double t, ConstRef z, ConstRef z_dot) override;
@@ -94,6 +95,8 @@ class CraneSystem final : public CraneEquations {
   Eigen::Matrix3d mount_jacobian() const;
   // Minimal-coordinate generalized forces (hull rows through Jᵀ, convective term included).
   void minimal_forces(double t, ConstRef z, ConstRef z_dot, bool with_wave);
+  // Q_z of the last minimal_forces: hull rows (when free), cargo rows (with a cargo), elastic rows.
+  void gather_minimal_forces(Ref forces) const;
   void split_minimal(double t, ConstRef z, ConstRef z_dot, Eigen::Vector3d& hull_q, Eigen::Vector3d& hull_v) const;
   // Boom axial force at the root from the joint reaction on the boom (tension > 0).
   double root_axial_force(const Eigen::Vector3d& reaction, double frame_angle) const {

@@ -60,6 +60,7 @@ void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q
     hull_force_(2) += load.moment;
   }
   hull_force_ -= hull.radiation_damping.cwiseProduct(hull_v);
+  hull_force_ -= (hull.added_linear_damping + hull.quadratic_damping.cwiseProduct(hull_v.cwiseAbs())).cwiseProduct(hull_v);
   if (with_wave) {  // the dynamic problem (the static one is at rest in calm water)
     if (hull.bem_excitation && m_.wave) hull_force_ += m_.wave->ramp(t) * hull.bem_excitation->at(t);
     if (radiation_.active() && hull_free()) hull_force_ -= radiation_.force(t, hull_v);
@@ -168,6 +169,8 @@ void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z
       schur -= hull_elastic_mass_ * schur_columns_;
       rhs -= hull_elastic_mass_ * schur_rhs_;
     }
+    // LDLᵀ reads the lower triangle: the hull block is symmetric because the added mass is (checked
+    // when the model is made, coupling/crane_constants.hpp), so this is the matrix the residual uses.
     const Eigen::LDLT<Eigen::Matrix3d> schur_factor(schur);
     // A non-finite state is a divergence for the integrator to report, not a mass-matrix failure.
     if (schur.allFinite() &&
@@ -189,12 +192,23 @@ void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z
 }
 
 template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::gather_minimal_forces(Ref forces) const {
+  if (hull_free()) forces.head<3>() = hull_rhs_;
+  if (has_cargo()) forces.segment<3>(cargo_at_) = cargo_force_;
+  forces.tail(n_) = elastic_rhs_;
+}
+
+template <fem::ElasticCoordinates Coords>
 void CraneSystem<Coords>::static_residual(ConstRef z, Ref residual) {
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(z.size());
   minimal_forces(0.0, z, zero, false);
-  if (hull_free()) residual.head<3>() = hull_rhs_;
-  if (has_cargo()) residual.segment<3>(cargo_at_) = cargo_force_;
-  residual.tail(n_) = elastic_rhs_;
+  gather_minimal_forces(residual);
+}
+
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::minimal_generalized_forces(double t, ConstRef z, ConstRef z_dot, Ref forces) {
+  minimal_forces(t, z, z_dot, true);
+  gather_minimal_forces(forces);
 }
 
 template <fem::ElasticCoordinates Coords>

@@ -56,10 +56,10 @@ Eigen::VectorXcd wave_excitation(CraneEquations& waved, const LinearisedCrane& l
   const int n = linear.size();
   const double period = 2.0 * std::numbers::pi / angular_frequency;
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(n);
-  Eigen::VectorXd acceleration(n);
   const auto force = [&](double t) -> Eigen::VectorXd {
-    waved.minimal_accelerations(t, linear.equilibrium, rest, acceleration);
-    return linear.mass * acceleration;  // Q_z = M_z z̈ at rest
+    Eigen::VectorXd q(n);
+    waved.minimal_generalized_forces(t, linear.equilibrium, rest, q);  // Q_z itself: no mass matrix solved
+    return q;
   };
   const Eigen::VectorXd real = (force(0.0) - force(0.5 * period)) / (2.0 * amplitude);
   const Eigen::VectorXd imaginary = -(force(0.25 * period) - force(0.75 * period)) / (2.0 * amplitude);

@@ -4,7 +4,8 @@
 // the blocks the implicit integrators' Newton matrices use (CraneEquations::minimal_jacobian): hull
 // hydrostatics and constant radiation, mooring, the taut wire as a spring–dashpot, boom stiffness,
 // damping and geometric stiffness — the time domain's own physics, not a second model.
-// The wave excitation per unit wave amplitude is the derivative of the generalized forces with
+// The wave excitation per unit wave amplitude is the derivative of the generalized forces Q_z
+// (CraneEquations::minimal_generalized_forces: the forces themselves, no mass matrix solved) with
 // respect to the amplitude of a regular wave at the equilibrium, at phases 0° and 90°:
 // with the elevation ζ(x = 0, t) = a cos ωt and F(t) = a Re(F̂ e^{iωt}),
 //   Re F̂ = [Q(0) − Q(T/2)] / 2a,   Im F̂ = −[Q(T/4) − Q(3T/4)] / 2a     (T = 2π/ω),

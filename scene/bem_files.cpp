@@ -18,10 +18,16 @@ std::string resolve_scene_path(const std::string& scene_file, const std::string&
 
 namespace {
 
-// The file's problem, or "" when it exists and is a regular file.
+// The file's problem, or "" when it exists and is a regular file. A missing file is named by its
+// absolute path, with the rule that made it from what the scene says.
 std::string missing_file(const std::string& path) {
   std::error_code error;
-  if (!std::filesystem::exists(path, error)) return fmt::format("file not found: {}", path);
+  if (!std::filesystem::exists(path, error)) {
+    const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+    return fmt::format("file not found: {} (looked for at {}; a relative path in a scene is relative to the scene "
+                       "file's folder, not to the working directory)",
+                       path, error ? path : absolute.lexically_normal().string());
+  }
   if (!std::filesystem::is_regular_file(path, error)) return fmt::format("not a regular file: {}", path);
   return {};
 }

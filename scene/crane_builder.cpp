@@ -111,6 +111,8 @@ coupling::HullModel floating_hull(const Scene& scene) {
                          rad.heave_damping * critical_damping(displaced_mass + h.added_mass(1), hydrostatic(0)),
                          rad.pitch_damping * critical_damping(h.pitch_inertia + h.added_mass(2), std::max(hydrostatic(1), 0.0))};
   h.support_pose = Eigen::Vector3d(0.0, hull.g1_above_keel - draft, 0.0);  // even keel at the mean draft
+  h.added_linear_damping = scene.hull_damping.linear;
+  h.quadratic_damping = scene.hull_damping.quadratic;
   return h;
 }
 

@@ -14,6 +14,7 @@
 #include "fem/boundary.hpp"
 #include "fem/mesh.hpp"
 #include "hydro/wave_synthesis.hpp"
+#include "hydro/added_mass_symmetry.hpp"
 #include "hydro/planar_coefficients.hpp"
 #include "hydro/radiation_memory.hpp"
 
@@ -151,9 +152,18 @@ struct BemHull {
   double state_space_tolerance = 0.02;        // impulse-response error e_r of the fit [-]
   double kernel_time_step = 0.05;             // K(t) sampling [s]
   double truncation_time = 0.0;               // T_c [s], 0 = automatic
-  hydro::PlanarRadiation radiation;           // A(ω), B(ω), A(0), A∞
+  hydro::PlanarRadiation radiation;           // A(ω), B(ω), A(0), A∞ (every A symmetric: see below)
+  // What making the added mass symmetric removed when the files were read (hydro/added_mass_symmetry.hpp).
+  hydro::AddedMassAsymmetry added_mass_asymmetry;
   std::optional<hydro::PlanarExcitation> excitation_table;
   std::optional<hydro::PlanarMatrix> hydrostatics;  // C
+};
+
+// Damping added to the hull at G1 ([hull_damping]): F_i = −b_i v_i − q_i |v_i| v_i per DOF
+// (surge, heave, pitch), beside the radiation of [radiation] or [bem].
+struct HullDamping {
+  Eigen::Vector3d linear = Eigen::Vector3d::Zero();     // [N s/m, N s/m, N m s/rad]
+  Eigen::Vector3d quadratic = Eigen::Vector3d::Zero();  // [N s²/m², N s²/m², N m s²/rad²]
 };
 
 struct Mooring {
@@ -185,6 +195,7 @@ struct Scene {
   std::optional<IrregularSea> sea;  // an irregular sea (excludes wave)
   Radiation radiation;
   std::optional<BemHull> bem;  // hull coefficients from BEM files (replaces [radiation])
+  HullDamping hull_damping;
   Mooring mooring;
   Simulation simulation;
   // What the loader's physics checks found doubtful but not wrong (scene/scene_checks.hpp), each

@@ -88,6 +88,10 @@ Scene build_scene(const WrittenKeys& keys, const std::string& file, const SceneP
                               keys.number("radiation.pitch_added_inertia"), keys.number("radiation.surge_damping"),
                               keys.number("radiation.heave_damping"), keys.number("radiation.pitch_damping")};
   if (parts.bem) scene.bem = bem_keys(keys, file);
+  scene.hull_damping.linear = {keys.number("hull_damping.surge_linear"), keys.number("hull_damping.heave_linear"),
+                               keys.number("hull_damping.pitch_linear")};
+  scene.hull_damping.quadratic = {keys.number("hull_damping.surge_quadratic"), keys.number("hull_damping.heave_quadratic"),
+                                  keys.number("hull_damping.pitch_quadratic")};
   scene.mooring = Mooring{keys.number("mooring.surge_stiffness")};
   scene.simulation = Simulation{keys.number("simulation.duration"), keys.number("simulation.output_interval"),
                                 keys.text("simulation.initial_state") == "as-built" ? InitialState::as_built

@@ -202,6 +202,10 @@ class SceneReader final : public WrittenKeys {
   // Checks that involve several keys (only run when every key is valid on its own).
   void check_scene() {
     if (sections_.contains("wave")) check_wave_keys(*this, line_of(*sections_.at("wave")));
+    if (hub_ && sections_.contains("hull_damping")) {
+      report(line_of(*sections_.at("hull_damping")), "hull_damping", "",
+             "belongs to a floating hull: a hub scene has no hull degrees of freedom to damp");
+    }
     if (hub_) {
       for (const char* key : {"boom.angle", "boom.root_x", "boom.root_y"}) {
         if (present_.contains(key)) {
@@ -258,8 +262,22 @@ class SceneReader final : public WrittenKeys {
              "conflicts with [bem]: the BEM files give the radiation coefficients; remove one of the two sections");
       return;
     }
-    for (const BemProblem& problem : load_bem_files(scene)) {
+    const std::vector<BemProblem> problems = load_bem_files(scene);
+    for (const BemProblem& problem : problems) {
       report(line_of_key(problem.key), problem.key, value_of_key(problem.key), problem.message);
+    }
+    if (!problems.empty()) return;
+    // One added-mass matrix for every path of the model, whatever the file format: its symmetric part.
+    BemHull& bem = *scene.bem;
+    bem.added_mass_asymmetry = hydro::symmetrise_added_mass(bem.radiation);
+    if (bem.added_mass_asymmetry.relative > hydro::asymmetry_warning) {
+      const std::string key = "bem.radiation_file";
+      scene.warnings.push_back(format_problem(
+          {file_, line_of_key(key), 0, key, value_of_key(key),
+           fmt::format("the added-mass matrix of {} is not symmetric: its largest relative asymmetry is {}; the model uses "
+                       "the symmetric part (A + Aᵀ)/2 at every frequency (a zero-speed radiation added mass is symmetric, "
+                       "so the difference is the BEM code's numerical error; docs/hydrodynamics.md §6)",
+                       bem.radiation_file, bem.added_mass_asymmetry.describe())}));
     }
   }
 

@@ -95,6 +95,11 @@ constexpr std::array kSections{
                 "hydrostatics) of the same hull, referred to G1: radiation by constant A(ω_c), B(ω_c), the Cummins "
                 "convolution or its state-space fit; excitation by the incident-wave pressure (Froude–Krylov) or the "
                 "BEM file (Froude–Krylov + diffraction). Excludes [radiation]. docs/hydrodynamics.md §6."},
+    SectionSpec{"hull_damping", SectionRole::optional,
+                "Damping added to the hull's equations in surge, heave and pitch at G1, beside [radiation] or [bem] "
+                "(viscous and skin-friction damping that potential flow leaves out): linear, F = −b v, and "
+                "quadratic, F = −b_q |v| v, per degree of freedom. The linearisation (`ffrf rao`, natural modes) "
+                "keeps the linear part only: quadratic damping has none about rest. docs/hydrodynamics.md §6.2."},
     SectionSpec{"mooring", SectionRole::optional, "Linear mooring springs on the hull."},
     SectionSpec{"simulation", SectionRole::optional, "Time span and output of `ffrf run`."},
 };
@@ -252,6 +257,17 @@ constexpr std::array kKeys{
     defaulted("bem.kernel_time_step", time, between(0.005, 0.5), 0.05, "Sampling step of the retardation function K(t)."),
     defaulted("bem.truncation_time", time, between(0.0, 600.0), 0.0,
               "Truncation time T_c of K(t) (0: automatic, where every entry stays below 10⁻³ of the peak)."),
+    // [hull_damping]
+    defaulted("hull_damping.surge_linear", linear_damping, between(0.0, 1e10), 0.0, "Linear surge damping b11: F = −b11 ẋ."),
+    defaulted("hull_damping.heave_linear", linear_damping, between(0.0, 1e10), 0.0, "Linear heave damping b33: F = −b33 ẏ."),
+    defaulted("hull_damping.pitch_linear", rotational_damping, between(0.0, 1e14), 0.0,
+              "Linear pitch damping b55: M = −b55 θ̇."),
+    defaulted("hull_damping.surge_quadratic", quadratic_damping, between(0.0, 1e10), 0.0,
+              "Quadratic surge damping: F = −b ẋ |ẋ| (drag, ½ρ C_D A)."),
+    defaulted("hull_damping.heave_quadratic", quadratic_damping, between(0.0, 1e10), 0.0,
+              "Quadratic heave damping: F = −b ẏ |ẏ|."),
+    defaulted("hull_damping.pitch_quadratic", rotational_quadratic_damping, between(0.0, 1e16), 0.0,
+              "Quadratic pitch damping: M = −b θ̇ |θ̇|."),
     // [mooring]
     defaulted("mooring.surge_stiffness", stiffness, between(0.0, 1e10), 0.0,
               "Surge spring on the hull at G1. A floating hull needs it: nothing else restores surge, so its static "

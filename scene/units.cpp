@@ -76,6 +76,18 @@ constexpr std::array kUnits{
     Unit{"rad/s", Dimension::angular_velocity, 1.0, true},
     Unit{"deg/s", Dimension::angular_velocity, 3.14159265358979323846 / 180.0, true},
     Unit{"rpm", Dimension::angular_velocity, 2.0 * 3.14159265358979323846 / 60.0, true},
+    Unit{"N s/m", Dimension::linear_damping, 1.0, true},
+    Unit{"kN s/m", Dimension::linear_damping, 1e3, true},
+    Unit{"MN s/m", Dimension::linear_damping, 1e6, true},
+    Unit{"N m s/rad", Dimension::rotational_damping, 1.0, true},
+    Unit{"kN m s/rad", Dimension::rotational_damping, 1e3, true},
+    Unit{"MN m s/rad", Dimension::rotational_damping, 1e6, true},
+    Unit{"N s^2/m^2", Dimension::quadratic_damping, 1.0, true},
+    Unit{"kN s^2/m^2", Dimension::quadratic_damping, 1e3, true},
+    Unit{"MN s^2/m^2", Dimension::quadratic_damping, 1e6, true},
+    Unit{"N m s^2/rad^2", Dimension::rotational_quadratic_damping, 1.0, true},
+    Unit{"kN m s^2/rad^2", Dimension::rotational_quadratic_damping, 1e3, true},
+    Unit{"MN m s^2/rad^2", Dimension::rotational_quadratic_damping, 1e6, true},
 };
 
 const Unit* find_unit(std::string_view symbol, Dimension dimension) {
@@ -123,6 +135,11 @@ std::string_view dimension_name(Dimension dimension) {
     case Dimension::acceleration: return "an acceleration";
     case Dimension::stiffness: return "a spring stiffness";
     case Dimension::angular_velocity: return "an angular velocity";
+    case Dimension::linear_damping: return "a linear damping coefficient (force per velocity)";
+    case Dimension::rotational_damping: return "a rotational damping coefficient (moment per angular velocity)";
+    case Dimension::quadratic_damping: return "a quadratic damping coefficient (force per velocity squared)";
+    case Dimension::rotational_quadratic_damping:
+      return "a rotational quadratic damping coefficient (moment per angular velocity squared)";
   }
   return "a quantity";
 }

@@ -27,6 +27,10 @@ enum class Dimension {
   acceleration,     // m/s^2
   stiffness,        // N/m (translational spring)
   angular_velocity, // rad/s
+  linear_damping,   // N s/m (force per velocity)
+  rotational_damping,  // N m s/rad (moment per angular velocity)
+  quadratic_damping,   // N s^2/m^2 (force per velocity squared)
+  rotational_quadratic_damping,  // N m s^2/rad^2 (moment per angular velocity squared)
 };
 
 std::string_view si_unit(Dimension dimension);         // "m", "kg/m^3", "" for ratio

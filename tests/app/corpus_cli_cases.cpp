@@ -274,7 +274,8 @@ std::vector<CliCase> bem_cases() {
   };
   return {
       check("bem_file_not_found", replaced(scene, "\"barge.1\"", "\"nope.1\""), fixture,
-            {"scene.toml:58: bem.radiation_file = \"nope.1\"", "file not found: {dir}/nope.1"}),
+            {"scene.toml:58: bem.radiation_file = \"nope.1\"", "file not found: {dir}/nope.1",
+             "relative to the scene file's folder, not to the working directory"}),
       check("bem_no_infinite_frequency", scene, with_radiation_file(no_infinite),
             {"bem.radiation_file = \"barge.1\"", "{dir}/barge.1: no infinite-frequency limit (rows with PER = 0)"}),
       check("bem_missing_heave", scene, with_radiation_file(no_heave),

@@ -112,6 +112,9 @@ class ThrowingEquations final : public coupling::CraneEquations {
     inner_.minimal_accelerations(t, z, z_dot, z_ddot);
   }
   void static_residual(ConstRef z, Ref residual) override { inner_.static_residual(z, residual); }
+  void minimal_generalized_forces(double t, ConstRef z, ConstRef z_dot, Ref forces) override {
+    inner_.minimal_generalized_forces(t, z, z_dot, forces);
+  }
   Eigen::VectorXd static_residual_scale() const override { return inner_.static_residual_scale(); }
   Eigen::VectorXd coordinate_scale() const override { return inner_.coordinate_scale(); }
   coupling::CraneOutputs minimal_outputs(double t, ConstRef z, ConstRef z_dot) override { return inner_.minimal_outputs(t, z, z_dot); }

@@ -206,6 +206,24 @@ TEST(SceneLoader, AngleNeedsItsUnit) {
   EXPECT_NO_THROW((void)load_scene_text(std::string(kBoom) + "[hub]\nangle = 0\n", "hub.toml"));
 }
 
+TEST(SceneLoader, HullDampingTakesItsUnitsAndBelongsToAHull) {
+  // The keys with units (kN s/m = 1e3 N s/m); a hub has no hull to damp: a named error at the section.
+  const Scene reference = load_scene(FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml");
+  EXPECT_EQ(reference.hull_damping.linear, Eigen::Vector3d::Zero());
+  std::ifstream in(FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml");
+  const std::string crane((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const Scene damped = load_scene_text(crane + "\n[hull_damping]\nsurge_linear = \"200 kN s/m\"\n"
+                                               "pitch_quadratic = \"3 MN m s^2/rad^2\"\n",
+                                       "damped.toml");
+  EXPECT_DOUBLE_EQ(damped.hull_damping.linear.x(), 2.0e5);
+  EXPECT_DOUBLE_EQ(damped.hull_damping.quadratic.z(), 3.0e6);
+  const auto wrong_unit = single_problem(std::string(kBoom) + "[hub]\nangle = 0\n[hull_damping]\nheave_linear = \"5 N/m\"\n",
+                                         "hull_damping.heave_linear", "\"5 N/m\"");
+  EXPECT_NE(wrong_unit.message.find("N s/m"), std::string::npos) << wrong_unit.message;
+  const auto hub = single_problem(std::string(kBoom) + "[hub]\nangle = 0\n[hull_damping]\nheave_linear = 1e5\n", "hull_damping", "");
+  EXPECT_NE(hub.message.find("belongs to a floating hull"), std::string::npos) << hub.message;
+}
+
 TEST(SceneLoader, OverflowingIntegerNamesKeyAndRange) {
   // Beyond int64: toml++ refuses the line; the problem still names the key, its value and range.
   const auto problems = problems_of(std::string(kBoom) + "elements = 99999999999999999999\n");
