@@ -123,7 +123,7 @@ TEST(WaveSpectrum, VarianceBandOfPiersonMoskowitzIsItsClosedFormQuantiles) {
   // split equally has the edges ωp (1.25 / ln(2/(1−p)))^¼ and ωp (1.25 / ln(2/(1+p)))^¼.
   for (double tp : {6.0, 12.0}) {
     const auto s = pierson_moskowitz(2.5, tp);
-    const double wp = 2 * kPi / tp;
+    const double wp = 2 * std::numbers::pi / tp;
     for (double share : {0.99, 0.995, 0.999}) {
       const auto band = variance_band(s, share);
       EXPECT_NEAR(band.lower, wp * std::pow(1.25 / std::log(2.0 / (1.0 - share)), 0.25), 1e-7 * wp) << tp << " " << share;
@@ -131,7 +131,7 @@ TEST(WaveSpectrum, VarianceBandOfPiersonMoskowitzIsItsClosedFormQuantiles) {
     }
   }
   // The default share's high edge: 4.73 ωp (99.9 %: 7.07 ωp).
-  EXPECT_NEAR(variance_band(pierson_moskowitz(2.5, 8.0)).upper / (2 * kPi / 8.0), 4.727, 1e-3);
+  EXPECT_NEAR(variance_band(pierson_moskowitz(2.5, 8.0)).upper / (2 * std::numbers::pi / 8.0), 4.727, 1e-3);
   EXPECT_THROW(variance_band(pierson_moskowitz(2.5, 8.0), 0.4), std::invalid_argument);
   EXPECT_THROW(variance_band(pierson_moskowitz(2.5, 8.0), 1.0), std::invalid_argument);
 }
@@ -147,7 +147,7 @@ TEST(WaveSpectrum, VarianceBandOfJonswapHoldsTheShareOfHsSquaredOver16) {
     EXPECT_NEAR(simpson_variance(s, 1e-9, band.lower, 400000) / m0, 0.0025, 1e-7) << gamma;
   }
   // JONSWAP γ = 3.3 concentrates the variance at the peak: its band ends at 4.3 ωp, not PM's 4.73.
-  EXPECT_NEAR(variance_band(jonswap(2.0, 9.0, 3.3)).upper / (2 * kPi / 9.0), 4.3, 0.05);
+  EXPECT_NEAR(variance_band(jonswap(2.0, 9.0, 3.3)).upper / (2 * std::numbers::pi / 9.0), 4.3, 0.05);
 }
 
 TEST(WaveSpectrum, AnExplicitSynthesisBandOverridesTheRule) {
