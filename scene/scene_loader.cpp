@@ -11,6 +11,7 @@
 #include <map>
 
 #include "scene/bem_files.hpp"
+#include "scene/bem_keys.hpp"
 #include "scene/key_values.hpp"
 #include "scene/scene_build.hpp"
 #include "scene/scene_checks.hpp"
@@ -199,6 +200,7 @@ class SceneReader final : public WrittenKeys {
   // Checks that involve several keys (only run when every key is valid on its own).
   void check_scene() {
     if (sections_.contains("wave")) check_wave_keys(*this, line_of(*sections_.at("wave")));
+    if (sections_.contains("bem")) check_bem_keys(*this, line_of(*sections_.at("bem")));
     if (hub_) {
       for (const char* key : {"boom.angle", "boom.root_x", "boom.root_y"}) {
         if (present_.contains(key)) {
@@ -256,7 +258,11 @@ class SceneReader final : public WrittenKeys {
       return;
     }
     for (const BemProblem& problem : load_bem_files(scene)) {
-      report(line_of_key(problem.key), problem.key, value_of_key(problem.key), problem.message);
+      if (problem.warning) {
+        scene.warnings.push_back(format_problem({file_, line_of_key(problem.key), 0, problem.key, value_of_key(problem.key), problem.message}));
+      } else {
+        report(line_of_key(problem.key), problem.key, value_of_key(problem.key), problem.message);
+      }
     }
   }
 
