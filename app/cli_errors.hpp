@@ -1,4 +1,4 @@
-// What the program says when CLI11 refuses a command line (issue 11.6, 13): an unknown option gets
+// What the program says when CLI11 refuses a command line, so that a typo is named with its fix: an unknown option gets
 // a "did you mean" — first an option of the command that takes the value given (`--model modal` →
 // `--boom modal`), else the nearest option name by edit distance — an unknown command the nearest
 // command, a value refused by an app/option_checks.hpp check "--option VALUE: ... (valid range ...)",

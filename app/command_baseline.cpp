@@ -1,5 +1,5 @@
 // `ffrf baseline record SCENE --out FILE` and `ffrf baseline check SCENE FILE`: regression baselines
-// for users (issue 12.5, docs/baselines.md). record runs one model (study::record_baseline, the one
+// for users (docs/baselines.md). record runs one model (study::record_baseline, the one
 // run pipeline) and writes the baseline file (report/baseline_file.hpp); check runs the baseline's
 // model again — or the one the options name, reporting the difference — and judges every recorded
 // quantity against its tolerance (study::check_baseline). Exit 0 when every quantity passes, 4 on a

@@ -1,4 +1,4 @@
-// `ffrf rao SCENE`: the frequency domain (issue 15.5) — RAOs of the crane linearised about its
+// `ffrf rao SCENE`: the frequency domain, the second method that checks the time domain — RAOs of the crane linearised about its
 // static equilibrium, rigid, nodal and modal booms side by side (or the one model the options
 // name), the coupled natural modes, and with --check-time-domain the regular-wave time-domain runs
 // judged against the RAOs (study/rao.hpp, study/rao_check.hpp). Text on stdout (--json: the JSON

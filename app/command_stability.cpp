@@ -1,4 +1,4 @@
-// `ffrf stability SCENE`: the stability map report — which method fails where (issue 5). Runs the
+// `ffrf stability SCENE`: the stability map report — which method fails where, and how ffrf names it. Runs the
 // experiments that apply to the scene (study::stability_map) and writes report.md (embedding the
 // PNG charts), summary.json (every cell: status, failure kind, time, value) and the CSVs into
 // --out DIR, completely or not at all; without --out the charts go to a temporary directory that

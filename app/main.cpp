@@ -1,4 +1,4 @@
-// `ffrf`: the floating-crane toolkit's command-line program (DESIGN.md §5). One file per
+// `ffrf`: the floating-crane toolkit's command-line program (docs/architecture.md). One file per
 // subcommand; this file wires them to CLI11, installs the SIGINT/SIGTERM handling, and maps every
 // error to a message and an exit code (commands.hpp): no bare library message (std::bad_alloc, a
 // std::logic_error's text, a filesystem error) reaches the user.

@@ -1,4 +1,4 @@
-// Checks of command-line values before CLI11 converts them (issue 13): every number is read whole
+// Checks of command-line values before CLI11 converts them, so that no value overflows or is half-read: every number is read whole
 // (no trailing text, no octal or hexadecimal), finite, and inside a plausible range — the same range
 // as the scene key it overrides where there is one — so that `--elements 3000000000` is named with
 // its valid range instead of wrapping around. A failed check's message is "VALUE: what is wrong

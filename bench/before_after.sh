@@ -3,7 +3,7 @@
 # builds this tree's bench_crane.cpp against the libraries of OLD_COMMIT in a second source tree
 # (exported with `git archive`, never committed), then runs the old and the new program alternately
 # REPEATS times (so both see the same machine load) and prints one table with the best wall time of
-# each, the speed-ups, the cost exponent in N and the issue 14 targets.
+# each, the speed-ups, the cost exponent in N and the real-time-factor targets (crane_bench_table.hpp).
 #   bench/before_after.sh OLD_COMMIT [OLD_TREE (default /tmp/ffrf-bench-OLD_COMMIT)] [REPEATS (default 3)]
 # The new program is ./build/bench/bench_crane (build it first, Release). Check `uptime` first: other
 # jobs on the machine inflate wall times.

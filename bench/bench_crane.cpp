@@ -10,7 +10,7 @@
 // `coupling::integrate`, including the output samples.
 // After Google Benchmark's own output it prints a Markdown table (crane_bench_table.hpp): wall,
 // steps, RHS evaluations (those of the Jacobians included), Jacobian evaluations, µs per step,
-// real-time factor and the local cost exponent in N, and checks issue 14's targets; for a missed
+// real-time factor and the local cost exponent in N, and checks the real-time-factor targets (crane_bench_table.hpp); for a missed
 // target it measures what one RHS, one Jacobian, one Newton factorization and solve and one output
 // sample cost and splits the run's wall time accordingly (the rest is CVODE's own vector work);
 // --breakdown prints that split for every target row.
@@ -263,7 +263,7 @@ int main(int argc, char** argv) {
                  "each build's runs\n\n",
                  after_rows.empty() ? 0.0 : after_rows.front().duration, kTolerance);
       ffrf::bench::print_table(before_rows, after_rows);
-      fmt::print("\nissue 14 targets (after; 120 s runs only):\n");
+      fmt::print("\nreal-time-factor targets (after; 120 s runs only):\n");
       for (const auto& target : ffrf::bench::targets()) {
         const CraneRow* r = ffrf::bench::find_row(after_rows, target.key);
         if (!r || r->duration != kFullDuration) continue;

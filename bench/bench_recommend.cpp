@@ -1,4 +1,4 @@
-// Benchmark of issue 6's claim: the wall time of the model `ffrf recommend` chooses on the reference
+// Benchmark of what `ffrf recommend` saves: the wall time of the model `ffrf recommend` chooses on the reference
 // scene at 1 % against its converged reference, measured side by side in one run. The choice is made
 // here by the real recommend study (study::recommend: reasoning, reference, verification runs) — no
 // model is hard-coded — and both runs go through the one pipeline (study/run_pipeline.hpp): model

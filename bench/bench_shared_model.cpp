@@ -1,6 +1,6 @@
-// What sharing the crane model saves a sweep (issue 12.3), per configuration: building the model of
+// What sharing the crane model saves a sweep, per configuration: building the model of
 // a boom choice (scene::build_shared_crane with the modes already cached — what every sweep
-// configuration paid before 12.3) against making equations from a shared model (what it pays now),
+// configuration paid before models were shared) against making equations from a shared model (what it pays now),
 // beside the static equilibrium every configuration still solves. Reference scene, static
 // stiffening (as the sweep models it), the medium grid's largest models. docs/performance.md.
 #include <benchmark/benchmark.h>

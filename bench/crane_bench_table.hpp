@@ -1,7 +1,7 @@
 // The results of bench_crane as rows (one per model × integrator): written to and read from CSV so
 // that runs of two builds (before / after a change, bench/before_after.sh) can be merged, best of
-// their repetitions, into one side-by-side Markdown table with the cost exponent in N and the issue
-// 14 targets. Header-only so the same file builds in an old source tree.
+// their repetitions, into one side-by-side Markdown table with the cost exponent in N and the real-time-factor
+// targets. Header-only so the same file builds in an old source tree.
 #pragma once
 
 #include <fmt/core.h>
@@ -148,7 +148,8 @@ struct Target {
   const char* key;
   double real_time_factor;
 };
-// Issue 14's targets on the 2-core reference machine (CVODE, reference scene, 120 s).
+// Real-time-factor targets of the per-step cost work (structured Newton solves, closed-form hull
+// pressure) on the 2-core reference machine (CVODE, reference scene, 120 s); docs/performance.md.
 inline const std::vector<Target>& targets() {
   static const std::vector<Target> list = {{"rigid | cvode", 1e4},
                                            {"modal k=2+static (N=16) | cvode", 3e3},

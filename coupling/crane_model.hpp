@@ -2,7 +2,7 @@
 // floating frame clamped to the hull at B, cargo G2 on a wire rope from the boom tip A′ to the hook
 // C, and the environment. Built once from a scene (scene/crane_builder.hpp); read-only in a run:
 // it becomes part of a SharedCraneModel (coupling/crane_system.hpp) that threads share.
-// Planar, SI units, y up, angles counter-clockwise (DESIGN.md §3).
+// Planar, SI units, y up, angles counter-clockwise (docs/architecture.md, "Conventions").
 #pragma once
 
 #include <Eigen/Dense>

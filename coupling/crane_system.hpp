@@ -4,7 +4,7 @@
 // transformation q̇_B = J ż, M_z = JᵀMJ, Q_z = Jᵀ(Q − M J̇ż); Shabana 2005 §6, "embedding
 // technique") solved by a Schur complement on the constant elastic mass M_ff, and the full-
 // coordinate DAE pieces (paper eqs. 22, 31–34). Implements CraneEquations.
-// Model and workspace apart (Pinocchio's Model/Data, issue 12.3): a SharedCraneModel is the
+// Model and workspace apart (Pinocchio's Model/Data, so threads share one model): a SharedCraneModel is the
 // immutable part — the CraneModel and what follows from it alone (the factorization of M_ff,
 // M_ff⁻¹S̄ᵀ and M_ff⁻¹cᵀ, the Newton blocks' structure, the wire's tip columns, coordinate scales) —
 // computed once and shared by any number of threads; each CraneEquations it makes owns a small

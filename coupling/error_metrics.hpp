@@ -1,4 +1,4 @@
-// Error metrics of a crane run against a reference run sampled at the same times (issue 4):
+// Error metrics of a crane run against a reference run sampled at the same times:
 // per output channel, over the window after the wave ramp, the normalized RMS error
 // RMS(x − x_ref) / RMS(x_ref − mean(x_ref)), the max absolute error and the max error normalized by
 // the reference's amplitude max|x_ref − mean|; and the error of the wire tension's dynamic

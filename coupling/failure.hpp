@@ -1,5 +1,5 @@
 // How a run fails or what it runs into, by name: the failure kinds every run is watched for
-// (issue 5's detectors), one detection (kind, time, cause with its numbers, remedy), and the
+// (coupling/run_monitor.hpp's detectors), one detection (kind, time, cause with its numbers, remedy), and the
 // exception a solver that could not finish throws — naming the kind, and carrying the samples up
 // to the failure so a report can chart how it failed (never as if they were a complete run).
 // Remedies are keyed by the failure kind and worded neutrally ("tighten the tolerances"); each names

@@ -14,7 +14,7 @@
 // The derivatives of these terms with respect to the elastic coordinates (for the Newton matrices) are
 // written out in add_elastic_derivatives; docs/theory.md §12 derives them.
 // A rigid body is the same body with zero elastic coordinates.
-// The body is immutable once built (threads share it, issue 12.3): every evaluation that needs
+// The body is immutable once built (threads share it: a sweep runs one model on several threads): every evaluation that needs
 // scratch vectors takes a BodyWorkspace, which each user (one CraneEquations instance) owns; the
 // overloads without one allocate their own (tests, energies, anything off the hot path).
 #pragma once

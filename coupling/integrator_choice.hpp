@@ -1,4 +1,4 @@
-// An integrator is two choices (issue 12.4): how the clamp at B enters the equations of motion
+// An integrator is two choices, so each can be compared on its own: how the clamp at B enters the equations of motion
 // (the constraint formulation) and which time integrator solves them (the solver).
 //  formulations  minimal     minimal coordinates: the clamp eliminated, an ODE (no constraint, no drift)
 //                index3      Lagrange multipliers, C(q) = 0 itself (index 3; Arnold–Brüls scaling)

@@ -1,4 +1,4 @@
-// The failure detectors every run carries (issue 5): while the run goes, a divergence watch on the
+// The failure detectors every run carries, so that a run that goes wrong says how and when: while the run goes, a divergence watch on the
 // boom tip's elastic deflection (the linear floating-frame model is meaningless once it is a sizeable
 // fraction of the boom length) and, for a floating hull, a capsize watch (pitch past 90°); after the
 // run, a deck edge or the cargo under water (what the model does not describe), the wire's slack intervals and snap loads (tension

@@ -1,4 +1,5 @@
-// The elastic-coordinate interface of DESIGN.md §2. A flexible body places a material point at
+// The elastic-coordinate interface (docs/theory.md §2–3): one interface for nodal and modal
+// coordinates, so the floating-frame body's equations are written once. A flexible body places a material point at
 // r = R + A(θ)(ū0 + S(x) Φ η); an ElasticCoordinates type supplies everything the floating-frame
 // body needs about η: its size, the inertia invariants projected on Φ, the stiffness ΦᵀKΦ, the
 // geometric stiffness ΦᵀK_gΦ per unit axial force, the shape rows of a point, the map back

@@ -1,6 +1,6 @@
 // A uniform mesh of N two-node frame elements along the beam axis x in [0, L] (the boom frame's
 // x axis, root at x = 0). Node i sits at x = i L / N and carries the DOFs (u, v, phi): axial,
-// transverse and small rotation (DESIGN.md §6), stored at full-DOF index 3 i + {0, 1, 2}.
+// transverse and small rotation (docs/architecture.md, "Conventions"), stored at full-DOF index 3 i + {0, 1, 2}.
 #pragma once
 
 #include "fem/section.hpp"

@@ -1,4 +1,4 @@
-// Modal elastic coordinates (DESIGN.md §2): q_n = Φ η with Φ an M-orthonormal modal basis
+// Modal elastic coordinates (docs/theory.md §3): q_n = Φ η with Φ an M-orthonormal modal basis
 // (vibration + static correction modes). Every inertia invariant, the stiffness and the unit
 // geometric stiffness are projected once on Φ (dense, small); shape rows are S(x)Φ.
 // Implements fem::ElasticCoordinates.

@@ -1,5 +1,5 @@
-// The clamped (or otherwise held) beam's vibration modes, computed once per mesh and shared (issue
-// 4: "mode shapes are computed once per scene and cached"; issue 12.3: a sweep solves each mesh's
+// The clamped (or otherwise held) beam's vibration modes, computed once per mesh and shared (a
+// study reuses a scene's mode shapes rather than solve them again, and a sweep solves each mesh's
 // eigenproblem once). A request for k modes returns the k lowest of one eigen solve of
 // min(12·⌈k/12⌉, n − 1) modes: k = 1…12 — a whole mode-count sweep — share one solve, and which
 // solve serves k never depends on the order of requests, so a parallel sweep and a single run get

@@ -1,4 +1,4 @@
-// Nodal elastic coordinates (DESIGN.md §2): η = q_n, Φ = I — all free FE degrees of freedom of
+// Nodal elastic coordinates (docs/theory.md §2): η = q_n, Φ = I — all free FE degrees of freedom of
 // the beam, kept sparse and banded (the paper's choice, Table 1). Implements
 // fem::ElasticCoordinates by passing the nodal-space beam model through unchanged.
 #pragma once

@@ -1,4 +1,4 @@
-// The regression-baseline file (issue 12.5): a JSON document, format "ffrf-baseline" version 2,
+// The regression-baseline file: a JSON document, format "ffrf-baseline" version 2,
 // that `ffrf baseline record` writes and `ffrf baseline check` reads (docs/baselines.md documents
 // every field). It holds a study::Baseline (model, frequencies, statistics, histories) and where it
 // came from: ffrf's version and git commit, the date, the scene file's path, name and content hash

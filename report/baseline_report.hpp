@@ -1,4 +1,4 @@
-// What `ffrf baseline record` and `ffrf baseline check` print (issue 12.5): the recorded baseline
+// What `ffrf baseline record` and `ffrf baseline check` print (docs/baselines.md): the recorded baseline
 // in a few lines, and the check's verdict — every quantity with its baseline value, this run's, the
 // size of the deviation, the tolerance it was judged against and pass/fail, the model differences,
 // the channels that moved — as text or JSON.

@@ -1,4 +1,4 @@
-// Irregular-sea statistics in `ffrf run` and `ffrf compare` reports (issue 15.6): a text table
+// Irregular-sea statistics in `ffrf run` and `ffrf compare` reports: a text table
 // (σ, 4σ, Tz, spectral peak, observed maximum and the Rayleigh / Weibull / Gumbel most probable
 // maxima per response; the realised Hs of the incident wave; the wire tension's DAF), the same as
 // JSON, the Welch response spectra as CSV, and the statistics-and-spectra errors of compare.

@@ -1,6 +1,6 @@
 // What `ffrf modes` reports: the text table with its header block, the JSON document (stdout
 // with --json, summary.json with --out), the CSV files (mode shapes, frequencies, convergence) and
-// the charts. Column names carry units (DESIGN.md §6).
+// the charts. Column names carry units (`frequency_hz`; docs/architecture.md, "Conventions").
 #pragma once
 
 #include <string>

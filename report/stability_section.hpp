@@ -1,4 +1,4 @@
-// The report of `ffrf stability` (the stability map, issue 5 "where methods fail"): one cell of a
+// The report of `ffrf stability` (the stability map: where each method fails): one cell of a
 // map (green: the method held, with the number that says how well; red: the failure named by kind,
 // with when and the number behind it), one section per experiment of study/stability.hpp (what was
 // run, the table, the charts, the finding), and the whole report (report.md, summary.json).

@@ -92,7 +92,7 @@ std::vector<study::MeasuredModel> measured_rows(const std::vector<SweepRow>& row
 }
 
 namespace {
-// A sweep crossed with the radiation models (a [bem] scene, issue 15.2): the radiation model of
+// A sweep crossed with the radiation models (a [bem] scene): the radiation model of
 // the cheapest passing configuration, and per model its cheapest passing configuration.
 std::string radiation_verdict(const std::vector<SweepRow>& rows, const study::Verdict& verdict) {
   std::vector<std::string> kinds;

@@ -1,4 +1,4 @@
-// The shared crane models of one scene (issue 12.3): each distinct model — boom kind × mesh ×
+// The shared crane models of one scene, built once and shared by threads: each distinct model — boom kind × mesh ×
 // coordinates × mode set × solver × stiffening × the [bem] hull's radiation model — is built once,
 // on its first request, and handed to every run and thread that asks for it; each run makes its own
 // CraneEquations from it (workspace and run state, coupling/crane_system.hpp). The vibration modes

@@ -1,11 +1,11 @@
-// The crane in an irregular sea (issue 15.1; docs/hydrodynamics.md §2.2): a scene's [wave] becomes
+// The crane in an irregular sea (docs/hydrodynamics.md §2.2): a scene's [wave] becomes
 // the coupling wave field. A regular wave is the one-component field; a JONSWAP or Pierson–Moskowitz
 // sea is synthesized by hydro::synthesize with ω_n = n Δω, Δω = 2π / record length (or the band over
 // wave.components), random phases from the seed (a pure function of seed and harmonic number n, so
 // the same realisation on any thread or process count); user components are taken as given. The
 // phase convention of hydro (η(0, t) = Σ a cos(ω t + φ)) maps onto the wave field's
 // θ = k x − δ ω t + φ_field as φ_field = −δ φ (δ = +1 following, −1 head).
-// Also: in_irregular_sea, the interface of the operability tables (issue 16), and the sea's
+// Also: in_irregular_sea, the interface of the operability tables (docs/operability.md), and the sea's
 // summary values that studies need (ramp end, amplitude bound, the shortest period of interest).
 #pragma once
 
@@ -18,7 +18,7 @@
 
 namespace ffrf::scene {
 
-// A sea state for tables and sweeps (issue 16): a parametric spectrum and its record.
+// A sea state for tables and sweeps: a parametric spectrum and its record.
 struct IrregularSeaState {
   std::string spectrum = "jonswap";  // "jonswap" | "pierson-moskowitz"
   double significant_height = 0;     // Hs [m]

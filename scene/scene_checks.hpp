@@ -1,4 +1,4 @@
-// Cross-key physics checks of a loaded scene (issue 13): what no single key's range can say. Each
+// Cross-key physics checks of a loaded scene, so a scene that cannot float or hang fails before any solve: what no single key's range can say. Each
 // finding names the keys involved, their values and the physical reason with its numbers:
 //  * attachment points: the boom root B over the hull, between the keel and a pedestal of half the
 //    hull length above the deck; the hook C on or inside the cargo box;

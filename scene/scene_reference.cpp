@@ -77,7 +77,7 @@ std::string scene_reference_markdown() {
          "  lists every problem as `FILE:LINE: key = value: message (valid range ...)` and exits with 2;\n"
          "  every command checks the scene the same way before any work.\n\n"
          "Examples: `cases/cantilever.toml` (a single beam: `[boom]` only) and\n"
-         "`cases/paper_floating_crane.toml` (the reference crane of DESIGN.md §3).\n";
+         "`cases/paper_floating_crane.toml` (the reference crane; its values are documented in docs/architecture.md).\n";
   for (const SectionSpec& section : scene_sections()) {
     out += fmt::format("\n## [{}] — {}\n\n{}\n\n", section.name, role_text(section.role), section.help);
     out += "| key | unit | valid range | default | description |\n|---|---|---|---|---|\n";

@@ -1,4 +1,4 @@
-// The scene schema table (DESIGN.md §3 and §7): the one place where scene keys are declared.
+// The scene schema table (docs/architecture.md, "Conventions"): the one place where scene keys are declared.
 // Values of the reference scene live in cases/paper_floating_crane.toml, not here; defaults here
 // are the values a scene gets when it leaves a key out.
 #include "scene/scene_schema.hpp"

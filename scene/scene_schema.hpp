@@ -1,5 +1,5 @@
 // The scene schema: every scene key declared once — dotted name, kind, physical dimension, valid
-// range, default or requirement, help text (DESIGN.md §7). The loader (scene_loader.cpp),
+// range, default or requirement, help text: one definition drives code and docs. The loader (scene_loader.cpp),
 // `ffrf check` and the Markdown reference docs/scenes.md (`ffrf scene-reference`) all read this
 // one table; nothing else lists scene keys.
 #pragma once

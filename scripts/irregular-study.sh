@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 15.7 over long records and several seeds: `ffrf recommend` and `ffrf compare` on the
+# The irregular-sea model study over long records and several seeds: `ffrf recommend` and `ffrf compare` on the
 # irregular scenes at Tp = 5, 8 and 12 s with several seeds (docs/validation.md, "Irregular seas:
 # does the recommended boom model change with Tp?"). Not part of the test suite.
 #

@@ -1,4 +1,4 @@
-// Regression baselines for users (issue 12.5): what `ffrf baseline record` keeps of one model's run
+// Regression baselines for users (docs/baselines.md): what `ffrf baseline record` keeps of one model's run
 // so that a later run of the same scene and model can be checked against it (study/baseline_check.hpp).
 //  * The boom's natural frequencies as `ffrf modes` computes them: clamped–free, unloaded, on the
 //    model's mesh (N elements), ARPACK shift-invert at machine precision (study::solve_modes).

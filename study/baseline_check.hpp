@@ -1,4 +1,4 @@
-// Checking a run against a regression baseline (`ffrf baseline check`, issue 12.5): the model is run
+// Checking a run against a regression baseline (`ffrf baseline check`): the model is run
 // again (the baseline's model unless told otherwise) and every recorded quantity is judged:
 //   |value − baseline| ≤ relative × scale + absolute
 // with, per quantity,

@@ -50,7 +50,7 @@ struct Comparison {
   std::vector<coupling::RunErrors> errors;      // per run, against the reference (total errors)
   std::vector<SplitErrors> split;               // per run: the static and dynamic parts per channel
   std::vector<WorstError> worst;                // per run, over `judged`
-  // Per run, an irregular sea: its statistics and spectra against the reference's (issue 15.6).
+  // Per run, an irregular sea: its statistics and spectra against the reference's (study/irregular_statistics.hpp).
   std::vector<std::optional<IrregularErrors>> irregular;
   Verdict verdict;                              // per run, against the request's tolerance
 };

@@ -1,4 +1,4 @@
-// How every study measures a model against its reference (issue 11.5: one physics across
+// How every study measures a model against its reference (one physics across
 // commands): the same error window, the same judged outputs, the same "worst" error.
 //  * Window: after the wave ramp (ramp_periods × period), where the wave is fully in; a run that
 //    ends within the ramp, or a scene in calm water, is measured over its whole length.

@@ -1,4 +1,4 @@
-// The static and the dynamic error of a model's output against the reference's (issue 11.3).
+// The static and the dynamic error of a model's output against the reference's, so a verdict can say which part is off.
 // An output of a run is x(t) = x_s + d(t): the value at the model's own static equilibrium x_s and
 // the displacement d(t) from it; the reference's is x_ref(t) = x_ref_s + d_ref(t). With the scale
 // S = RMS(x_ref − mean x_ref) over the error window (the reference's dynamic amplitude, the

@@ -1,4 +1,4 @@
-// Statistics of a crane run in an irregular sea (issue 15.6; docs/hydrodynamics.md §5): over the
+// Statistics of a crane run in an irregular sea (docs/hydrodynamics.md §5): over the
 // window after the wave ramp, per response: mean, standard deviation σ and the significant value
 // 4σ, the zero up-crossing period, the response spectrum by Welch's method (peak frequency,
 // m0), and the most probable maximum over the record three ways — Rayleigh (narrow-band Gaussian,

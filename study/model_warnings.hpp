@@ -1,4 +1,4 @@
-// Warnings of `ffrf run` (issue 6): a model below what its scene needs — retained modes cut off
+// Warnings of `ffrf run`: a model below what its scene needs — retained modes cut off
 // below the excitation band, no static correction modes under a tip load, a rigid boom whose
 // quasi-static deflection matters, geometric stiffening off near buckling or at high spin — and,
 // quietly, a model far above it. Judged by the same physics as `ffrf recommend`

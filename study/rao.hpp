@@ -1,4 +1,4 @@
-// The frequency domain (`ffrf rao`, issue 15.5): response amplitude operators of the crane
+// The frequency domain (`ffrf rao`, docs/theory.md §12): response amplitude operators of the crane
 // linearised about its static equilibrium (coupling/linearisation.hpp) — the linearised time
 // domain, the cheap second method that checks it. At each angular frequency ω
 //   X(ω) = (−ω² (M + A'(ω)) + iω (C + B'(ω)) + K)⁻¹ F̂(ω),    Y(ω) = (G + iω H) X(ω),

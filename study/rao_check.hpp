@@ -1,4 +1,4 @@
-// The time domain against the frequency domain (issue 15.5's must-show, `ffrf rao
+// The time domain against the frequency domain (each method checks the other, `ffrf rao
 // --check-time-domain`): regular-wave runs of the crane through the one run pipeline at several
 // periods, small wave height (linear), and the response amplitudes they settle to compared with the
 // RAOs of study/rao.hpp within a tolerance (1 %).

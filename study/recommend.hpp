@@ -1,4 +1,4 @@
-// The candidate models of `ffrf recommend` (issue 6), cheapest first, each pruned by the reasoning
+// The candidate models of `ffrf recommend` (docs/recommend.md), cheapest first, each pruned by the reasoning
 // (recommend_reasoning.hpp) or verified against the converged reference; the search stops at the
 // first candidate whose worst normalized RMS error over the chosen outputs (coupling/error_metrics.hpp,
 // the error of `ffrf compare` and `ffrf sweep`) is within the tolerance, then proves minimality by

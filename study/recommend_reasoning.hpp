@@ -1,4 +1,4 @@
-// The physics behind `ffrf recommend` (issue 6), before any time integration: which parts of the
+// The physics behind `ffrf recommend` (docs/recommend.md), before any time integration: which parts of the
 // boom's behaviour a scene excites, and so which models can be pruned without running them.
 //  * Excitation band: the wave frequency ω_w = 2π/T and the hub's spin rate Ω; its top ω_e.
 //  * Boom frequencies ω_i: the same solve_modes() as `ffrf modes` on the scene's mesh.
@@ -53,7 +53,7 @@ struct RecommendReasoning {
   std::vector<std::string> statements; // the reasoning in plain words with its numbers
 };
 
-// The geometric stiffening a reference for this scene models (issue 11.5: one physics for compare,
+// The geometric stiffening a reference for this scene models (one physics for compare,
 // sweep and recommend): what the physics needs at `tolerance` on the judged outputs (static
 // stiffening near buckling, centrifugal at high spin) together with what the scene asks for —
 // RecommendReasoning::reference_stiffening. Throws modal::EigenSolverError.

@@ -1,4 +1,4 @@
-// A converged reference for a scene (issue 4): the nodal model refined until its outputs stop
+// A converged reference for a scene: the nodal model refined until its outputs stop
 // changing. Level i uses N = N0·2^i elements and rtol = atol = rtol0·10^(−i) (CVODE, minimal
 // coordinates), each run through the one pipeline (study/run_pipeline.hpp: the scene's initial
 // state, cargo lift included); the change between two levels is the worst normalized RMS
@@ -6,7 +6,7 @@
 // (study/error_measure.hpp). The finest level is the reference once the change falls below the
 // bound; every error ffrf reports is measured against it.
 //
-// One set of defaults for every command (issue 12.2): N0 = 8, rtol0 = 1e-6, bound 1e-3, at most 3
+// One set of defaults for every command, so all judge against the same reference: N0 = 8, rtol0 = 1e-6, bound 1e-3, at most 3
 // levels. The models compared by default run at rtol 1e-6, so the last level (N = 32, rtol 1e-8)
 // is two decades tighter than they are; the bound is a tenth of the default 1 % verdict tolerance of
 // compare and recommend, so a verdict is never decided by the reference's own error; three levels

@@ -1,4 +1,4 @@
-// The one run pipeline (issue 12.2). prepare_run() builds the crane of a boom choice, solves its
+// The one run pipeline (every command brings a model to its initial state here). prepare_run() builds the crane of a boom choice, solves its
 // static equilibrium and brings it to the scene's initial state: the static equilibrium (or the
 // as-built pose, simulation.initial_state), with the cargo raised by simulation.cargo_lift and
 // released at rest; a hub's prescribed motion is part of the model. A study that runs one model

@@ -1,4 +1,4 @@
-// The stability map of `ffrf stability` (issue 5, "where methods fail") as studies: each experiment
+// The stability map of `ffrf stability` (where each method fails, docs/stability.md) as studies: each experiment
 // runs its models through the one pipeline (study/run_pipeline.hpp) and returns what happened — the
 // runs, the failures named by kind with their time and number, and the hand results they are
 // checked against. The report library (report/stability_*.cpp) turns each into a section with its

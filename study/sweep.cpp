@@ -35,7 +35,7 @@ std::string_view to_string(RunStatus status) {
 SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config) {
   SweepResult r;
   r.config = config;
-  // The configuration's radiation model (issue 15.2): the scene with it — the shared models' (keyed
+  // The configuration's radiation model: the scene with it — the shared models' (keyed
   // on the radiation model too) or, without shared models, a copy.
   std::optional<scene::Scene> configured;
   if (config.radiation && setup.models == nullptr) configured = with_radiation(*setup.scene, *config.radiation);

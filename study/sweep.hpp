@@ -50,7 +50,7 @@ struct SweepRequest {
   std::optional<scene::Stiffening> stiffening;
   double tolerance = 0.01;              // of the verdict (and of the physics deciding the stiffening)
   long max_explicit_steps = 2'000'000;  // ARKODE runs needing more steps are skipped (with the reason)
-  // A scene with [bem] (issue 15.2): the grid crossed with the radiation models, the reference with
+  // A scene with [bem]: the grid crossed with the radiation models, the reference with
   // the Cummins convolution. Throws scene::SceneError when the scene has no [bem].
   bool radiation_axis = false;
 };

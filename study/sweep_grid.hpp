@@ -26,7 +26,7 @@ struct SweepConfig {
   double rtol = 0.0;               // 0: none (fixed-step explicit RK)
   double step = 0.0;               // fixed step [s] (generalized-α); 0: adaptive or by stability_factor
   double stability_factor = 0.0;   // > 0: ARKODE fixed step = factor × the explicit stability limit
-  // The hull's radiation model (a scene with [bem], issue 15.2); empty: the scene's own.
+  // The hull's radiation model (a scene with [bem]); empty: the scene's own.
   std::optional<hydro::RadiationKind> radiation;
 };
 

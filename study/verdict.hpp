@@ -1,4 +1,4 @@
-// The verdict of a comparison against a tolerance (issue 11.2), the same in `ffrf compare` and
+// The verdict of a comparison against a tolerance, the same in `ffrf compare` and
 // `ffrf sweep` as in recommend's decision: a measured model passes when its worst error over the
 // judged outputs (study/error_measure.hpp: the total error, static and dynamic together) is within
 // the tolerance τ; its speed-ups are the reference's wall time and solver work over its own, work

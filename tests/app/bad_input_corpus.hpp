@@ -1,4 +1,4 @@
-// The bad-input corpus (issue 13): scenes that each carry one mistake, generated from the scene
+// The bad-input corpus: scenes that each carry one mistake, generated from the scene
 // schema so that a new key gets its cases without anyone writing them, plus cross-key physics,
 // command-line misuse and output paths. Shared here: writing a key into a shipped scene, the
 // generated scene cases, and the checks every case makes on what the user sees.

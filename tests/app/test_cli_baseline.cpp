@@ -1,4 +1,4 @@
-// End-to-end tests of `ffrf baseline record|check` (issue 12.5): the command-line behaviour — exit
+// End-to-end tests of `ffrf baseline record|check`: the command-line behaviour — exit
 // codes (0 pass, 4 regression, 2 bad input), the file written, the verdict naming the quantities
 // that moved with their numbers, the model difference reported, bad input named with file, key and
 // value. The physics of the check (E × 1.01 against √1.01, determinism) is tested on the study

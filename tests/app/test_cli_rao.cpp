@@ -1,4 +1,4 @@
-// End-to-end tests of `ffrf rao` (issue 15.5): the files written, the report's verdict of the
+// End-to-end tests of `ffrf rao`: the files written, the report's verdict of the
 // time-domain check and its exit code when the check fails (a tolerance below the measured
 // deviation), the CSV columns with units, the JSON summary. The physics is tested on the study
 // itself (tests/study/test_rao.cpp, test_rao_time_domain.cpp).
@@ -48,7 +48,7 @@ TEST(CliRao, OneModelFromTheOptionsAndAFailedCheckExitsOne) {
   EXPECT_FALSE(summary["time_domain_check"][0]["passed"].flag);
 }
 
-// A [bem] hull (issue 15): the files' A(ω), B(ω), X(ω); rigid, nodal and modal side by side with the
+// A [bem] hull: the files' A(ω), B(ω), X(ω); rigid, nodal and modal side by side with the
 // charts, and the time-domain check (convolution radiation) within 1 % — the physics is asserted in
 // tests/study/test_rao_bem.cpp; here the command's files, report and exit code.
 TEST(CliRao, ABemSceneGivesTheFilesRaosAndPassesItsTimeDomainCheck) {

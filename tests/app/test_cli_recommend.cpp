@@ -1,4 +1,4 @@
-// End-to-end tests of `ffrf recommend` and of `ffrf run`'s modelling warnings (issue 6): what the
+// End-to-end tests of `ffrf recommend` and of `ffrf run`'s modelling warnings: what the
 // command line does — the files and the JSON it writes, a run line that reproduces the chosen model,
 // bad options named, the warnings on stderr with their numbers. The physics of the recommendation
 // is tested on the study itself (tests/study/test_recommend.cpp).

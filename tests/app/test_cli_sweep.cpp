@@ -204,7 +204,7 @@ TEST(CliCompareGrown, ReportHasTheReferenceConvergenceTableAndModalRows) {
 namespace ffrf::test {
 namespace {
 
-// A scene with [bem] (issue 15.2): the radiation model is an axis of the grid (three consecutive ids per
+// A scene with [bem]: the radiation model is an axis of the grid (three consecutive ids per
 // boom/integrator configuration), the CSV's last column names it, and the verdict names the radiation
 // model of the cheapest passing configuration. Shard 0/20 of the 63 crossed configurations: ids 0, 20,
 // 40, 60, i.e. constant, convolution, state-space, constant (id % 3).

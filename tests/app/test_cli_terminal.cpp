@@ -1,4 +1,4 @@
-// Every charting command run from an interactive terminal finishes without input (issue 11, item 1).
+// Every charting command run from an interactive terminal finishes without input (a chart must never hang a user's shell).
 // The command runs under a pseudo-terminal (`script`), as a user's shell would start it, with a
 // standard input that stays open and never delivers a byte: a child process that inherits the
 // terminal and waits for a key press (gnuplot's pager did: "Press return for more:") would block

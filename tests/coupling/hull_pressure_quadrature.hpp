@@ -1,5 +1,5 @@
 // The second method for the closed-form hull pressure integral (coupling/hull_pressure.cpp): the
-// quadrature ffrf used before issue 14, kept here as an independent check. Each box edge is sampled
+// quadrature ffrf used before the closed form, kept here as an independent check. Each box edge is sampled
 // `samples` times for sign changes of y − ζ, every change refined by bisection to 1e-13 in the edge
 // parameter, each wetted interval split at y = 0 and into pieces ≤ 5 m integrated by 8-point
 // Gauss–Legendre, with the pressure from WaveField::pressure point by point.

@@ -44,7 +44,7 @@ TEST(CraneStatics, ReferenceSceneEquilibriumMatchesStatics) {
   const double ei = scene.boom.mesh.section.bending_rigidity(), ea = scene.boom.mesh.section.axial_rigidity();
   const double transverse = wire_force_local.y() * std::pow(length, 3) / (3 * ei) + weight_local.y() * std::pow(length, 4) / (8 * ei);
   const double axial = wire_force_local.x() * length / ea + weight_local.x() * length * length / (2 * ea);
-  EXPECT_NEAR(out.tip_deflection.y(), transverse, 5e-3 * std::abs(transverse)) << "issue bound 0.5 %";
+  EXPECT_NEAR(out.tip_deflection.y(), transverse, 5e-3 * std::abs(transverse)) << "required bound 0.5 %";
   EXPECT_NEAR(out.tip_deflection.y(), transverse, 1e-8 * std::abs(transverse)) << "Hermite elements are exact here";
   EXPECT_NEAR(out.tip_deflection.x(), axial, 1e-8 * std::abs(axial));
 

@@ -28,7 +28,7 @@ using namespace ffrf::coupling;
 using Eigen::Vector2d;
 constexpr double rho = 1025.0, g = 9.81;
 const double deep = std::numeric_limits<double>::infinity();
-const BoxHullSection hull{-32.0, 58.0, -6.0, 2.0, 40.0};  // DESIGN.md §3
+const BoxHullSection hull{-32.0, 58.0, -6.0, 2.0, 40.0};  // the reference hull (docs/architecture.md)
 
 struct Pose {
   double x, y, theta;

@@ -40,7 +40,7 @@ using namespace ffrf::coupling;
 using Eigen::Vector2d;
 constexpr double rho = 1025.0, g = 9.81, pi = std::numbers::pi;
 const double deep = std::numeric_limits<double>::infinity();
-// DESIGN.md §3: 90 m × 40 m × 8 m box, G1 6 m above the keel and 13 m aft of mid-length.
+// The reference hull (docs/architecture.md, "The reference scene"): 90 m × 40 m × 8 m box, G1 6 m above the keel and 13 m aft of mid-length.
 const BoxHullSection hull{-32.0, 58.0, -6.0, 2.0, 40.0};
 constexpr double L = 90.0, B = 40.0, x_f = 13.0;
 

@@ -1,4 +1,4 @@
-// Integrators as formulation × solver pairs (issue 12.4) against independent facts:
+// Integrators as formulation × solver pairs against independent facts:
 //  * every valid pair reproduces the crane response of the minimal-coordinate CVODE reference at
 //    rtol 1e-10 (a second method) within its own tolerance; the names in use before the split are
 //    aliases of distinct pairs; a pair that is not implemented is refused naming the valid ones;

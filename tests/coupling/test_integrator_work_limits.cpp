@@ -1,4 +1,4 @@
-// Work limits for every integrator (issue 13.3): a run that needs more work than its limit ends with
+// Work limits for every integrator: a run that needs more work than its limit ends with
 // the named failure and the remedy of its kind, within the limit.
 //  * explicit RK on a stiff boom (nodal N = 8): the linearized stability limit (explicit_stable_step,
 //    an eigenvalue computation independent of the run) says the run needs more steps than its

@@ -1,4 +1,4 @@
-// Modal coordinates in the coupled crane against the nodal model of the same mesh (issue 4):
+// Modal coordinates in the coupled crane against the nodal model of the same mesh:
 //  * a modal basis spanning all free nodal DOFs gives the nodal time history (same physics in
 //    other coordinates) to 1e-7 relative;
 //  * the modal truncation error falls as the number of vibration modes k grows;

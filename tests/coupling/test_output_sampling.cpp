@@ -1,4 +1,4 @@
-// Outputs without a right-hand side per sample (issue 14.4): the joint reaction and every other output
+// Outputs without a right-hand side per sample: the joint reaction and every other output
 // from the state and given accelerations (minimal_outputs_with_accelerations) equal the outputs that
 // solve the equations of motion at the state (minimal_outputs), and a CVODE run whose outputs use the
 // interpolant's derivative for the accelerations converges to the tight-tolerance run: at rtol 1e-6

@@ -1,4 +1,4 @@
-// The shared mode cache and ARPACK's guard (issue 12.3):
+// The shared mode cache and ARPACK's guard:
 //  * a mode-count sweep k = 1…12 on one mesh costs one eigen solve, and each k gets the leading k
 //    pairs of that solve, whichever order the requests come in (bit-identical bases, so a parallel
 //    sweep and a single run agree exactly);

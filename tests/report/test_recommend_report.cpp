@@ -1,6 +1,6 @@
 // The decision sentence of `ffrf recommend` when no candidate passes (report/recommend_report.hpp):
 // with a converged reference it names the reference as the model to use; with a reference whose own
-// refinement levels disagree (issue 15.7: the BEM barge's slack-wire record, outputs changed by 2.34
+// refinement levels disagree (as in the irregular BEM barge's slack-wire record, outputs changed by 2.34
 // and 2.85 between levels) it must not recommend that reference, and says why and what to try.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Irregular seas in a scene (issue 15.1): the [wave] keys of a JONSWAP sea load into the sea the
+// Irregular seas in a scene: the [wave] keys of a JONSWAP sea load into the sea the
 // builder synthesizes; the coupling wave field built from it has the hydro synthesis's elevation
 // (phase convention, heading) and, over the record, the variance the spectrum gives (checked
 // against the spectrum's own Gauss–Legendre integral over the band: a second method, not the

@@ -1,4 +1,4 @@
-// The scene loader: the reference scenes load with the exact DESIGN.md §3 values, and every kind
+// The scene loader: the reference scenes load with the exact documented values (docs/architecture.md), and every kind
 // of bad input is reported with file, key, value and valid range — all problems at once.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// One physics across commands (issue 11.5): compare, sweep and recommend on the same scene use the
+// One physics across commands: compare, sweep and recommend on the same scene use the
 // same reference (same stiffening — what recommend's reasoning decides —, same levels, the same
 // samples), the same error window, the same judged outputs, and give the same error for the same
 // model. The reference scene at 25 s (the window is the 5 s after the 20 s wave ramp), two levels.

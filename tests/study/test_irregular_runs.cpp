@@ -1,4 +1,4 @@
-// The crane in an irregular sea (issue 15.1 and 15.6): the regular-wave scene and the same wave
+// The crane in an irregular sea: the regular-wave scene and the same wave
 // written as one user component run to the same motions (the new path adds nothing); a seed is a
 // realisation — the same seed runs identically, another seed differently; the run's statistics
 // are those of hydro's record analysis and, on a synthetic narrow-band Gaussian record, their

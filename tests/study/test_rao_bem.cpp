@@ -1,5 +1,5 @@
 // `ffrf rao` on a [bem] scene (cases/bem_barge_crane.toml: WAMIT A(ω), B(ω), X(ω), convolution
-// radiation; study/rao_bem.hpp): issue 15's must-show — regular-wave time-domain runs (CVODE, the
+// radiation; study/rao_bem.hpp): the time domain against the frequency domain — regular-wave time-domain runs (CVODE, the
 // Cummins convolution, the .3 excitation, the box's calm-water hydrostatics) reproduce the RAOs within
 // 1 % in amplitude for hull heave, hull pitch and cargo heave, rigid, nodal and modal booms — and why
 // the check must fit the memory hull's own free modes; the long-wave limit (the hull and the cargo

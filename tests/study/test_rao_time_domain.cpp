@@ -1,4 +1,4 @@
-// Issue 15.5's must-show: regular-wave time-domain runs of the crane (the one run pipeline, CVODE
+// The time domain against the frequency domain: regular-wave time-domain runs of the crane (the one run pipeline, CVODE
 // on the minimal coordinates, nonlinear hull pressure on the wetted box) at three periods reproduce
 // the frequency domain's RAO amplitudes (study/rao.hpp) within 1 % for hull heave and pitch and
 // cargo heave, once the free modes are separated out of the settled response (study/rao_check.hpp).

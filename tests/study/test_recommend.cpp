@@ -70,7 +70,7 @@ TEST(Recommend, ReferenceSceneAtOnePercentChosenPassesNextCheaperFails) {
 }
 
 // The explicit twin of a model comes first in the ladder; when it passes with more RHS evaluations
-// than its BDF twin (a stiff wire: issue 15.7's Tp 8 s record, ARKODE 216 542 evaluations, 4.3× the
+// than its BDF twin (a stiff wire: the irregular-sea study's Tp 8 s record, ARKODE 216 542 evaluations, 4.3× the
 // reference's wall time), the BDF twin is the recommendation; a cheaper twin that failed is not.
 TEST(Recommend, CheapestPassingTwinCountsRhsEvaluationsNotLadderOrder) {
   study::Candidate explicit_twin;

@@ -1,4 +1,4 @@
-// The one run pipeline (study/run_pipeline.hpp) and the scene's initial state (issue 12.2).
+// The one run pipeline (study/run_pipeline.hpp) and the scene's initial state.
 // cases/dropped_load.toml raises the cargo by simulation.cargo_lift = 0.5 m above its hanging
 // equilibrium and releases it at rest. Independent facts: the lift (0.5 m, the scene file); the
 // static stretch s = mg/k = 0.064 m < 0.5 m, so the lifted cargo hangs on a slack wire (zero

@@ -1,4 +1,4 @@
-// `ffrf sweep` moved onto the distributed engine (issue 16): the engine's rows equal the rows of the
+// `ffrf sweep` moved onto the distributed engine: the engine's rows equal the rows of the
 // threaded sweep it replaced (study::sweep, the second method) apart from the timing column, for the
 // whole grid and for a shard; a rerun on the same journal computes nothing and gives the same rows.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The radiation model as an axis of `ffrf sweep` (issue 15.2): on a scene with [bem] the grid is
+// The radiation model as an axis of `ffrf sweep`: on a scene with [bem] the grid is
 // crossed with the three radiation models, and each configuration is measured against the converged
 // reference run with the Cummins convolution. Checked against independent facts: the convolution
 // configuration is the reference's own model, so its error is at the level of the reference's own

@@ -1,7 +1,7 @@
-// A sweep shares its models (issue 12.3): one eigen solve per distinct mesh, one build per distinct
+// A sweep shares its models: one eigen solve per distinct mesh, one build per distinct
 // crane model, and results that do not depend on the sharing or on the thread count — the quick
 // grid over 4 s run with 1 and with 2 threads, and each configuration again on a model of its own
-// (the pre-12.3 path: run_configuration without a model cache), all identical bit for bit apart
+// (the unshared path: run_configuration without a model cache), all identical bit for bit apart
 // from the wall time.
 #include <gtest/gtest.h>
 
