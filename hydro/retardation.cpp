@@ -19,14 +19,8 @@ constexpr double kTailRatio = 1.01;
 constexpr double kTailRemainder = 1e-9;
 static_assert(sizeof(PlanarMatrix) == 9 * sizeof(double), "PlanarMatrix must be 9 packed doubles");
 
-// The piecewise-linear model of one entry B_ij(ω) on [0, Ω].
-struct DampingCurve {
-  std::vector<double> omega, value;
-  double tail_exponent = 0.0, tail_share = 0.0;
-};
-
-DampingCurve damping_curve(const PlanarRadiation& r, int i, int j, const RetardationOptions& o, double noise_floor) {
-  DampingCurve c;
+DampingModel damping_curve(const PlanarRadiation& r, int i, int j, const RetardationOptions& o, double noise_floor) {
+  DampingModel c;
   if (r.frequency.front() > 0.0) {
     c.omega.push_back(0.0);
     c.value.push_back(0.0);
@@ -102,6 +96,13 @@ std::complex<double> kernel_transform(const RetardationFunction& kernel, int i, 
 
 }  // namespace
 
+DampingModel damping_model(const PlanarRadiation& radiation, int i, int j, const RetardationOptions& options) {
+  if (radiation.frequency.size() < 2 || radiation.damping.size() != radiation.frequency.size())
+    throw std::invalid_argument(fmt::format("damping model: {} frequencies and {} damping matrices; valid: equal, at least 2",
+                                            radiation.frequency.size(), radiation.damping.size()));
+  return damping_curve(radiation, i, j, options, noise_floor(radiation));
+}
+
 RetardationFunction retardation_function(const PlanarRadiation& radiation, const RetardationOptions& options) {
   check(radiation, options);
   RetardationFunction result;
@@ -113,7 +114,7 @@ RetardationFunction retardation_function(const PlanarRadiation& radiation, const
   const double floor = noise_floor(radiation);
   for (int i = 0; i < kPlanarDofs; ++i)
     for (int j = 0; j < kPlanarDofs; ++j) {
-      const DampingCurve c = damping_curve(radiation, i, j, options, floor);
+      const DampingModel c = damping_curve(radiation, i, j, options, floor);
       result.tail_exponent(i, j) = c.tail_exponent;
       result.tail_share(i, j) = c.tail_share;
       if (std::all_of(c.value.begin(), c.value.end(), [](double v) { return v == 0.0; })) continue;
@@ -154,7 +155,7 @@ PlanarMatrix retardation_at(const PlanarRadiation& radiation, double t, const Re
   const double floor = noise_floor(radiation);
   for (int i = 0; i < kPlanarDofs; ++i)
     for (int j = 0; j < kPlanarDofs; ++j) {
-      const DampingCurve c = damping_curve(radiation, i, j, options, floor);
+      const DampingModel c = damping_curve(radiation, i, j, options, floor);
       k(i, j) = 2.0 / kPi * linear_fourier_integral(c.omega.data(), c.value.data(), c.omega.size(), t).real();
     }
   return k;

@@ -41,8 +41,17 @@ struct RetardationFunction {
   double at(std::size_t k, int i, int j) const { return kernel[k](i, j); }
 };
 
+// The model of B_ij(ω) described above, as the nodes of a piecewise-linear function on [0, Ω]
+// (B = 0 beyond): the one K(t) transforms, and the Kramers–Kronig estimate of A∞ integrates
+// (infinite_frequency.hpp).
+struct DampingModel {
+  std::vector<double> omega, value;
+  double tail_exponent = 0.0, tail_share = 0.0;  // 0: no tail
+};
+DampingModel damping_model(const PlanarRadiation& radiation, int i, int j, const RetardationOptions& options = {});
+
 // Throws std::invalid_argument for dt ≤ 0, T_c < 0, fewer than 2 frequencies, or no A∞ in the data
-// (has_infinite_frequency false: pass one with estimate_infinite_frequency_added_mass).
+// (has_infinite_frequency false: set one from estimate_infinite_frequency_added_mass).
 RetardationFunction retardation_function(const PlanarRadiation& radiation, const RetardationOptions& options = {});
 
 // K(t) at any t ≥ 0 from the same model of B (the sampled kernel's source).

@@ -13,6 +13,7 @@
 #include <numbers>
 #include <optional>
 
+#include "hydro/infinite_frequency.hpp"
 #include "report/irregular_report.hpp"
 
 namespace ffrf::report {
@@ -118,8 +119,14 @@ Json settings_json(const RunContext& c) {
               {"ffrf_version", ffrf_version()},
               {"date", c.date}};
   if (c.scene->bem) {
+    const scene::BemHull& bem = *c.scene->bem;
     json["radiation"] = study::radiation_label(*c.scene);
-    json["excitation"] = c.scene->bem->excitation == scene::ExcitationModel::bem ? "bem" : "froude-krylov";
+    json["excitation"] = bem.excitation == scene::ExcitationModel::bem ? "bem" : "froude-krylov";
+    json["bem_file"] = bem.radiation_file;
+    json["bem_format"] = bem.format == scene::BemFormat::capytaine ? "capytaine" : "wamit";
+    // A∞ of the radiation models: the file's, or estimated (a Capytaine dataset without ω = ∞).
+    json["infinite_frequency_added_mass"] =
+        bem.infinite_frequency_estimate ? "estimated: " + hydro::to_string(bem.infinite_frequency_estimate->method) : "file";
   }
   return json;
 }
@@ -232,10 +239,14 @@ std::string run_header_text(const RunContext& c, const study::ModelRun& run) {
                           ? fmt::format(", BDF order <= {}", c.settings.max_order)
                           : std::string());
   if (c.scene->bem) {  // hull hydrodynamics from BEM files: which model owns which force
-    text.insert(text.size() - 1, fmt::format("hydro       radiation {}; excitation {}\n", study::radiation_label(*c.scene),
-                                             c.scene->bem->excitation == scene::ExcitationModel::bem
+    const scene::BemHull& bem = *c.scene->bem;
+    text.insert(text.size() - 1, fmt::format("hydro       radiation {}; excitation {}{}\n", study::radiation_label(*c.scene),
+                                             bem.excitation == scene::ExcitationModel::bem
                                                  ? "BEM (Froude-Krylov + diffraction), pressure hydrostatic only"
-                                                 : "Froude-Krylov (wave pressure on the wetted box)"));
+                                                 : "Froude-Krylov (wave pressure on the wetted box)",
+                                             bem.infinite_frequency_estimate
+                                                 ? "; A∞ estimated (" + hydro::to_string(bem.infinite_frequency_estimate->method) + ")"
+                                                 : std::string()));
   }
   return text;
 }

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "hydro/wamit_reader.hpp"
+#include "scene/capytaine_files.hpp"
 
 namespace ffrf::scene {
 
@@ -63,6 +64,12 @@ std::vector<BemProblem> load_bem_files(Scene& scene) {
       problems.push_back({key, fmt::format("{}: {}", path, error.what())});
     }
   };
+  if (bem.format == BemFormat::capytaine) {  // one NetCDF dataset (scene/capytaine_files.hpp)
+    read("bem.capytaine_file", bem.radiation_file, [&](const std::string&) {
+      for (BemProblem& problem : load_capytaine_dataset(scene)) problems.push_back(std::move(problem));
+    });
+    return problems;
+  }
   read("bem.radiation_file", bem.radiation_file,
        [&](const std::string& path) { bem.radiation = hydro::read_wamit_radiation(path, scaling); });
   read("bem.excitation_file", bem.excitation_file,
@@ -71,17 +78,27 @@ std::vector<BemProblem> load_bem_files(Scene& scene) {
        [&](const std::string& path) { bem.hydrostatics = hydro::read_wamit_hydrostatics(path, scaling); });
   if (bem.hydrostatics) {
     // The pressure integration owns the hydrostatics; the .hst must describe the same waterplane.
-    const Hull& hull = *scene.hull;
-    const double box = scene.environment.water_density * scene.environment.gravity * hull.length * hull.width;
-    const double file = (*bem.hydrostatics)(1, 1);
-    if (!(std::abs(file - box) <= 0.02 * box)) {
-      problems.push_back({"bem.hydrostatics_file",
-                          fmt::format("{}: C33 = {:.6g} N/m differs from the box hull's ρ·g·L·B = {:.6g} N/m by {:.1f} % "
-                                      "(valid: within 2 %): the BEM files describe another hull than [hull]",
-                                      bem.hydrostatics_file, file, box, 100.0 * (file - box) / box)});
-    }
+    if (std::string mismatch = waterplane_mismatch(scene, *bem.hydrostatics, bem.hydrostatics_file); !mismatch.empty())
+      problems.push_back({"bem.hydrostatics_file", std::move(mismatch)});
   }
   return problems;
+}
+
+std::string waterplane_mismatch(const Scene& scene, const hydro::PlanarMatrix& hydrostatics, const std::string& file) {
+  const Hull& hull = *scene.hull;
+  const double box = scene.environment.water_density * scene.environment.gravity * hull.length * hull.width;
+  const double c33 = hydrostatics(1, 1);
+  if (std::abs(c33 - box) <= 0.02 * box) return {};
+  return fmt::format("{}: C33 = {:.6g} N/m differs from the box hull's ρ·g·L·B = {:.6g} N/m by {:.1f} % (valid: within 2 %): "
+                     "the BEM files describe another hull than [hull]", file, c33, box, 100.0 * (c33 - box) / box);
+}
+
+std::string bem_radiation_key(const BemHull& bem) {
+  return bem.format == BemFormat::capytaine ? "bem.capytaine_file" : "bem.radiation_file";
+}
+
+std::string bem_excitation_key(const BemHull& bem) {
+  return bem.format == BemFormat::capytaine ? "bem.capytaine_file" : "bem.excitation_file";
 }
 
 }  // namespace ffrf::scene

@@ -71,7 +71,9 @@ std::shared_ptr<const hydro::RadiationMemoryModel> build_model(const Scene& scen
 std::shared_ptr<const hydro::RadiationMemoryModel> bem_radiation_model(const Scene& scene) {
   const BemHull& bem = *scene.bem;
   const Eigen::Vector2d origin = bem_origin_offset(scene);
-  const std::string key = fmt::format("{}|{}|{}|{}|{}|{}|{}|{}|{}|{}|{}", bem.radiation_file, hydro::to_string(bem.radiation_model),
+  // A∞ of a Capytaine dataset without one depends on the estimate's method.
+  const std::string key = fmt::format("{}|{}|{}|{}|{}|{}|{}|{}|{}|{}|{}|{}", bem.radiation_file, hydro::to_string(bem.radiation_model),
+                                      hydro::to_string(bem.infinite_frequency_method),
                                       bem.length_scale, scene.environment.water_density, scene.environment.gravity,
                                       bem.kernel_time_step, bem.truncation_time, bem.state_space_tolerance, origin.x(),
                                       origin.y(),

@@ -15,6 +15,7 @@
 #include "fem/mesh.hpp"
 #include "hydro/wave_synthesis.hpp"
 #include "hydro/added_mass_symmetry.hpp"
+#include "hydro/infinite_frequency.hpp"
 #include "hydro/planar_coefficients.hpp"
 #include "hydro/radiation_memory.hpp"
 
@@ -135,13 +136,16 @@ struct Radiation {
   double pitch_damping;        // B55 [-]
 };
 
-// Hull hydrodynamics from WAMIT files ([bem]; docs/hydrodynamics.md §6): the files as read (at the
-// BEM body origin, ffrf's signs), where that origin lies on the hull, and which models use them.
+// Hull hydrodynamics from WAMIT files or a Capytaine dataset ([bem]; docs/hydrodynamics.md §6): the
+// files as read (at the BEM body origin, ffrf's signs), where that origin lies on the hull, and
+// which models use them.
 enum class ExcitationModel { froude_krylov, bem };  // who owns the incident-wave force (§6 table)
+enum class BemFormat { wamit, capytaine };          // .1/.3/.hst, or one NetCDF dataset (bem.capytaine_file)
 
 struct BemHull {
-  std::string radiation_file;                 // .1, resolved against the scene file's folder
-  std::string excitation_file;                // .3 ("" = none)
+  BemFormat format = BemFormat::wamit;
+  std::string radiation_file;                 // .1 or the .nc, resolved against the scene file's folder
+  std::string excitation_file;                // .3 or the .nc ("" = none)
   std::string hydrostatics_file;              // .hst ("" = none)
   double length_scale = 1.0;                  // ULEN [m]
   double origin_above_keel = 0.0;             // BEM origin, hull frame [m]
@@ -152,7 +156,9 @@ struct BemHull {
   double state_space_tolerance = 0.02;        // impulse-response error e_r of the fit [-]
   double kernel_time_step = 0.05;             // K(t) sampling [s]
   double truncation_time = 0.0;               // T_c [s], 0 = automatic
+  hydro::InfiniteFrequencyMethod infinite_frequency_method = hydro::InfiniteFrequencyMethod::kramers_kronig;
   hydro::PlanarRadiation radiation;           // A(ω), B(ω), A(0), A∞ (every A symmetric: see below)
+  std::optional<hydro::InfiniteFrequencyEstimate> infinite_frequency_estimate;  // A∞ not in the file: estimated
   // What making the added mass symmetric removed when the files were read (hydro/added_mass_symmetry.hpp).
   hydro::AddedMassAsymmetry added_mass_asymmetry;
   std::optional<hydro::PlanarExcitation> excitation_table;

@@ -18,6 +18,12 @@ BemHull bem_keys(const WrittenKeys& keys, const std::string& file) {
   bem.radiation_file = path("bem.radiation_file");
   bem.excitation_file = path("bem.excitation_file");
   bem.hydrostatics_file = path("bem.hydrostatics_file");
+  if (keys.has("bem.capytaine_file")) {  // one dataset holds A, B and the excitation (check_bem_keys: no WAMIT keys)
+    bem.format = BemFormat::capytaine;
+    bem.radiation_file = bem.excitation_file = path("bem.capytaine_file");
+  }
+  if (keys.text("bem.infinite_frequency_added_mass") == "high-frequency")
+    bem.infinite_frequency_method = hydro::InfiniteFrequencyMethod::high_frequency;
   bem.length_scale = keys.number("bem.length_scale");
   bem.origin_above_keel = keys.number("bem.origin_above_keel");
   bem.origin_forward_of_mid_length = keys.number("bem.origin_forward_of_mid_length");

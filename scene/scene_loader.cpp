@@ -12,6 +12,7 @@
 
 #include "scene/bem_files.hpp"
 #include "scene/computed_quantities.hpp"
+#include "scene/bem_keys.hpp"
 #include "scene/key_values.hpp"
 #include "scene/scene_build.hpp"
 #include "scene/scene_checks.hpp"
@@ -206,6 +207,7 @@ class SceneReader final : public WrittenKeys {
       report(line_of(*sections_.at("hull_damping")), "hull_damping", "",
              "belongs to a floating hull: a hub scene has no hull degrees of freedom to damp");
     }
+    if (sections_.contains("bem")) check_bem_keys(*this, line_of(*sections_.at("bem")));
     if (hub_) {
       for (const char* key : {"boom.angle", "boom.root_x", "boom.root_y"}) {
         if (present_.contains(key)) {
@@ -262,16 +264,21 @@ class SceneReader final : public WrittenKeys {
              "conflicts with [bem]: the BEM files give the radiation coefficients; remove one of the two sections");
       return;
     }
-    const std::vector<BemProblem> problems = load_bem_files(scene);
-    for (const BemProblem& problem : problems) {
-      report(line_of_key(problem.key), problem.key, value_of_key(problem.key), problem.message);
+    bool bem_files_failed = false;
+    for (const BemProblem& problem : load_bem_files(scene)) {
+      bem_files_failed = bem_files_failed || !problem.warning;
+      if (problem.warning) {
+        scene.warnings.push_back(format_problem({file_, line_of_key(problem.key), 0, problem.key, value_of_key(problem.key), problem.message}));
+      } else {
+        report(line_of_key(problem.key), problem.key, value_of_key(problem.key), problem.message);
+      }
     }
-    if (!problems.empty()) return;
+    if (bem_files_failed) return;
     // One added-mass matrix for every path of the model, whatever the file format: its symmetric part.
     BemHull& bem = *scene.bem;
     bem.added_mass_asymmetry = hydro::symmetrise_added_mass(bem.radiation);
     if (bem.added_mass_asymmetry.relative > hydro::asymmetry_warning) {
-      const std::string key = "bem.radiation_file";
+      const std::string key = scene.bem->format == BemFormat::capytaine ? "bem.capytaine_file" : "bem.radiation_file";
       scene.warnings.push_back(format_problem(
           {file_, line_of_key(key), 0, key, value_of_key(key),
            fmt::format("the added-mass matrix of {} is not symmetric: its largest relative asymmetry is {}; the model uses "

@@ -92,9 +92,10 @@ constexpr std::array kSections{
                 "critical. Leave the section out for no radiation."},
     SectionSpec{"bem", SectionRole::optional,
                 "Hull hydrodynamics from WAMIT output files (.1 added mass and damping, .3 excitation, .hst "
-                "hydrostatics) of the same hull, referred to G1: radiation by constant A(ω_c), B(ω_c), the Cummins "
-                "convolution or its state-space fit; excitation by the incident-wave pressure (Froude–Krylov) or the "
-                "BEM file (Froude–Krylov + diffraction). Excludes [radiation]. docs/hydrodynamics.md §6."},
+                "hydrostatics) or a Capytaine NetCDF dataset of the same hull, referred to G1: radiation by constant "
+                "A(ω_c), B(ω_c), the Cummins convolution or its state-space fit; excitation by the incident-wave "
+                "pressure (Froude–Krylov) or the BEM file (Froude–Krylov + diffraction). Excludes [radiation]. "
+                "docs/hydrodynamics.md §6."},
     SectionSpec{"hull_damping", SectionRole::optional,
                 "Damping added to the hull's equations in surge, heave and pitch at G1, beside [radiation] or [bem] "
                 "(viscous and skin-friction damping that potential flow leaves out): linear, F = −b v, and "
@@ -235,7 +236,16 @@ constexpr std::array kKeys{
     // [bem]
     text("bem.radiation_file",
          "WAMIT .1 file (added mass and damping with the zero- and infinite-frequency rows), relative to the scene "
-         "file. Required in [bem]."),
+         "file. [bem] needs this or bem.capytaine_file."),
+    text("bem.capytaine_file",
+         "Capytaine NetCDF dataset (.nc, relative to the scene file) in place of the WAMIT files: added mass, "
+         "radiation damping, Froude–Krylov and diffraction forces of the dofs Surge, Heave, Pitch, dimensional SI "
+         "at the file's ρ (scaled to environment.water_density) and g (must equal environment.gravity). Excludes "
+         "bem.radiation_file, excitation_file, hydrostatics_file and length_scale. docs/hydrodynamics.md §4.5."),
+    choice("bem.infinite_frequency_added_mass", "kramers-kronig|high-frequency", "kramers-kronig",
+           "A∞ of a Capytaine dataset without ω = ∞ (a warning names the method and both estimates): "
+           "kramers-kronig = A(ω) − (2/π)PV∫B(ν)/(ν² − ω²)dν (median over the tabulated ω); high-frequency = "
+           "A∞ + c/ω² fitted to the last 5 frequencies. Only for bem.capytaine_file."),
     text("bem.excitation_file", "WAMIT .3 file (excitation per unit amplitude); needed by bem.excitation = \"bem\"."),
     text("bem.hydrostatics_file", "WAMIT .hst file; checked against the box hull's waterplane (C33 = ρgLB within 2 %)."),
     defaulted("bem.length_scale", length, between(0.01, 1000.0), 1.0, "WAMIT's ULEN of the run that wrote the files."),

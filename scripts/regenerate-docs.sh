@@ -85,6 +85,7 @@ example "$guide" sweep-example "sweep cases/paper_floating_crane.toml --quick --
 example "$guide" recommend-example "recommend cases/paper_floating_crane.toml --tolerance 1%"
 example "$guide" bem-run "run cases/bem_barge_crane.toml --radiation state-space --duration 30" "grep -v 'note:' | sed -n '1,4p'"
 example "$guide" bem-compare "compare cases/bem_barge_crane.toml --duration 30" "awk '/^radiation models/ { p = 1 } p'"
+example "$guide" capytaine-run "run cases/capytaine_barge_crane.toml --duration 10" "grep -v 'note:' | sed -n '1,6p'"
 example "$guide" rao-example "rao cases/paper_floating_crane.toml --check-time-domain --out rao" \
   "awk 'NR <= 11 { print; next } NR == 12 { print \"...\" } /^time-domain check/'"
 

@@ -10,6 +10,7 @@
 
 #include "coupling/bem_excitation.hpp"
 #include "hydro/radiation_memory.hpp"
+#include "scene/bem_files.hpp"
 #include "scene/bem_hull_model.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -96,9 +97,9 @@ void require_bem_band(const scene::Scene& scene, const std::vector<double>& angu
       }
     }
   };
-  check(bem.radiation.frequency, "bem.radiation_file", bem.radiation_file);
+  check(bem.radiation.frequency, scene::bem_radiation_key(bem), bem.radiation_file);
   if (bem.excitation == scene::ExcitationModel::bem && bem.excitation_table) {
-    check(bem.excitation_table->frequency, "bem.excitation_file", bem.excitation_file);
+    check(bem.excitation_table->frequency, scene::bem_excitation_key(bem), bem.excitation_file);
   }
 }
 

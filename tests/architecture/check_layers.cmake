@@ -3,7 +3,7 @@
 #   report <- app, with hydro beside coupling on linalg
 #   (coupling may use hydro; hydro knows nothing of the crane); distributed/ (the task-farm engine)
 #   knows nothing of ffrf and serves study/ and app/;
-#   CLI11 only in app/, nlohmann-json only in report/, toml++ only in scene/;
+#   CLI11 only in app/, nlohmann-json only in report/, toml++ only in scene/, netCDF only in hydro/;
 #   no printing (fmt::print, printf, std::cout/cerr, puts) in scene/, study/, report/.
 # Run as: cmake -DSOURCE_DIR=<repository> -P check_layers.cmake. Every violation is listed with its
 # file and line; the script fails when there is one.
@@ -54,6 +54,9 @@ foreach(layer IN LISTS layers)
       endif()
       if(line MATCHES "^[ \t]*#[ \t]*include[ \t]*<toml" AND NOT layer STREQUAL "scene")
         list(APPEND violations "${shown}:${number}: toml++ outside scene/ (${line})")
+      endif()
+      if(line MATCHES "^[ \t]*#[ \t]*include[ \t]*<netcdf" AND NOT layer STREQUAL "hydro")
+        list(APPEND violations "${shown}:${number}: netCDF outside hydro/ (${line})")
       endif()
       if(layer MATCHES "^(scene|study|report)$" AND
          line MATCHES "(fmt::print|std::cout|std::cerr|std::clog|[^a-z_]printf[ \t]*\\(|[^a-z_]puts[ \t]*\\()")
