@@ -114,7 +114,9 @@ inline void expect_complete_output(const fs::path& out, const RunResult& run) {
     const std::string script = png.substr(0, png.size() - 4) + ".gp";
     EXPECT_FALSE(files.count(png) || files.count(script)) << png << " is listed as left out but has a file";
     EXPECT_NE(run.err.find("chart " + png + " left out"), std::string::npos) << "stderr does not name " << png << ":\n" << run.err;
-    if (!report.empty()) EXPECT_NE(report.find("`" + png + "` left out"), std::string::npos) << "report.md does not name " << png;
+    if (!report.empty()) {
+      EXPECT_NE(report.find("`" + png + "` left out"), std::string::npos) << "report.md does not name " << png;
+    }
   }
   for (const std::string& png : failed) {
     EXPECT_FALSE(files.count(png)) << png << " failed but a PNG is there";

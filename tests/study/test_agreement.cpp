@@ -129,7 +129,7 @@ void expect_one_cheapest(const scene::Scene& scene, double duration, const study
   EXPECT_EQ(chosen.integrator, coupling::Integrator::cvode) << chosen.label();
   // No candidate that recommend ran and saw pass did less solver work than the one it names.
   for (const study::Candidate& c : rec.candidates) {
-    if (c.status == study::CandidateStatus::passed) EXPECT_GE(c.work(), chosen.work()) << c.label();
+    if (c.status == study::CandidateStatus::passed) { EXPECT_GE(c.work(), chosen.work()) << c.label(); }
   }
 
   const study::SweepStudy sweep = quick_sweep(scene, duration);

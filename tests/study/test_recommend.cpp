@@ -43,7 +43,7 @@ TEST(Recommend, ReferenceSceneAtOnePercentChosenPassesNextCheaperFails) {
   EXPECT_GT(rec.work_speedup(), 1.0);
   // No candidate that passed did less solver work (its integrator twins among them).
   for (const study::Candidate& t : rec.candidates) {
-    if (t.status == study::CandidateStatus::passed) EXPECT_LE(c.work(), t.work()) << t.label();
+    if (t.status == study::CandidateStatus::passed) { EXPECT_LE(c.work(), t.work()) << t.label(); }
   }
   // The prestress is 5 % of the Euler load: the reasoning asks for static stiffening, and the
   // unstiffened twin of the chosen model is what it proves wrong.
