@@ -108,8 +108,10 @@ std::string wire_table(const Comparison& c) {
   std::string t = "| model | static tension [N] | max tension [N] | dynamic amplification factor | slack events |\n"
                   "|---|--:|--:|--:|--:|\n";
   for (const auto& [run, label] : all_runs(c)) {
-    t += fmt::format("| {} | {} | {} | {:.4f} | {} |\n", label, format_value(run->static_outputs().wire_tension),
-                     format_value(run->amplification * run->static_outputs().wire_tension), run->amplification,
+    // No wire (a hub) or no tension: no amplification factor, shown as "-".
+    t += fmt::format("| {} | {} | {} | {} | {} |\n", label, format_value(run->static_outputs().wire_tension),
+                     format_value(run->amplification * run->static_outputs().wire_tension),
+                     std::isfinite(run->amplification) ? fmt::format("{:.4f}", run->amplification) : std::string("-"),
                      run->slack_events());
   }
   return t;

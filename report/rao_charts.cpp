@@ -60,7 +60,7 @@ std::string natural_period_marks(const study::RaoResult& result) {
       const bool seen = std::any_of(labelled.begin(), labelled.end(), [&](double t) { return std::abs(t / period - 1.0) < 0.01; });
       if (!seen) {
         labelled.push_back(period);
-        out += fmt::format("set label {} {} at {:.6g}, graph 0.98 rotate by 90 right font ',8' tc lc {} noenhanced front\n", tag,
+        out += fmt::format("set label {} {} at {:.6g}, graph 0.98 rotate by 90 right font ',8' tc lt {} noenhanced front\n", tag,
                            gnuplot_quoted(fmt::format(" T{} {} {:.4g} s", j + 1, modes[j].dominant, period)), period, m + 1);
       }
       ++tag;

@@ -12,7 +12,8 @@ SeaWeighting sea_weighting(const hydro::WaveSpectrum& spectrum, double low, doub
   SeaWeighting weighting;
   weighting.spectrum = spectrum;
   weighting.m0 = hydro::spectral_moment(spectrum, 0);
-  weighting.band_m0 = hydro::spectral_moment(spectrum, 0, low, high);
+  // A single frequency (or none) spans no band: none of the sea's variance lies inside it.
+  weighting.band_m0 = high > low ? hydro::spectral_moment(spectrum, 0, low, high) : 0.0;
   return weighting;
 }
 

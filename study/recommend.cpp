@@ -194,7 +194,13 @@ std::vector<MeasuredModel> measured_candidates(const std::vector<Candidate>& can
 }
 
 std::optional<std::size_t> cheapest_passing_candidate(const std::vector<Candidate>& candidates, double tolerance) {
-  return cheapest_passing(measured_candidates(candidates), tolerance);
+  // A candidate recommend judged failed (its error, or a check beyond it such as the minimality of
+  // the named model) never passes here, whatever its error alone says.
+  std::vector<MeasuredModel> measured = measured_candidates(candidates);
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (candidates[i].status != CandidateStatus::passed) measured[i].ran = false;
+  }
+  return cheapest_passing(measured, tolerance);
 }
 
 double Recommendation::work_speedup() const {
