@@ -28,25 +28,15 @@
 #include "coupling/simulation.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/run_pipeline.hpp"
+#include "../scene_text.hpp"
 
 namespace {
 
 using namespace ffrf;
 constexpr double kPi = std::numbers::pi;
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using ffrf::test_text::read_text;
+using ffrf::test_text::replaced;
 
 // cases/bem_barge_crane.toml with the fixture's paths made absolute and a 8.100003 s wave (a tabulated period of barge.3).
 std::string barge_scene_text() {

@@ -28,6 +28,7 @@
 #include "study/rao.hpp"
 #include "study/rao_check.hpp"
 #include "study/run_pipeline.hpp"
+#include "../scene_text.hpp"
 
 namespace ffrf {
 namespace {
@@ -36,19 +37,8 @@ using Complex = std::complex<double>;
 constexpr double kPeriod = 8.100003;  // a tabulated period of barge.1 and barge.3
 const std::string kSource = FFRF_SOURCE_DIR;
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using ffrf::test_text::read_text;
+using ffrf::test_text::replaced;
 
 // cases/bem_barge_crane.toml on the asymmetric .1, constant radiation at kPeriod, a 2 cm wave of kPeriod.
 std::string asymmetric_scene_text() {
