@@ -11,11 +11,12 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "hydro/harmonic_record.hpp"
+
 namespace ffrf::hydro {
 
 namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-std::mutex planner_mutex;
 
 struct FftwFree {
   void operator()(void* p) const { fftw_free(p); }
@@ -52,7 +53,7 @@ PowerSpectrum welch_spectrum(const std::vector<double>& record, double dt, const
   std::unique_ptr<fftw_complex, FftwFree> out(fftw_alloc_complex(bins));
   fftw_plan plan = nullptr;
   {
-    const std::lock_guard<std::mutex> lock(planner_mutex);
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     plan = fftw_plan_dft_r2c_1d(static_cast<int>(length), in.get(), out.get(), FFTW_ESTIMATE);
   }
   if (plan == nullptr) throw std::runtime_error(fmt::format("Welch spectrum: FFTW could not plan a transform of {} samples", length));
@@ -72,7 +73,7 @@ PowerSpectrum welch_spectrum(const std::vector<double>& record, double dt, const
     ++result.segments;
   }
   {
-    const std::lock_guard<std::mutex> lock(planner_mutex);
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     fftw_destroy_plan(plan);
   }
   for (auto& s : result.density) s /= static_cast<double>(result.segments);

@@ -1,0 +1,77 @@
+// A record of harmonic sums sampled once and interpolated: channels
+//   s_c(t) = Σ_i a_{c,i} e^{i δ ω_i t},   ω_i = (n0 + i) Δω   (whole multiples of one frequency step),
+// sampled at t_j = j Δt with Δt = T / N (T = 2π/Δω, the sums' period) by one inverse FFT of length N
+// per channel (FFTW), together with their time derivatives ṡ_c (coefficients × iδω_i, a second FFT),
+// and read back by cubic Hermite interpolation between samples (C¹ in t). The interpolation error
+// of a cubic Hermite segment is s⁗(ξ) τ²(1 − τ)² Δt⁴ / 24 (τ ∈ [0, 1] the position in the segment):
+// largest near the midpoint, where the exact sums are known from a third FFT (coefficients ×
+// e^{iδω_i Δt/2}). The record measures that error at the midpoint of every segment of every channel
+// and chooses N so that it stays below the requested tolerance (a stated, measured bound, not an
+// estimate from Σ|a|ω⁴, which grows with the component count while the sums grow with its root).
+// Cost to build: 3 FFTs of length N per channel (plus a retry with a finer N when the first guess
+// misses); to read: one segment lookup and 4 multiply–adds per channel. Memory: 32 bytes per
+// channel and sample (value and derivative), stated before it is allocated.
+// Reference: FFT synthesis of irregular seas (Faltinsen 1990 §2.2; DNV-RP-C205 §3.3).
+#pragma once
+
+#include <complex>
+#include <cstddef>
+#include <cstdint>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace ffrf::hydro {
+
+// FFTW's planner is not thread-safe: every planning call in ffrf holds this lock.
+std::mutex& fftw_planner_mutex();
+
+// Harmonic sums to record: coefficients[c][i] = a_{c,i} for component i (frequency (n0 + i) Δω).
+struct HarmonicSums {
+  double frequency_step = 0.0;       // Δω [rad/s] > 0
+  std::int64_t first_harmonic = 0;   // n0 ≥ 0
+  int time_sign = -1;                // δ: +1 or −1 (the sign of ω t in the exponent)
+  std::vector<std::vector<std::complex<double>>> coefficients;  // channels × components (all equal length)
+};
+
+struct HarmonicRecordOptions {
+  double duration = 0.0;          // [s] > 0: samples cover [0, duration] (and one segment beyond)
+  double tolerance = 1e-9;        // largest interpolation error allowed at a segment midpoint, any channel
+  std::size_t memory_limit = std::size_t{4} << 30;  // [bytes] refuse (std::length_error) above this
+  double largest_time_step = 1.0; // [s] Δt never exceeds this (a ceiling for very smooth sums)
+};
+
+class HarmonicRecord {
+ public:
+  HarmonicRecord() = default;
+  // Throws std::invalid_argument naming the field and value (Δω ≤ 0, n0 < 0, δ ∉ {±1}, no channel,
+  // channels of unequal length, duration ≤ 0 or not finite, tolerance ≤ 0), std::length_error when
+  // the samples would take more than options.memory_limit bytes (the message gives the size), and
+  // std::runtime_error when FFTW cannot plan a transform.
+  static HarmonicRecord build(const HarmonicSums& sums, const HarmonicRecordOptions& options);
+  // Bytes the record of these sums would take at the time step the tolerance needs (without
+  // building it): the check a caller makes before it commits to the fast path.
+  static std::size_t predicted_memory(const HarmonicSums& sums, const HarmonicRecordOptions& options);
+
+  std::size_t channels() const { return channels_; }
+  std::size_t samples() const { return samples_; }
+  double time_step() const { return time_step_; }
+  double duration() const { return duration_; }        // t covered: [0, duration]
+  std::size_t fft_size() const { return fft_size_; }   // N of the transforms
+  double midpoint_error() const { return midpoint_error_; }  // measured, largest over channels and segments
+  double build_seconds() const { return build_seconds_; }
+  std::size_t memory_bytes() const { return (values_.size() + rates_.size()) * sizeof(std::complex<double>); }
+  bool covers(double t) const { return t >= 0.0 && t <= duration_; }
+
+  // s_c(t) into out[0 … channels − 1]; t must be covered (not checked on this hot path).
+  void evaluate(double t, std::complex<double>* out) const;
+  // s_c(t) and ṡ_c(t).
+  void evaluate(double t, std::complex<double>* out, std::complex<double>* rate) const;
+
+ private:
+  std::size_t channels_ = 0, samples_ = 0, fft_size_ = 0;
+  double time_step_ = 0.0, duration_ = 0.0, midpoint_error_ = 0.0, build_seconds_ = 0.0;
+  std::vector<std::complex<double>> values_, rates_;  // [sample × channels + channel]
+};
+
+}  // namespace ffrf::hydro
