@@ -48,6 +48,15 @@ class MassMatrixError : public std::runtime_error {
   double smallest_pivot_;
 };
 
+class IncidentWaveRecord;
+
+// How this system's hull loads read the incident wave so far: from the record of the sea, or by
+// the exact component sums where the record could not answer (outside its patches or its time).
+struct HullLoadCounts {
+  long recorded = 0;
+  long exact = 0;  // with a record: the fallbacks
+};
+
 class CraneEquations {
  public:
   using ConstRef = Eigen::Ref<const Eigen::VectorXd>;
@@ -93,6 +102,11 @@ class CraneEquations {
   virtual int cargo_offset() const = 0;
   // Elastic coordinate count (0 for the rigid boom).
   virtual int elastic_size() const = 0;
+  // Hull-load evaluations in a wave so far, by path (zeros without a wave).
+  virtual HullLoadCounts hull_load_counts() const { return {}; }
+  // The record of the sea the hull loads read (nullptr: component sums), and why not when absent.
+  virtual const IncidentWaveRecord* wave_record() const { return nullptr; }
+  virtual std::string exact_kinematics_reason() const { return {}; }
 
   // --- structured linearizations for the Newton solvers (coupling/second_order_jacobian.hpp) ---
   // Structure of the minimal-coordinate blocks (dense by default).

@@ -8,10 +8,12 @@
 #include <Eigen/Dense>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "coupling/bem_excitation.hpp"
 #include "coupling/floating_frame_body.hpp"
 #include "coupling/hull_pressure.hpp"
+#include "coupling/incident_wave_record.hpp"
 #include "coupling/prescribed_motion.hpp"
 #include "coupling/wave_field.hpp"
 #include "hydro/radiation_memory.hpp"
@@ -35,6 +37,11 @@ struct HullModel {
   // First-order excitation from BEM (Froude–Krylov + diffraction) at G1; when set, the pressure is
   // integrated in calm water (hydrostatics only), so Froude–Krylov is counted once.
   std::shared_ptr<const BemExcitation> bem_excitation;
+  // The incident sea of this record evaluated once (coupling/incident_wave_record.hpp): the hull
+  // pressure reads the wave from it, and takes the exact component sums wherever it cannot answer.
+  // Empty: every evaluation sums the components (regular waves, exact kinematics, finite depth).
+  std::shared_ptr<const IncidentWaveRecord> wave_record;
+  std::string exact_kinematics_reason;  // without a record in a wave: why (for reports)
   double mooring_stiffness = 0.0;                           // surge spring [N/m], anchored at x = 0
   bool hydrostatics = true;                                 // pressure integration on/off
   // Linear support springs towards `support_pose` (surge, heave, pitch): test scenes that hold the

@@ -55,7 +55,14 @@ void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q
   // Froude–Krylov has one owner: the pressure of the incident wave, or the BEM excitation.
   if (hull.hydrostatics) {
     const WaveField* wave = (with_wave && m_.wave && !hull.bem_excitation) ? &*m_.wave : nullptr;
-    const HullLoad load = hull_pressure_load(hull.section, wave, m_.water_density, g, hull_q.head<2>(), hull_q(2), t);
+    std::optional<HullLoad> recorded;
+    if (wave && hull.wave_record) {
+      recorded = recorded_hull_pressure_load(hull.section, *hull.wave_record, wave_polynomials_, wave->ramp(t),
+                                             m_.water_density, g, hull_q.head<2>(), hull_q(2), t);
+    }
+    if (wave) ++(recorded ? hull_load_counts_.recorded : hull_load_counts_.exact);
+    const HullLoad load =
+        recorded ? *recorded : hull_pressure_load(hull.section, wave, m_.water_density, g, hull_q.head<2>(), hull_q(2), t);
     hull_force_.head<2>() += load.force;
     hull_force_(2) += load.moment;
   }

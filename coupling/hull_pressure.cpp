@@ -19,6 +19,7 @@
 #include <stdexcept>
 
 #include "coupling/component_phasors.hpp"
+#include "coupling/hull_edges.hpp"
 #include "coupling/waterline_crossings.hpp"
 
 namespace ffrf::coupling {
@@ -104,24 +105,6 @@ class SeriesSums {
   std::array<Complex, series_terms> sums_{};
 };
 
-// Running pressure moments of one edge (over the edge parameter s, divided by ρg):
-// ∫ p ds, ∫ p (s − s_piece) ds accumulated into ∫ p ds and ∫ p (r − r_G1) ds / |d|.
-struct EdgeMoments {
-  double p0 = 0.0;
-  Eigen::Vector2d p1 = Eigen::Vector2d::Zero();
-  double wetted_length = 0.0;
-};
-
-struct Edge {
-  Eigen::Vector2d a, d;
-  double length;
-};
-
-struct PieceIntegrals {
-  double j0 = 0.0;  // ∫ p/(ρg) du over [0, h]
-  double j1 = 0.0;  // ∫ p/(ρg) u du
-};
-
 // Adds Re ∫₀ʰ c e^{λu} du and Re ∫₀ʰ u c e^{λu} du for c = amplitude·e^{κ y0 + offset + iθ0},
 // λ = κ d_y + i k d_x.
 void add_exponential(double amplitude, double kappa, double offset, double k, double theta0, double y0,
@@ -145,7 +128,7 @@ void add_exponential(double amplitude, double kappa, double offset, double k, do
 // each term c_i e^{λ_i u} with c_i = r a_i e^{k_i (κ̂ y + i x) + i(φ_i − δ ω_i t)} at the reference end and
 // λ_i h = k_i w, w = ±(κ̂ d_y + i d_x) h (κ̂ = 1 below still water, 0 on the crest extension): both are
 // phasors e^{k_i z} of the field (component_phasors.hpp), by recurrence on a harmonic grid.
-void add_deep_water_terms(const WaveField& wave, double t, double ramp, bool airy, const Edge& edge, double s0,
+void add_deep_water_terms(const WaveField& wave, double t, double ramp, bool airy, const HullEdge& edge, double s0,
                           double h, PieceIntegrals& out) {
   const double decay = airy ? 1.0 : 0.0;
   const bool from_end = airy && edge.d.y() > 0.0;  // integrate from the end with the larger exponent
@@ -181,12 +164,10 @@ void add_deep_water_terms(const WaveField& wave, double t, double ramp, bool air
 }
 
 // ∫ p/(ρg) over the wetted piece [s0, s1] of an edge, below (airy) or above still water.
-PieceIntegrals piece_integrals(const WaveField* wave, double t, const Edge& edge, double s0, double s1, bool airy) {
+PieceIntegrals piece_integrals(const WaveField* wave, double t, const HullEdge& edge, double s0, double s1, bool airy) {
   const double h = s1 - s0;
   const double y0 = edge.a.y() + s0 * edge.d.y();
-  PieceIntegrals out;
-  out.j0 = -(y0 * h + 0.5 * edge.d.y() * h * h);                 // hydrostatic −y
-  out.j1 = -(0.5 * y0 * h * h + edge.d.y() * h * h * h / 3.0);
+  PieceIntegrals out = hydrostatic_piece(edge, s0, h);
   if (wave == nullptr) return out;
   const double ramp = wave->ramp(t);
   if (ramp == 0.0) return out;
@@ -207,7 +188,7 @@ PieceIntegrals piece_integrals(const WaveField* wave, double t, const Edge& edge
 }
 
 // Wetted interval [s0, s1]: split where y(s) = 0 (p changes formula there), then integrate.
-void integrate_wetted(const WaveField* wave, double t, const Edge& edge, const Eigen::Vector2d& g1, double s0,
+void integrate_wetted(const WaveField* wave, double t, const HullEdge& edge, const Eigen::Vector2d& g1, double s0,
                       double s1, EdgeMoments& acc) {
   if (!(s1 > s0)) return;
   acc.wetted_length += (s1 - s0) * edge.length;
@@ -223,13 +204,11 @@ void integrate_wetted(const WaveField* wave, double t, const Edge& edge, const E
   for (int i = 0; i < pieces; ++i) {
     const double lo = cuts[static_cast<std::size_t>(i)], hi = cuts[static_cast<std::size_t>(i + 1)];
     const bool airy = edge.a.y() + 0.5 * (lo + hi) * edge.d.y() <= 0.0;
-    const PieceIntegrals piece = piece_integrals(wave, t, edge, lo, hi, airy);
-    acc.p0 += piece.j0;
-    acc.p1 += piece.j0 * (edge.a + lo * edge.d - g1) + piece.j1 * edge.d;
+    add_piece(edge, g1, lo, piece_integrals(wave, t, edge, lo, hi, airy), acc);
   }
 }
 
-EdgeMoments edge_moments(const WaveField* wave, double t, const Edge& edge, const Eigen::Vector2d& g1) {
+EdgeMoments edge_moments(const WaveField* wave, double t, const HullEdge& edge, const Eigen::Vector2d& g1) {
   EdgeMoments acc;
   const double ya = edge.a.y(), yb = edge.a.y() + edge.d.y();
   const double bound = wave ? wave->elevation_bound(t) : 0.0;
@@ -290,27 +269,10 @@ HullLoad hull_pressure_load(const BoxHullSection& hull, const WaveField* wave, d
   if (wave && !(std::abs(wave->gravity() - gravity) <= 1e-12 * gravity))
     throw std::invalid_argument("hull_pressure_load: the wave's gravity differs from the system's");
 
-  const double c = std::cos(pitch), s = std::sin(pitch);
-  const auto place = [&](double x, double y) { return Eigen::Vector2d(g1_position.x() + c * x - s * y, g1_position.y() + s * x + c * y); };
-  // Counter-clockwise: keel aft → keel fore → deck fore → deck aft; outward normal = (d_y, −d_x)/|d|.
-  const std::array<Eigen::Vector2d, 4> corner = {place(hull.aft_x, hull.keel_y), place(hull.fore_x, hull.keel_y),
-                                                 place(hull.fore_x, hull.deck_y), place(hull.aft_x, hull.deck_y)};
   const double rho_g = water_density * gravity;
   HullLoad load;
-  for (std::size_t e = 0; e < corner.size(); ++e) {
-    const Eigen::Vector2d& a = corner[e];
-    const Eigen::Vector2d d = corner[(e + 1) % corner.size()] - a;
-    const Edge edge{a, d, d.norm()};
-    const EdgeMoments m = edge_moments(wave, t, edge, g1_position);
-    if (m.wetted_length == 0.0) continue;
-    const Eigen::Vector2d n = Eigen::Vector2d(d.y(), -d.x()) / edge.length;
-    // ∫ p dℓ = |d| ρg ∫ p/(ρg) ds, likewise for the moment arm.
-    const double p0 = rho_g * edge.length * m.p0;
-    const Eigen::Vector2d p1 = rho_g * edge.length * m.p1;
-    load.force -= hull.width * p0 * n;
-    load.moment -= hull.width * (p1.x() * n.y() - p1.y() * n.x());
-    load.wetted_length += m.wetted_length;
-  }
+  for (const HullEdge& edge : hull_edges(hull, g1_position, pitch))
+    add_edge_load(hull, edge, edge_moments(wave, t, edge, g1_position), rho_g, load);
   return load;
 }
 

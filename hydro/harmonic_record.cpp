@@ -63,20 +63,20 @@ std::size_t fast_size(std::size_t n) {
   }
 }
 
-// The first time step to try: the Hermite error s⁗ Δt⁴/384 with |s⁗| taken as 5 × its rms over the
-// period (√(Σ|a|² ω⁸); a long Gaussian record's largest value is about 5 standard deviations), at most
-// a quarter of the shortest period and the caller's ceiling. The measured error decides afterwards.
+// The first time step to try: the Hermite error s⁽⁶⁾ Δt⁶/46080 with |s⁽⁶⁾| taken as 5 × its rms over
+// the period (√(Σ|a|² ω¹²); a long Gaussian record's largest value is about 5 standard deviations), at
+// most a quarter of the shortest period and the caller's ceiling. The measured error decides afterwards.
 double first_time_step(const HarmonicSums& sums, const HarmonicRecordOptions& options) {
   const std::size_t count = sums.coefficients[0].size();
   double largest_rms = 0.0;
   for (const auto& channel : sums.coefficients) {
     double power = 0.0;
-    for (std::size_t i = 0; i < count; ++i) power += std::norm(channel[i]) * std::pow(frequency(sums, i), 8);
+    for (std::size_t i = 0; i < count; ++i) power += std::norm(channel[i]) * std::pow(frequency(sums, i), 12);
     largest_rms = std::max(largest_rms, std::sqrt(power));
   }
   double step = options.largest_time_step;
   if (count > 0) step = std::min(step, 0.25 * kTwoPi / std::max(frequency(sums, count - 1), sums.frequency_step));
-  if (largest_rms > 0.0) step = std::min(step, std::pow(384.0 * options.tolerance / (5.0 * largest_rms), 0.25));
+  if (largest_rms > 0.0) step = std::min(step, std::pow(46080.0 * options.tolerance / (5.0 * largest_rms), 1.0 / 6.0));
   return step;
 }
 
@@ -87,7 +87,7 @@ std::size_t fft_size_for(const HarmonicSums& sums, double step) {
 
 std::size_t samples_for(double duration, double step) { return static_cast<std::size_t>(std::floor(duration / step)) + 2; }
 
-std::size_t bytes_for(std::size_t channels, std::size_t samples) { return 2 * channels * samples * sizeof(Complex); }
+std::size_t bytes_for(std::size_t channels, std::size_t samples) { return 3 * channels * samples * sizeof(Complex); }
 
 }  // namespace
 
@@ -122,6 +122,7 @@ HarmonicRecord HarmonicRecord::build(const HarmonicSums& sums, const HarmonicRec
     record.duration_ = static_cast<double>(samples - 1) * step;  // ≥ the requested duration
     record.values_.assign(channels * samples, Complex(0.0));
     record.rates_.assign(channels * samples, Complex(0.0));
+    record.accelerations_.assign(channels * samples, Complex(0.0));
 
     std::unique_ptr<fftw_complex, FftwFree> in(fftw_alloc_complex(n)), out(fftw_alloc_complex(n));
     fftw_plan plan = nullptr;
@@ -151,12 +152,16 @@ HarmonicRecord HarmonicRecord::build(const HarmonicSums& sums, const HarmonicRec
       transform(channel, [](double) { return Complex(1.0); }, [&](std::size_t j, Complex v) { record.values_[j * channels + c] = v; });
       transform(channel, [&](double w) { return Complex(0.0, sign * w); },
                 [&](std::size_t j, Complex v) { record.rates_[j * channels + c] = v; });
+      transform(channel, [](double w) { return Complex(-w * w); },
+                [&](std::size_t j, Complex v) { record.accelerations_[j * channels + c] = v; });
       transform(channel, [&](double w) { return std::polar(1.0, 0.5 * sign * w * step); },
                 [&](std::size_t j, Complex v) { midpoint[j] = v; });
       for (std::size_t j = 0; j + 1 < samples; ++j) {
-        const Complex v0 = record.values_[j * channels + c], v1 = record.values_[(j + 1) * channels + c];
-        const Complex d0 = record.rates_[j * channels + c], d1 = record.rates_[(j + 1) * channels + c];
-        const Complex hermite = 0.5 * (v0 + v1) + 0.125 * step * (d0 - d1);
+        const std::size_t at = j * channels + c, next = at + channels;
+        // The quintic Hermite basis at τ = ½: ½, 5/32 Δt, 1/64 Δt² (left); ½, −5/32 Δt, 1/64 Δt² (right).
+        const Complex hermite = 0.5 * (record.values_[at] + record.values_[next]) +
+                                (5.0 / 32.0) * step * (record.rates_[at] - record.rates_[next]) +
+                                (1.0 / 64.0) * step * step * (record.accelerations_[at] + record.accelerations_[next]);
         error = std::max(error, std::abs(hermite - midpoint[j]));
       }
     }
@@ -174,37 +179,53 @@ HarmonicRecord HarmonicRecord::build(const HarmonicSums& sums, const HarmonicRec
       }
       return record;
     }
-    step *= 0.9 * std::pow(options.tolerance / error, 0.25);  // Hermite error ∝ Δt⁴
+    step *= 0.9 * std::pow(options.tolerance / error, 1.0 / 6.0);  // quintic Hermite error ∝ Δt⁶
   }
 }
 
-void HarmonicRecord::evaluate(double t, std::complex<double>* out) const {
-  const double position = t / time_step_;
+namespace {
+
+// The segment holding t and the position τ ∈ [0, 1] in it (t outside the record: the end segments).
+std::size_t segment(double t, double step, std::size_t samples, double& tau) {
+  const double position = t / step;
   auto j = static_cast<std::size_t>(std::max(position, 0.0));
-  if (j + 1 >= samples_) j = samples_ - 2;
-  const double tau = position - static_cast<double>(j), tau2 = tau * tau, tau3 = tau2 * tau;
-  const double h00 = 2.0 * tau3 - 3.0 * tau2 + 1.0, h10 = (tau3 - 2.0 * tau2 + tau) * time_step_;
-  const double h01 = 3.0 * tau2 - 2.0 * tau3, h11 = (tau3 - tau2) * time_step_;
-  const Complex* v0 = &values_[j * channels_];
-  const Complex* d0 = &rates_[j * channels_];
-  const Complex* v1 = v0 + channels_;
-  const Complex* d1 = d0 + channels_;
-  for (std::size_t c = 0; c < channels_; ++c) out[c] = h00 * v0[c] + h10 * d0[c] + h01 * v1[c] + h11 * d1[c];
+  if (j + 1 >= samples) j = samples - 2;
+  tau = position - static_cast<double>(j);
+  return j;
 }
 
-void HarmonicRecord::evaluate(double t, std::complex<double>* out, std::complex<double>* rate) const {
+}  // namespace
+
+void HarmonicRecord::evaluate(double t, std::complex<double>* out) const {
+  double tau = 0.0;
+  const std::size_t j = segment(t, time_step_, samples_, tau);
+  const double u = 1.0 - tau, tau3 = tau * tau * tau, u3 = u * u * u, h = time_step_;
+  const double v0 = u3 * (6.0 * tau * tau + 3.0 * tau + 1.0), v1 = tau3 * (6.0 * u * u + 3.0 * u + 1.0);
+  const double d0 = h * tau * u3 * (3.0 * tau + 1.0), d1 = -h * tau3 * u * (3.0 * u + 1.0);
+  const double s0 = 0.5 * h * h * tau * tau * u3, s1 = 0.5 * h * h * tau3 * u * u;
+  const Complex* value = &values_[j * channels_];
+  const Complex* rate = &rates_[j * channels_];
+  const Complex* acceleration = &accelerations_[j * channels_];
+  const std::size_t n = channels_;
+  for (std::size_t c = 0; c < n; ++c)
+    out[c] = v0 * value[c] + d0 * rate[c] + s0 * acceleration[c] + v1 * value[c + n] + d1 * rate[c + n] + s1 * acceleration[c + n];
+}
+
+void HarmonicRecord::evaluate(double t, std::complex<double>* out, std::complex<double>* rate_out) const {
   evaluate(t, out);
-  const double position = t / time_step_;
-  auto j = static_cast<std::size_t>(std::max(position, 0.0));
-  if (j + 1 >= samples_) j = samples_ - 2;
-  const double tau = position - static_cast<double>(j), tau2 = tau * tau;
-  // Derivatives of the Hermite basis with respect to t.
-  const double g00 = (6.0 * tau2 - 6.0 * tau) / time_step_, g10 = 3.0 * tau2 - 4.0 * tau + 1.0;
-  const double g01 = (6.0 * tau - 6.0 * tau2) / time_step_, g11 = 3.0 * tau2 - 2.0 * tau;
-  const Complex* v0 = &values_[j * channels_];
-  const Complex* d0 = &rates_[j * channels_];
-  for (std::size_t c = 0; c < channels_; ++c)
-    rate[c] = g00 * v0[c] + g10 * d0[c] + g01 * v0[c + channels_] + g11 * d0[c + channels_];
+  double tau = 0.0;
+  const std::size_t j = segment(t, time_step_, samples_, tau);
+  // d/dt of the basis above (d/dτ divided by Δt).
+  const double u = 1.0 - tau, h = time_step_;
+  const double v0 = -30.0 * tau * tau * u * u / h, v1 = -v0;
+  const double d0 = u * u * (1.0 - 3.0 * tau) * (5.0 * tau + 1.0), d1 = tau * tau * (2.0 - 3.0 * tau) * (5.0 * tau - 6.0);
+  const double s0 = 0.5 * h * tau * u * u * (2.0 - 5.0 * tau), s1 = -0.5 * h * tau * tau * u * (5.0 * tau - 3.0);
+  const Complex* value = &values_[j * channels_];
+  const Complex* rate = &rates_[j * channels_];
+  const Complex* acceleration = &accelerations_[j * channels_];
+  const std::size_t n = channels_;
+  for (std::size_t c = 0; c < n; ++c)
+    rate_out[c] = v0 * value[c] + d0 * rate[c] + s0 * acceleration[c] + v1 * value[c + n] + d1 * rate[c + n] + s1 * acceleration[c + n];
 }
 
 }  // namespace ffrf::hydro

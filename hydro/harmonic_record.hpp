@@ -1,16 +1,18 @@
 // A record of harmonic sums sampled once and interpolated: channels
 //   s_c(t) = Σ_i a_{c,i} e^{i δ ω_i t},   ω_i = (n0 + i) Δω   (whole multiples of one frequency step),
 // sampled at t_j = j Δt with Δt = T / N (T = 2π/Δω, the sums' period) by one inverse FFT of length N
-// per channel (FFTW), together with their time derivatives ṡ_c (coefficients × iδω_i, a second FFT),
-// and read back by cubic Hermite interpolation between samples (C¹ in t). The interpolation error
-// of a cubic Hermite segment is s⁗(ξ) τ²(1 − τ)² Δt⁴ / 24 (τ ∈ [0, 1] the position in the segment):
-// largest near the midpoint, where the exact sums are known from a third FFT (coefficients ×
-// e^{iδω_i Δt/2}). The record measures that error at the midpoint of every segment of every channel
-// and chooses N so that it stays below the requested tolerance (a stated, measured bound, not an
-// estimate from Σ|a|ω⁴, which grows with the component count while the sums grow with its root).
-// Cost to build: 3 FFTs of length N per channel (plus a retry with a finer N when the first guess
-// misses); to read: one segment lookup and 4 multiply–adds per channel. Memory: 32 bytes per
-// channel and sample (value and derivative), stated before it is allocated.
+// per channel (FFTW), together with their first and second time derivatives (coefficients × iδω_i
+// and × −ω_i², two more FFTs), and read back by quintic Hermite interpolation between samples (C² in
+// t). The interpolation error of a quintic Hermite segment is s⁽⁶⁾(ξ) τ³(1 − τ)³ Δt⁶ / 720 (τ ∈ [0, 1]
+// the position in the segment): largest near the midpoint, where the exact sums are known from a
+// fourth FFT (coefficients × e^{iδω_i Δt/2}). The record measures that error at the midpoint of every
+// segment of every channel and chooses N so that it stays below the requested tolerance (a stated,
+// measured bound, not an estimate from Σ|a|ω⁶, which grows with the component count while the sums
+// grow with its root). Quintic rather than cubic: for the same error the step is about 5× longer at
+// a sea's ω Δt, so the record takes a quarter of the memory of a cubic one.
+// Cost to build: 4 FFTs of length N per channel (plus a retry with a finer N when the first guess
+// misses); to read: one segment lookup and 6 multiply–adds per channel. Memory: 48 bytes per
+// channel and sample (value and two derivatives), stated before it is allocated.
 // Reference: FFT synthesis of irregular seas (Faltinsen 1990 §2.2; DNV-RP-C205 §3.3).
 #pragma once
 
@@ -60,7 +62,9 @@ class HarmonicRecord {
   std::size_t fft_size() const { return fft_size_; }   // N of the transforms
   double midpoint_error() const { return midpoint_error_; }  // measured, largest over channels and segments
   double build_seconds() const { return build_seconds_; }
-  std::size_t memory_bytes() const { return (values_.size() + rates_.size()) * sizeof(std::complex<double>); }
+  std::size_t memory_bytes() const {
+    return (values_.size() + rates_.size() + accelerations_.size()) * sizeof(std::complex<double>);
+  }
   bool covers(double t) const { return t >= 0.0 && t <= duration_; }
 
   // s_c(t) into out[0 … channels − 1]; t must be covered (not checked on this hot path).
@@ -71,7 +75,7 @@ class HarmonicRecord {
  private:
   std::size_t channels_ = 0, samples_ = 0, fft_size_ = 0;
   double time_step_ = 0.0, duration_ = 0.0, midpoint_error_ = 0.0, build_seconds_ = 0.0;
-  std::vector<std::complex<double>> values_, rates_;  // [sample × channels + channel]
+  std::vector<std::complex<double>> values_, rates_, accelerations_;  // [sample × channels + channel]
 };
 
 }  // namespace ffrf::hydro

@@ -156,6 +156,39 @@ Json static_equilibrium_json(const scene::Scene& scene, const scene::BoomChoice&
       {"geometric_stiffening", scene::to_string(choice.stiffening.value_or(scene.boom.stiffening))}};
 }
 
+Json wave_kinematics_json(const study::WaveKinematicsUse& use) {
+  Json json{{"method", use.method},
+            {"hull_loads_recorded", use.hull_loads.recorded},
+            {"hull_loads_exact", use.hull_loads.exact}};
+  if (!use.reason.empty()) json["reason"] = use.reason;
+  if (use.record) {
+    const coupling::IncidentWaveRecordStats& r = *use.record;
+    json["record"] = Json{{"components", r.components},
+                          {"patches", r.patches},
+                          {"taylor_degree", r.degree},
+                          {"channels", r.channels},
+                          {"samples", r.samples},
+                          {"time_step_s", r.time_step},
+                          {"truncation_bound_m", r.truncation_bound},
+                          {"interpolation_error_m", r.interpolation_error},
+                          {"elevation_bound_m", r.elevation_bound},
+                          {"slope_bound", r.slope_bound},
+                          {"memory_MB", r.memory_bytes / 1e6},
+                          {"build_time_s", r.build_seconds}};
+  }
+  return json;
+}
+
+std::string wave_kinematics_text(const study::WaveKinematicsUse& use) {
+  if (use.method.empty()) return {};
+  if (!use.record) return fmt::format("sea         exact component sums ({})\n", use.reason);
+  const coupling::IncidentWaveRecordStats& r = *use.record;
+  return fmt::format("sea         precomputed: {} components recorded in {} patches (Taylor degree {}), {} samples every "
+                     "{:.3g} s, {:.1f} MB, built in {:.2f} s; error <= {:.2g} m\n",
+                     r.components, r.patches, r.degree, r.samples, r.time_step, r.memory_bytes / 1e6, r.build_seconds,
+                     r.truncation_bound + r.interpolation_error);
+}
+
 Json model_json(const scene::Scene& scene, const study::ModelRun& run) {
   Json json;
   json["model"] = run.choice.label();
@@ -197,6 +230,7 @@ Json model_json(const scene::Scene& scene, const study::ModelRun& run) {
   }
   json["wire"] = std::move(wire);
   if (run.irregular) json["irregular_sea"] = irregular_json(*run.irregular);
+  if (!run.wave_kinematics.method.empty()) json["wave_kinematics"] = wave_kinematics_json(run.wave_kinematics);
   json["max_constraint_residual_m"] = run.max_constraint_residual;
   json["max_buckling_load_ratio"] = coupling::max_buckling_load_ratio(run.result, limits);
   json["detections"] = Json::array();
@@ -238,6 +272,7 @@ std::string run_header_text(const RunContext& c, const study::ModelRun& run) {
                       c.settings.kind == coupling::Integrator::cvode || c.settings.kind == coupling::Integrator::ida
                           ? fmt::format(", BDF order <= {}", c.settings.max_order)
                           : std::string());
+  text.insert(text.size() - 1, wave_kinematics_text(run.wave_kinematics));
   if (c.scene->bem) {  // hull hydrodynamics from BEM files: which model owns which force
     const scene::BemHull& bem = *c.scene->bem;
     text.insert(text.size() - 1, fmt::format("hydro       radiation {}; excitation {}{}\n", study::radiation_label(*c.scene),
@@ -285,6 +320,11 @@ std::string dynamics_text(const study::ModelRun& run) {
                       st.error_test_failures, st.convergence_failures);
   if (st.projections > 0) text += fmt::format("            {} constraint projections\n", st.projections);
   text += fmt::format("wall time   {:.3g} s ({:.4g}x real time)\n", st.wall_seconds, run.real_time_factor);
+  if (run.wave_kinematics.hull_loads.recorded + run.wave_kinematics.hull_loads.exact > 0) {
+    text += fmt::format("hull loads  {} from the recorded sea, {} by the exact sums{}\n", run.wave_kinematics.hull_loads.recorded,
+                        run.wave_kinematics.hull_loads.exact,
+                        run.wave_kinematics.record ? " (outside the record's patches or bounds)" : "");
+  }
   return text;
 }
 

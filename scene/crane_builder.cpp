@@ -7,6 +7,7 @@
 #include "scene/irregular_sea.hpp"
 #include "scene/bem_hull_model.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/recorded_sea.hpp"
 #include "fem/analytic_beam.hpp"
 #include "fem/axial_force.hpp"
 
@@ -158,6 +159,11 @@ SceneWaters scene_waters(const Scene& scene) {
   SceneWaters waters{scene.hub ? driven_hub(*scene.hub) : floating_hull(scene), std::nullopt};
   if (scene.is_crane()) waters.wave = scene_wave_field(scene);  // regular: one component; irregular: synthesized
   if (scene.bem && scene.is_crane()) apply_bem_hydrodynamics(scene, waters.hull, waters.wave);
+  if (scene.is_crane() && waters.wave) {
+    WaveKinematicsChoice choice;
+    waters.hull.wave_record = recorded_sea(scene, waters.hull, *waters.wave, &choice);
+    waters.hull.exact_kinematics_reason = choice.reason;
+  }
   return waters;
 }
 

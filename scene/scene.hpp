@@ -107,6 +107,14 @@ struct Wave {
 // η(0, t) = Σ a_n cos(ω_n t + φ_n). Exclusive with Scene::wave (the regular wave).
 enum class SeaSpectrum { jonswap, pierson_moskowitz, components };
 
+// How a hull load reads the incident sea: recorded once per record, or summed component by component.
+enum class WaveKinematics { precomputed, exact };
+
+// The motion range a recorded sea covers around the floating hull (± surge, heave [m], pitch [rad]).
+struct KinematicsRange {
+  double surge = 6.0, heave = 2.0, pitch = 0.05;
+};
+
 struct IrregularSea {
   SeaSpectrum spectrum = SeaSpectrum::jonswap;
   double significant_height = 0.0;  // Hs [m] (jonswap, pierson-moskowitz)
@@ -124,6 +132,9 @@ struct IrregularSea {
   std::vector<double> component_amplitudes;   // a_n [m]
   std::vector<double> component_phases;       // φ_n [rad]
   double ramp_periods = 2.0;        // ramp-in over this many Tp (components: the longest period)
+  WaveKinematics kinematics = WaveKinematics::precomputed;
+  double kinematics_tolerance = 1e-5;  // [m] of the recorded incident wave
+  KinematicsRange kinematics_range;
 };
 
 // Constant radiation coefficients (hull frame at G1) as multiples / fractions of critical.

@@ -219,6 +219,20 @@ constexpr std::array kKeys{
     choice("wave.amplitudes", "deterministic|rayleigh", "deterministic",
            "deterministic: a_n = √(2 S(ω_n) Δω); rayleigh: a_n = √(2 S(ω_n) Δω E_n) with E_n unit exponential "
            "(a Gaussian sea also in its energy)."),
+    choice("wave.kinematics", "precomputed|exact", "precomputed",
+           "Irregular seas: precomputed evaluates the incident wave once per record (Taylor patches at the hull's "
+           "sides, FFT in time, interpolated within wave.kinematics_tolerance; deep water and the spectral component "
+           "grid only, else exact); exact sums every component in every hull-load evaluation (the reference)."),
+    defaulted("wave.kinematics_tolerance", length, between(1e-9, 1e-2), 1e-5,
+              "Precomputed kinematics: the largest error of the recorded incident wave (elevation units) inside the "
+              "recorded region; the hull load's error is a few ρ g B times it per edge."),
+    defaulted("wave.kinematics_surge_range", length, between(0.1, 200.0), 6.0,
+              "Precomputed kinematics: the hull's surge from x = 0 the record covers (±); outside it a hull load takes "
+              "the exact sums (counted in the run's record)."),
+    defaulted("wave.kinematics_heave_range", length, between(0.1, 50.0), 2.0,
+              "Precomputed kinematics: the hull's heave from its floating height the record covers (±)."),
+    defaulted("wave.kinematics_pitch_range", angle, between(0.001, 0.5), 0.05,
+              "Precomputed kinematics: the hull's pitch the record covers (±)."),
     number_list("wave.component_frequencies", angular_velocity, above(0.0, 100.0),
                 "components: angular frequencies ω_n (an array, numbers in rad/s)."),
     number_list("wave.component_amplitudes", length, between(0.0, 15.0),

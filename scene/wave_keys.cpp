@@ -80,6 +80,10 @@ void build_wave(const WrittenKeys& keys, Scene& scene) {
                                                    : SeaSpectrum::components;
   sea.heading = head ? hydro::WaveHeading::head : hydro::WaveHeading::following;
   sea.ramp_periods = keys.number("wave.ramp_periods");
+  sea.kinematics = keys.text("wave.kinematics") == "exact" ? WaveKinematics::exact : WaveKinematics::precomputed;
+  sea.kinematics_tolerance = keys.number("wave.kinematics_tolerance");
+  sea.kinematics_range = {keys.number("wave.kinematics_surge_range"), keys.number("wave.kinematics_heave_range"),
+                          keys.number("wave.kinematics_pitch_range")};
   if (sea.spectrum == SeaSpectrum::components) {
     sea.component_frequencies = keys.list("wave.component_frequencies");
     sea.component_amplitudes = keys.list("wave.component_amplitudes");

@@ -181,6 +181,11 @@ ModelRun prepared_model(const PreparedRun& prepared) {
   run.state_size = prepared.state_size();
   run.from_static_equilibrium = prepared.from_static_equilibrium;
   run.statics = prepared.statics;
+  if (const coupling::IncidentWaveRecord* record = prepared.equations->wave_record()) {
+    run.wave_kinematics = {"precomputed", "", record->stats(), {}};
+  } else if (const std::string reason = prepared.equations->exact_kinematics_reason(); !reason.empty()) {
+    run.wave_kinematics = {"exact", reason, std::nullopt, {}};
+  }
   return run;
 }
 
@@ -190,7 +195,10 @@ ModelRun integrate_run(const scene::Scene& scene, PreparedRun& prepared, const c
   ModelRun run = prepared_model(prepared);
   coupling::IntegratorSettings run_settings = settings;
   run_settings.monitor.static_tension = prepared.statics.outputs.wire_tension;
+  const coupling::HullLoadCounts before = prepared.equations->hull_load_counts();
   run.result = coupling::integrate(*prepared.equations, prepared.initial_state, run_settings);
+  const coupling::HullLoadCounts after = prepared.equations->hull_load_counts();
+  run.wave_kinematics.hull_loads = {after.recorded - before.recorded, after.exact - before.exact};
   summarize(scene, settings.duration, run);
   return run;
 }

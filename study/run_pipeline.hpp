@@ -22,6 +22,7 @@
 #include "scene/crane_builder.hpp"
 #include "scene/crane_model_cache.hpp"
 #include "scene/scene.hpp"
+#include "coupling/incident_wave_record.hpp"
 #include "study/irregular_statistics.hpp"
 #include "study/output_series.hpp"
 #include "study/verdict.hpp"
@@ -90,6 +91,15 @@ struct PreparedRun {
   int state_size() const { return static_cast<int>(2 * initial_state.size()); }  // ODE state (z, ż)
 };
 
+// How the run's hull loads read the incident wave: method, why exact, the record's size and cost
+// (coupling/incident_wave_record.hpp), and how many loads took each path.
+struct WaveKinematicsUse {
+  std::string method;  // "precomputed" | "exact"; empty: no wave on a floating hull
+  std::string reason;  // why exact
+  std::optional<coupling::IncidentWaveRecordStats> record;
+  coupling::HullLoadCounts hull_loads;  // of this run's integration
+};
+
 // One model's complete run.
 struct ModelRun {
   scene::BoomChoice choice;
@@ -104,6 +114,7 @@ struct ModelRun {
   double max_constraint_residual = 0.0;
   double real_time_factor = 0.0;   // simulated seconds per wall second (integration)
   std::optional<IrregularStatistics> irregular;  // an irregular sea: statistics after the ramp
+  WaveKinematicsUse wave_kinematics;
 
   const coupling::CraneOutputs& static_outputs() const { return statics.outputs; }
   long slack_events() const;       // the wire went slack

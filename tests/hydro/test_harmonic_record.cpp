@@ -55,7 +55,7 @@ TEST(HarmonicRecord, InterpolatesTheSumsWithinItsMeasuredBound) {
     EXPECT_LE(record.midpoint_error(), options.tolerance);
     EXPECT_GT(record.midpoint_error(), 0.0);
     EXPECT_GE(record.duration(), options.duration);
-    EXPECT_EQ(record.memory_bytes(), 2 * record.channels() * record.samples() * sizeof(Complex));
+    EXPECT_EQ(record.memory_bytes(), 3 * record.channels() * record.samples() * sizeof(Complex));
     std::mt19937_64 random(11);
     std::uniform_real_distribution<double> time(0.0, options.duration);
     double largest = 0.0, largest_rate = 0.0, scale = 0.0;

@@ -1,0 +1,43 @@
+// The hydrostatic + Froude–Krylov load of coupling/hull_pressure.hpp with the incident wave read
+// from a record of the sea (coupling/incident_wave_record.hpp) instead of summed component by
+// component: the same wetted boundary (edges clipped at the wave surface, split at still water),
+// the same exact hydrostatics (−ρ g y), and the wave's part of each wetted piece from the recorded
+// antiderivatives at the piece's ends (∫F = ΔG/w, ∫uF = h G1/w − ΔH/w²; on the crest extension
+// above still water, Gauss–Legendre on ζ when the piece spans less than a metre in x). Cost: a few
+// polynomial evaluations per edge, independent of the sea's component count.
+// The record answers only where it can certify the answer; otherwise std::nullopt and the caller
+// takes the exact sums: a point outside every patch, t outside the record, an edge that may cross
+// the surface but is not steeper than the recorded slope bound (one crossing is then not certain),
+// or an edge whose x range leaves the range the bounds were sampled over.
+#pragma once
+
+#include <Eigen/Dense>
+#include <optional>
+#include <vector>
+
+#include "coupling/hull_pressure.hpp"
+#include "coupling/incident_wave_record.hpp"
+
+namespace ffrf::coupling {
+
+// How far the hull may move from its pose at zero surge: the record's patches and bounds cover it.
+struct HullMotionRange {
+  double surge = 6.0;   // [m] ± about x_G1 = 0
+  double heave = 2.0;   // [m] ± about the given G1 height
+  double pitch = 0.05;  // [rad] ± about level
+};
+
+// One disc per side (stern, bow) holding every point a pressure integration can ask the record
+// for over the motion range: the keel corner, the side where it crosses still water, and x of the
+// side above it at y = 0 (the crest extension). x range: the whole hull over the range.
+std::vector<WavePatch> box_hull_patches(const BoxHullSection& hull, double g1_height, const HullMotionRange& range);
+void box_hull_x_range(const BoxHullSection& hull, double g1_height, const HullMotionRange& range, double& x_min,
+                      double& x_max);
+
+// `ramp` is the wave field's r(t); `workspace` is filled here (sized once, reused).
+std::optional<HullLoad> recorded_hull_pressure_load(const BoxHullSection& hull, const IncidentWaveRecord& record,
+                                                    WavePolynomials& workspace, double ramp, double water_density,
+                                                    double gravity, const Eigen::Vector2d& g1_position, double pitch,
+                                                    double t);
+
+}  // namespace ffrf::coupling
