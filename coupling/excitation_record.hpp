@@ -3,7 +3,8 @@
 // every right-hand-side evaluation. The exact excitation at G1, channel c ∈ {surge, heave, pitch},
 //   F_c(t) = Σ_i Re{F_{c,i} e^{i(ω_i t + ψ_i)}} = Re{s_c(t)},   s_c(t) = Σ_i (F_{c,i} e^{iψ_i}) e^{+iω_i t},
 // is a harmonic sum when the components lie on one frequency grid, ω_i = (n0 + i) Δω (as
-// hydro::synthesize makes them: WaveField::harmonic_grid()). Then hydro::HarmonicRecord samples s_c by
+// hydro::synthesize makes them; WaveField::harmonic_grid() recognises the grid, in deep water only, so a
+// finite-depth sea keeps the exact sum). Then hydro::HarmonicRecord samples s_c by
 // FFT at a step Δt and interpolates it by cubic Hermite segments, with the interpolation error measured
 // at every segment midpoint (where the segment's error τ²(1 − τ)² s⁗ Δt⁴/24 peaks).
 //
