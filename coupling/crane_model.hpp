@@ -11,6 +11,7 @@
 #include <string>
 
 #include "coupling/bem_excitation.hpp"
+#include "coupling/excitation_record.hpp"
 #include "coupling/floating_frame_body.hpp"
 #include "coupling/hull_pressure.hpp"
 #include "coupling/incident_wave_record.hpp"
@@ -37,6 +38,8 @@ struct HullModel {
   // First-order excitation from BEM (Froude–Krylov + diffraction) at G1; when set, the pressure is
   // integrated in calm water (hydrostatics only), so Froude–Krylov is counted once.
   std::shared_ptr<const BemExcitation> bem_excitation;
+  // The same excitation recorded once per record (coupling/excitation_record.hpp); empty: summed.
+  std::shared_ptr<const ExcitationRecord> bem_excitation_record;
   // The incident sea of this record evaluated once (coupling/incident_wave_record.hpp): the hull
   // pressure reads the wave from it, and takes the exact component sums wherever it cannot answer.
   // Empty: every evaluation sums the components (regular waves, exact kinematics, finite depth).

@@ -69,7 +69,9 @@ void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q
   hull_force_ -= hull.radiation_damping.cwiseProduct(hull_v);
   hull_force_ -= (hull.added_linear_damping + hull.quadratic_damping.cwiseProduct(hull_v.cwiseAbs())).cwiseProduct(hull_v);
   if (with_wave) {  // the dynamic problem (the static one is at rest in calm water)
-    if (hull.bem_excitation && m_.wave) hull_force_ += m_.wave->ramp(t) * hull.bem_excitation->at(t);
+    if (hull.bem_excitation && m_.wave) {
+      hull_force_ += m_.wave->ramp(t) * (hull.bem_excitation_record ? hull.bem_excitation_record->at(t) : hull.bem_excitation->at(t));
+    }
     if (radiation_.active() && hull_free()) hull_force_ -= radiation_.force(t, hull_v);
   }
   hull_force_(0) -= hull.mooring_stiffness * hull_q(0);

@@ -1,6 +1,8 @@
 // The hull's BEM hydrodynamics for the crane (see the header).
 #include "scene/bem_hull_model.hpp"
 
+#include "coupling/excitation_record.hpp"
+
 #include <cmath>
 #include <fmt/format.h>
 #include <map>
@@ -101,6 +103,15 @@ void apply_bem_hydrodynamics(const Scene& scene, coupling::HullModel& hull, cons
     const double origin_x = hull.support_pose.x() + origin.x();
     hull.bem_excitation = std::make_shared<const coupling::BemExcitation>(
         coupling::bem_excitation(*scene.bem->excitation_table, *wave, origin_x, origin));
+    // An irregular sea on the component grid: the excitation history recorded once (exact sums
+    // outside the record, or wherever the grid does not allow one).
+    if (scene.sea && scene.sea->kinematics == WaveKinematics::precomputed) {
+      coupling::ExcitationRecordOptions options;
+      options.duration = scene.simulation.duration;
+      options.tolerance = coupling::excitation_tolerance(*hull.bem_excitation);
+      coupling::ExcitationRecordOutcome outcome = coupling::ExcitationRecord::build(*hull.bem_excitation, *wave, options);
+      if (outcome.record) hull.bem_excitation_record = std::make_shared<const coupling::ExcitationRecord>(std::move(*outcome.record));
+    }
   }
 }
 

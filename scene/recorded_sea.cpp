@@ -49,7 +49,8 @@ WaveKinematicsChoice wave_kinematics_choice(const Scene& scene) {
   } else if (!scene.hull) {
     choice.reason = "no floating hull";
   } else if (scene.bem && scene.bem->excitation == ExcitationModel::bem) {
-    choice.reason = "the BEM excitation carries the incident wave; the hull pressure is hydrostatic";
+    choice.reason = "the BEM excitation carries the incident wave (its history recorded once); the hull pressure is "
+                    "hydrostatic";
   } else if (std::isfinite(scene.environment.water_depth)) {
     choice.reason = "finite water depth (the record holds deep-water kinematics)";
   } else {
