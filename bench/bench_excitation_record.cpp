@@ -1,5 +1,5 @@
 // The first-order BEM wave excitation per call: the exact sum BemExcitation::at (a sine and cosine per
-// component) against the record of it (coupling/excitation_record.hpp: one segment lookup and a cubic
+// component) against the record of it (coupling/excitation_record.hpp: one segment lookup and a quintic
 // Hermite interpolation per channel), in the sea of cases/irregular_bem_barge_crane.toml (the WAMIT
 // barge, JONSWAP Hs 2 m, Tp 8 s over 3 hours: 3 376 components), and the exact sum of a regular wave
 // (one component) as the cost to match. Times march through the record by 13.7 ms per call, as an

@@ -11,15 +11,16 @@
 #include <string>
 
 #include "coupling/bem_excitation.hpp"
-#include "coupling/excitation_record.hpp"
 #include "coupling/floating_frame_body.hpp"
 #include "coupling/hull_pressure.hpp"
-#include "coupling/incident_wave_record.hpp"
 #include "coupling/prescribed_motion.hpp"
 #include "coupling/wave_field.hpp"
 #include "hydro/radiation_memory.hpp"
 
 namespace ffrf::coupling {
+
+class IncidentWaveRecord;  // coupling/incident_wave_record.hpp
+class ExcitationRecord;    // coupling/excitation_record.hpp
 
 struct HullModel {
   double mass = 0.0;                                        // without the boom [kg]

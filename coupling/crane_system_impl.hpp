@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "coupling/crane_constants.hpp"
+#include "coupling/excitation_record.hpp"
 #include "coupling/hull_pressure_recorded.hpp"
 #include "coupling/wire_rope.hpp"
 

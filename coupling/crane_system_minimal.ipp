@@ -57,7 +57,7 @@ void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q
     const WaveField* wave = (with_wave && m_.wave && !hull.bem_excitation) ? &*m_.wave : nullptr;
     std::optional<HullLoad> recorded;
     if (wave && hull.wave_record) {
-      recorded = recorded_hull_pressure_load(hull.section, *hull.wave_record, wave_polynomials_, wave->ramp(t),
+      recorded = recorded_hull_pressure_load(hull.section, *hull.wave_record, *wave, wave_polynomials_, wave->ramp(t),
                                              m_.water_density, g, hull_q.head<2>(), hull_q(2), t);
     }
     if (wave) ++(recorded ? hull_load_counts_.recorded : hull_load_counts_.exact);

@@ -5,13 +5,13 @@
 // is a harmonic sum when the components lie on one frequency grid, ω_i = (n0 + i) Δω (as
 // hydro::synthesize makes them; WaveField::harmonic_grid() recognises the grid, in deep water only, so a
 // finite-depth sea keeps the exact sum). Then hydro::HarmonicRecord samples s_c by
-// FFT at a step Δt and interpolates it by cubic Hermite segments, with the interpolation error measured
-// at every segment midpoint (where the segment's error τ²(1 − τ)² s⁗ Δt⁴/24 peaks).
+// FFT at a step Δt and interpolates it by quintic Hermite segments, with the interpolation error measured
+// at every segment midpoint (where the segment's error τ³(1 − τ)³ s⁽⁶⁾ Δt⁶/720 peaks).
 //
 // Tolerance, per channel and absolute: ε_c [N, N, N m]. The channels are recorded divided by ε_c and
 // the record is asked for a midpoint error ≤ 1, so one measured fraction e ≤ 1 bounds every channel:
 // |F_c,record − F_c| ≤ e ε_c at the midpoints (the Hermite error elsewhere in a segment is at most the
-// midpoint's up to the change of s⁗ over one segment). The suggested ε_c is a fraction of the channel's
+// midpoint's up to the change of s⁽⁶⁾ over one segment). The suggested ε_c is a fraction of the channel's
 // standard deviation σ_c = √(½ Σ_i |F_{c,i}|²) (excitation_tolerance): σ_c is the scale of the force
 // itself and does not depend on the component count, unlike the amplitude sum Σ_i |F_{c,i}|, which grows
 // with √N while the force does not.

@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <array>
 #include <complex>
 
 #include "coupling/component_phasors.hpp"
+#include "coupling/crossing_isolation.hpp"
 #include "coupling/hull_edges.hpp"
 #include "hydro/gauss_legendre.hpp"
 
@@ -25,8 +27,9 @@ constexpr int crest_quadrature_points = 4;
 // The edge's pressure moments from the record at one time; false where the record cannot answer.
 class RecordedEdges {
  public:
-  RecordedEdges(const IncidentWaveRecord& record, const WavePolynomials& poly, const Eigen::Vector2d& g1)
-      : record_(record), poly_(poly), g1_(g1), bound_(record.elevation_bound(poly.time, poly.ramp)), slope_(record.slope_bound(poly.time, poly.ramp)) {}
+  RecordedEdges(const IncidentWaveRecord& record, const WaveField& wave, const WavePolynomials& poly, const Eigen::Vector2d& g1)
+      : record_(record), wave_(wave), poly_(poly), g1_(g1), bound_(record.elevation_bound(poly.time, poly.ramp)),
+        slope_(record.slope_bound(poly.time, poly.ramp)) {}
 
   bool moments(const HullEdge& edge, EdgeMoments& acc) const {
     const double ya = edge.a.y(), yb = edge.a.y() + edge.d.y();
@@ -34,26 +37,78 @@ class RecordedEdges {
     if (std::min(ya, yb) > bound_) return true;                          // above every crest
     const double xa = edge.a.x(), xb = edge.a.x() + edge.d.x();
     if (std::min(xa, xb) < record_.x_min() || std::max(xa, xb) > record_.x_max()) return false;
-    // g(s) = y(s) − ζ(x(s)) has g' = d_y − d_x ζ' of the sign of d_y: one crossing at most, inside the
-    // part of the edge with |y| ≤ the elevation bound.
-    if (!(std::abs(edge.d.y()) > std::abs(edge.d.x()) * slope_)) return false;
-    const double s_low = std::clamp((-bound_ - ya) / edge.d.y(), 0.0, 1.0);  // y = −bound: wet
-    const double s_high = std::clamp((bound_ - ya) / edge.d.y(), 0.0, 1.0);  // y = +bound: dry
-    double crossing = 0.0;
-    if (!surface_crossing(edge, s_low, s_high, crossing)) return false;
-    return edge.d.y() > 0.0 ? wetted(edge, 0.0, crossing, acc) : wetted(edge, crossing, 1.0, acc);
+    // A side steeper than the surface: g(s) = y(s) − ζ(x(s)) has g' = d_y − d_x ζ' of the sign of d_y,
+    // so it crosses once at most, inside the part of the edge with |y| ≤ the elevation bound.
+    if (std::abs(edge.d.y()) > std::abs(edge.d.x()) * slope_) {
+      const double s_low = std::clamp((-bound_ - ya) / edge.d.y(), 0.0, 1.0);  // y = −bound: wet
+      const double s_high = std::clamp((bound_ - ya) / edge.d.y(), 0.0, 1.0);  // y = +bound: dry
+      double crossing = 0.0;
+      if (!surface_crossing(edge, s_low, s_high, crossing)) return false;
+      return edge.d.y() > 0.0 ? wetted(edge, 0.0, crossing, acc) : wetted(edge, crossing, 1.0, acc);
+    }
+    return crossings_along(edge, acc);  // the keel or the deck within the waves' reach
   }
 
  private:
-  // ζ and dζ/dx at x from the patch holding (x, 0); false outside every patch.
+  // ζ and dζ/dx at x from the record along still water; false outside its x range.
   bool elevation(double x, double& zeta, double& slope) const {
-    const int patch = record_.patch_of(x, 0.0);
-    if (patch < 0) return false;
-    Complex f, f_rate;
-    record_.elevation_terms(poly_, patch, x, 0.0, f, f_rate);
-    zeta = poly_.ramp * f.real();
-    slope = poly_.ramp * (Complex(0.0, 1.0) * f_rate).real();  // d/dx F(i x) = i F'
+    if (!(x >= record_.x_min() && x <= record_.x_max())) return false;
+    double curvature = 0.0;
+    record_.line_elevation(poly_, x, zeta, slope, curvature);
     return true;
+  }
+
+  // g = y − ζ along an edge and its s-derivatives, from the record along still water.
+  struct LineGap {
+    const RecordedEdges& self;
+    const HullEdge& edge;
+    void evaluate(double s, double& g, double& slope, double& curvature) const {
+      double zeta = 0.0, zeta_x = 0.0, zeta_xx = 0.0;
+      self.record_.line_elevation(self.poly_, edge.a.x() + s * edge.d.x(), zeta, zeta_x, zeta_xx);
+      g = edge.a.y() + s * edge.d.y() - zeta;
+      slope = edge.d.y() - edge.d.x() * zeta_x;
+      curvature = -edge.d.x() * edge.d.x() * zeta_xx;
+    }
+    void evaluate(double s, double& g, double& slope) const {
+      double curvature = 0.0;
+      evaluate(s, g, slope, curvature);
+    }
+  };
+
+  // Every crossing of an edge with the recorded surface (crossing_isolation.hpp), then its wetted
+  // intervals. Start intervals about 2/k_max long along x, as the exact path's.
+  bool crossings_along(const HullEdge& edge, EdgeMoments& acc) const {
+    static constexpr int max_samples = 256;
+    const LineGap gap{*this, edge};
+    const double dx = std::abs(edge.d.x());
+    const int count = std::clamp(static_cast<int>(std::ceil(0.5 * dx * record_.max_wave_number())), 1, max_samples);
+    std::array<CrossingInterval, max_samples> first;
+    double g_prev = 0.0, slope_prev = 0.0, curvature_prev = 0.0;
+    for (int j = 0; j <= count; ++j) {
+      const double s = j == count ? 1.0 : static_cast<double>(j) / count;
+      double g = 0.0, slope = 0.0, curvature = 0.0;
+      gap.evaluate(s, g, slope, curvature);
+      if (j > 0) first[static_cast<std::size_t>(j - 1)] = {static_cast<double>(j - 1) / count, s, g_prev, g, slope_prev, slope, curvature_prev, curvature};
+      g_prev = g;
+      slope_prev = slope;
+      curvature_prev = curvature;
+    }
+    const double t = poly_.time, ramp = poly_.ramp;
+    const CrossingBounds bounds{std::abs(edge.d.y()) + dx * record_.slope_bound(t, ramp), dx * dx * record_.curvature_bound(t, ramp),
+                                dx * dx * dx * record_.third_derivative_bound(t, ramp)};
+    WaterlineCrossings crossings;
+    crossings.wet_at_start = first[0].g_lo < 0.0;
+    isolate_crossings(gap, first.data(), count, bounds, crossings);
+    if (crossings.truncated) return false;
+    bool wet = crossings.wet_at_start;
+    double wet_start = 0.0;
+    for (int i = 0; i < crossings.count; ++i) {
+      const double s = crossings.s[static_cast<std::size_t>(i)];
+      if (wet && !wetted(edge, wet_start, s, acc)) return false;
+      if (!wet) wet_start = s;
+      wet = !wet;
+    }
+    return !wet || wetted(edge, wet_start, 1.0, acc);
   }
 
   // The root of g in [s_low, s_high] (g(s_low) ≤ 0 ≤ g(s_high) up to the bound's margin): Newton
@@ -112,19 +167,34 @@ class RecordedEdges {
     return true;
   }
 
-  bool antiderivatives(const HullEdge& edge, double s, double y_override, bool at_surface, Complex& g, Complex& h) const {
+  bool antiderivatives(const HullEdge& edge, double s, Complex& g, Complex& h) const {
     const double x = edge.a.x() + s * edge.d.x();
-    const double y = at_surface ? y_override : edge.a.y() + s * edge.d.y();
+    const double y = edge.a.y() + s * edge.d.y();
     const int patch = record_.patch_of(x, y);
-    if (patch < 0) return false;
-    record_.antiderivatives(poly_, patch, x, y, g, h);
+    if (patch >= 0) {
+      record_.antiderivatives(poly_, patch, x, y, g, h);
+      return true;
+    }
+    // Outside the discs (a keel come out of the water between its corners, a corner beyond the
+    // motion range): G and H at this one point by the component sums, O(components) for this point only.
+    ComponentPhasors phasors(wave_, Complex(y, x), poly_.time);
+    const std::vector<WaveComponent>& components = wave_.components();
+    const std::vector<Complex>& amplitudes = wave_.complex_amplitudes();
+    g = 0.0;
+    h = 0.0;
+    for (std::size_t n = 0; n < components.size(); ++n) {
+      const Complex term = times(amplitudes[n], phasors.next());
+      const double inverse_k = 1.0 / components[n].wave_number;
+      g += inverse_k * term;
+      h += (inverse_k * inverse_k) * term;
+    }
     return true;
   }
 
   // Below still water: ∫F = (G1 − G0)/w, ∫uF = h G1/w − (H1 − H0)/w², w = d_y + i d_x.
   bool add_submerged(const HullEdge& edge, double s0, double s1, PieceIntegrals& piece) const {
     Complex g0, h0, g1, h1;
-    if (!antiderivatives(edge, s0, 0.0, false, g0, h0) || !antiderivatives(edge, s1, 0.0, false, g1, h1)) return false;
+    if (!antiderivatives(edge, s0, g0, h0) || !antiderivatives(edge, s1, g1, h1)) return false;
     const Complex w(edge.d.y(), edge.d.x()), inverse = 1.0 / w;
     const double h = s1 - s0;
     piece.j0 += poly_.ramp * ((g1 - g0) * inverse).real();
@@ -135,12 +205,16 @@ class RecordedEdges {
   // Above still water, below the crest: ζ(x(s)) − y; the wave's part ∫ζ along z = i x(s).
   bool add_crest(const HullEdge& edge, double s0, double s1, PieceIntegrals& piece) const {
     const double h = s1 - s0;
+    const double x0 = edge.a.x() + s0 * edge.d.x(), x1 = edge.a.x() + s1 * edge.d.x();
+    if (std::min(x0, x1) < record_.x_min() || std::max(x0, x1) > record_.x_max()) return false;
     if (std::abs(edge.d.x()) * h >= crest_quadrature_span) {
-      Complex g0, h0, g1, h1;
-      if (!antiderivatives(edge, s0, 0.0, true, g0, h0) || !antiderivatives(edge, s1, 0.0, true, g1, h1)) return false;
-      const Complex inverse = 1.0 / Complex(0.0, edge.d.x());
-      piece.j0 += poly_.ramp * ((g1 - g0) * inverse).real();
-      piece.j1 += poly_.ramp * (h * g1 * inverse - (h1 - h0) * inverse * inverse).real();
+      // ∫₀ʰ ζ du = (Z₁(x1) − Z₁(x0))/d_x, ∫₀ʰ u ζ du = (h Z₁(x1) − (Z₂(x1) − Z₂(x0))/d_x)/d_x (ramp included).
+      double first0 = 0.0, second0 = 0.0, first1 = 0.0, second1 = 0.0;
+      record_.line_antiderivatives(poly_, x0, first0, second0);
+      record_.line_antiderivatives(poly_, x1, first1, second1);
+      const double inverse = 1.0 / edge.d.x();
+      piece.j0 += (first1 - first0) * inverse;
+      piece.j1 += (h * first1 - (second1 - second0) * inverse) * inverse;
       return true;
     }
     static const hydro::GaussRule& rule = hydro::gauss_legendre(crest_quadrature_points);
@@ -155,6 +229,7 @@ class RecordedEdges {
   }
 
   const IncidentWaveRecord& record_;
+  const WaveField& wave_;
   const WavePolynomials& poly_;
   Eigen::Vector2d g1_;
   double bound_, slope_;
@@ -209,14 +284,14 @@ void box_hull_x_range(const BoxHullSection& hull, double g1_height, const HullMo
 }
 
 std::optional<HullLoad> recorded_hull_pressure_load(const BoxHullSection& hull, const IncidentWaveRecord& record,
-                                                    WavePolynomials& workspace, double ramp, double water_density,
+                                                    const WaveField& wave, WavePolynomials& workspace, double ramp, double water_density,
                                                     double gravity, const Eigen::Vector2d& g1_position, double pitch,
                                                     double t) {
   if (!(t >= 0.0 && t <= record.duration())) return std::nullopt;
   if (!g1_position.allFinite() || !std::isfinite(pitch)) return std::nullopt;  // the exact path names the pose
   if (ramp == 0.0) return hull_pressure_load(hull, nullptr, water_density, gravity, g1_position, pitch, t);  // not yet ramped in
   record.at(t, ramp, workspace);
-  const RecordedEdges edges(record, workspace, g1_position);
+  const RecordedEdges edges(record, wave, workspace, g1_position);
   const double rho_g = water_density * gravity;
   HullLoad load;
   for (const HullEdge& edge : hull_edges(hull, g1_position, pitch)) {

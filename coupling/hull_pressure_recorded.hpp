@@ -1,14 +1,19 @@
 // The hydrostatic + Froude–Krylov load of coupling/hull_pressure.hpp with the incident wave read
 // from a record of the sea (coupling/incident_wave_record.hpp) instead of summed component by
 // component: the same wetted boundary (edges clipped at the wave surface, split at still water),
-// the same exact hydrostatics (−ρ g y), and the wave's part of each wetted piece from the recorded
-// antiderivatives at the piece's ends (∫F = ΔG/w, ∫uF = h G1/w − ΔH/w²; on the crest extension
-// above still water, Gauss–Legendre on ζ when the piece spans less than a metre in x). Cost: a few
-// polynomial evaluations per edge, independent of the sea's component count.
-// The record answers only where it can certify the answer; otherwise std::nullopt and the caller
-// takes the exact sums: a point outside every patch, t outside the record, an edge that may cross
-// the surface but is not steeper than the recorded slope bound (one crossing is then not certain),
-// or an edge whose x range leaves the range the bounds were sampled over.
+// the same exact hydrostatics (−ρ g y). Waterline crossings: on a side steeper than the surface by
+// Newton's method on the recorded ζ (one crossing at most), on the keel and the deck by the same
+// interval isolation as the exact path (coupling/crossing_isolation.hpp) on the recorded ζ, ∂ζ/∂x,
+// ∂²ζ/∂x² with the record's bounds. The wave's part of each wetted piece: below still water from the
+// recorded antiderivatives at the piece's ends (∫F = ΔG/w, ∫uF = h G1/w − ΔH/w²); on the crest
+// extension from the antiderivatives of ζ along still water (Gauss–Legendre on ζ when the piece
+// spans less than a metre in x). Cost: a few polynomial evaluations per edge, independent of the
+// sea's component count.
+// A submerged piece's end outside every disc (a keel that has come out of the water between its
+// corners) takes G and H there from the component sums, for that point alone. The record answers
+// only where it can certify the answer; otherwise std::nullopt and the caller takes the exact sums:
+// t outside the record, an edge outside the record's x range, more crossings on one edge than the
+// crossing list holds.
 #pragma once
 
 #include <Eigen/Dense>
@@ -34,9 +39,10 @@ std::vector<WavePatch> box_hull_patches(const BoxHullSection& hull, double g1_he
 void box_hull_x_range(const BoxHullSection& hull, double g1_height, const HullMotionRange& range, double& x_min,
                       double& x_max);
 
-// `ramp` is the wave field's r(t); `workspace` is filled here (sized once, reused).
+// `wave` is the field the record was made of (G and H by its sums at a submerged piece's end outside
+// the discs); `ramp` is its r(t); `workspace` is filled here (sized once, reused).
 std::optional<HullLoad> recorded_hull_pressure_load(const BoxHullSection& hull, const IncidentWaveRecord& record,
-                                                    WavePolynomials& workspace, double ramp, double water_density,
+                                                    const WaveField& wave, WavePolynomials& workspace, double ramp, double water_density,
                                                     double gravity, const Eigen::Vector2d& g1_position, double pitch,
                                                     double t);
 

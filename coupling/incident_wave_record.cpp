@@ -98,6 +98,80 @@ void add_patch_channels(const WaveField& wave, const WavePatch& patch, std::size
   }
 }
 
+// The Chebyshev degree D along still water: the smallest with Σ_n |A_n| Σ_{d>D} 2|J_d(k_n L/2)| within
+// `budget`; the bound at that degree.
+std::size_t line_degree(const WaveField& wave, double half_length, double budget, double& bound) {
+  const std::size_t largest = static_cast<std::size_t>(std::ceil(wave.max_wave_number() * half_length)) + 80;
+  std::vector<double> tail(largest + 2, 0.0);  // tail[D] = Σ_n |A_n| Σ_{d>D} 2|J_d|
+  for (const WaveComponent& c : wave.components()) {
+    const double a = c.wave_number * half_length;
+    double above = 0.0;
+    for (std::size_t d = largest + 1; d-- > 0;) {
+      tail[d] += c.amplitude * above;
+      above += 2.0 * std::abs(std::cyl_bessel_j(static_cast<double>(d), a));
+    }
+  }
+  for (std::size_t d = 0; d <= largest; ++d) {
+    if (tail[d] <= budget) {
+      bound = tail[d];
+      return d;
+    }
+  }
+  throw std::invalid_argument(fmt::format("incident wave record: the hull's x range is too long for the shortest waves (a "
+                                          "Chebyshev series of degree {} leaves {:.3g} m > {:.3g} m)", largest, tail[largest],
+                                          budget));
+}
+
+// Channels of the line: c_d = Σ A e^{ik x_c} ε_d i^d J_d(k L/2) (the real part is the coefficient).
+void add_line_channels(const WaveField& wave, double centre, double half_length, std::size_t degree,
+                       hydro::HarmonicSums& sums) {
+  const std::size_t count = wave.components().size();
+  const std::size_t first = sums.coefficients.size();
+  sums.coefficients.resize(first + degree + 1, std::vector<Complex>(count));
+  for (std::size_t n = 0; n < count; ++n) {
+    const double k = wave.components()[n].wave_number;
+    const Complex base = wave.complex_amplitudes()[n] * std::polar(1.0, k * centre);
+    Complex power(1.0, 0.0);  // i^d
+    for (std::size_t d = 0; d <= degree; ++d) {
+      const double weight = (d == 0 ? 1.0 : 2.0) * std::cyl_bessel_j(static_cast<double>(d), k * half_length);
+      sums.coefficients[first + d][n] = base * power * weight;
+      power *= Complex(0.0, 1.0);
+    }
+  }
+}
+
+// Chebyshev series: derivative (size kept: the top coefficient 0) and antiderivative (one longer).
+void chebyshev_derivative(const std::vector<double>& c, std::vector<double>& out) {
+  const std::size_t n = c.size();
+  out.assign(n, 0.0);
+  double next = 0.0, next2 = 0.0;  // c'_{d+1}, c'_{d+2}
+  for (std::size_t d = n - 1; d >= 1; --d) {
+    const double value = next2 + 2.0 * static_cast<double>(d) * c[d];  // c'_{d−1}
+    out[d - 1] = value;
+    next2 = next;
+    next = value;
+  }
+  out[0] *= 0.5;
+}
+
+void chebyshev_integral(const std::vector<double>& c, std::vector<double>& out) {
+  const std::size_t n = c.size();
+  out.assign(n + 1, 0.0);
+  const auto at = [&](std::size_t d) { return d < n ? c[d] : 0.0; };
+  out[1] = at(0) - 0.5 * at(2);
+  for (std::size_t d = 2; d <= n; ++d) out[d] = (at(d - 1) - at(d + 1)) / (2.0 * static_cast<double>(d));
+}
+
+double clenshaw(const std::vector<double>& c, double x) {
+  double b1 = 0.0, b2 = 0.0;
+  for (std::size_t d = c.size(); d-- > 1;) {
+    const double b0 = 2.0 * x * b1 - b2 + c[d];
+    b2 = b1;
+    b1 = b0;
+  }
+  return x * b1 - b2 + c[0];
+}
+
 hydro::HarmonicSums empty_sums(const WaveField& wave) {
   hydro::HarmonicSums sums;
   sums.frequency_step = wave.harmonic_grid().frequency_step;
@@ -114,7 +188,7 @@ constexpr double bound_window = 5.0;  // [s]
 // exceed the sampled largest by at most (k_max Δx)²/8 of it for one component (1/cos(k Δx/2) − 1):
 // a margin of 10 % covers that (1.3 % at Δx = λ_min/10) and the time interpolation's.
 void sample_bounds(const WaveField& wave, const IncidentWaveRecordOptions& options, std::vector<double>& elevation,
-                   std::vector<double>& slope) {
+                   std::vector<double>& slope, std::vector<double>& curvature, std::vector<double>& third) {
   const double shortest = 2.0 * std::numbers::pi / wave.max_wave_number();
   const double span = options.x_max - options.x_min;
   const auto points = static_cast<std::size_t>(std::ceil(span / (0.1 * shortest))) + 1;
@@ -125,16 +199,20 @@ void sample_bounds(const WaveField& wave, const IncidentWaveRecordOptions& optio
   const auto windows = static_cast<std::size_t>(std::ceil(options.duration / bound_window)) + 1;
   elevation.assign(windows, 0.0);
   slope.assign(windows, 0.0);
-  std::vector<Complex> value(2);
+  curvature.assign(windows, 0.0);
+  third.assign(windows, 0.0);
+  std::vector<Complex> value(4);
   for (std::size_t i = 0; i < points; ++i) {
     const double x = options.x_min + span * static_cast<double>(i) / static_cast<double>(points - 1);
     hydro::HarmonicSums sums = empty_sums(wave);
-    sums.coefficients.assign(2, std::vector<Complex>(wave.components().size()));
+    sums.coefficients.assign(4, std::vector<Complex>(wave.components().size()));
     for (std::size_t n = 0; n < wave.components().size(); ++n) {
       const double k = wave.components()[n].wave_number;
       const Complex at_x = wave.complex_amplitudes()[n] * std::polar(1.0, k * x);
       sums.coefficients[0][n] = at_x;
       sums.coefficients[1][n] = Complex(0.0, k) * at_x;  // ∂/∂x
+      sums.coefficients[2][n] = -k * k * at_x;           // ∂²/∂x²
+      sums.coefficients[3][n] = Complex(0.0, -k * k * k) * at_x;  // ∂³/∂x³
     }
     const hydro::HarmonicRecord record = hydro::HarmonicRecord::build(sums, record_options);
     const double step = record.time_step();
@@ -146,12 +224,16 @@ void sample_bounds(const WaveField& wave, const IncidentWaveRecordOptions& optio
       for (std::size_t w = first; w <= last; ++w) {
         elevation[w] = std::max(elevation[w], std::abs(value[0].real()));
         slope[w] = std::max(slope[w], std::abs(value[1].real()));
+        curvature[w] = std::max(curvature[w], std::abs(value[2].real()));
+        third[w] = std::max(third[w], std::abs(value[3].real()));
       }
     }
   }
   for (std::size_t w = 0; w < windows; ++w) {
     elevation[w] = 1.1 * elevation[w] + options.tolerance;
     slope[w] = 1.1 * slope[w] + options.tolerance;
+    curvature[w] = 1.1 * curvature[w] + options.tolerance;
+    third[w] = 1.1 * third[w] + options.tolerance;
   }
 }
 
@@ -165,9 +247,13 @@ std::size_t IncidentWaveRecord::predicted_memory(const WaveField& wave, const st
   const std::size_t degree = taylor_degree(wave, patches, 0.25 * options.tolerance, bound);
   hydro::HarmonicSums sums = empty_sums(wave);
   for (const WavePatch& patch : patches) add_patch_channels(wave, patch, degree, sums);
+  const double centre = 0.5 * (options.x_min + options.x_max), half_length = 0.5 * (options.x_max - options.x_min);
+  double line_bound = 0.0;
+  const std::size_t line = line_degree(wave, half_length, 0.25 * options.tolerance, line_bound);
+  add_line_channels(wave, centre, half_length, line, sums);
   hydro::HarmonicRecordOptions record_options;
   record_options.duration = options.duration;
-  record_options.tolerance = 0.25 * options.tolerance / static_cast<double>(degree + 3);
+  record_options.tolerance = 0.25 * options.tolerance / static_cast<double>(std::max(degree + 3, line + 1));
   return hydro::HarmonicRecord::predicted_memory(sums, record_options);
 }
 
@@ -187,9 +273,15 @@ std::optional<IncidentWaveRecord> IncidentWaveRecord::build(const WaveField& wav
   out.degree_ = taylor_degree(wave, patches, 0.25 * options.tolerance, truncation);
   hydro::HarmonicSums sums = empty_sums(wave);
   for (const WavePatch& patch : patches) add_patch_channels(wave, patch, out.degree_, sums);
+  const double centre = 0.5 * (options.x_min + options.x_max), half_length = 0.5 * (options.x_max - options.x_min);
+  double line_bound = 0.0;
+  out.line_degree_ = line_degree(wave, half_length, 0.25 * options.tolerance, line_bound);
+  add_line_channels(wave, centre, half_length, out.line_degree_, sums);
+  out.max_wave_number_ = wave.max_wave_number();
+  const std::size_t widest = std::max(out.degree_ + 3, out.line_degree_ + 1);
   hydro::HarmonicRecordOptions record_options;
   record_options.duration = options.duration;
-  record_options.tolerance = 0.25 * options.tolerance / static_cast<double>(out.degree_ + 3);
+  record_options.tolerance = 0.25 * options.tolerance / static_cast<double>(widest);
   record_options.memory_limit = options.memory_limit;
   out.record_ = hydro::HarmonicRecord::build(sums, record_options);
   out.channel_scale_.assign(out.degree_ + 3, 1.0);
@@ -203,9 +295,11 @@ std::optional<IncidentWaveRecord> IncidentWaveRecord::build(const WaveField& wav
   stats.components = wave.components().size();
   stats.time_step = out.record_.time_step();
   stats.truncation_bound = truncation;
-  stats.interpolation_error = static_cast<double>(out.degree_ + 3) * out.record_.midpoint_error();
+  stats.interpolation_error = static_cast<double>(widest) * out.record_.midpoint_error();
+  stats.line_degree = out.line_degree_;
+  stats.line_truncation_bound = line_bound;
   stats.memory_bytes = static_cast<double>(out.record_.memory_bytes());
-  sample_bounds(wave, options, out.window_elevation_, out.window_slope_);
+  sample_bounds(wave, options, out.window_elevation_, out.window_slope_, out.window_curvature_, out.window_third_);
   stats.bound_window = bound_window;
   stats.elevation_bound = *std::max_element(out.window_elevation_.begin(), out.window_elevation_.end());
   stats.slope_bound = *std::max_element(out.window_slope_.begin(), out.window_slope_.end());
@@ -214,8 +308,8 @@ std::optional<IncidentWaveRecord> IncidentWaveRecord::build(const WaveField& wav
 }
 
 void IncidentWaveRecord::at(double t, double ramp, WavePolynomials& out) const {
-  const std::size_t per_patch = degree_ + 3, channels = per_patch * patches_.size();
-  out.potential.resize(channels);
+  const std::size_t per_patch = degree_ + 3, patch_channels = per_patch * patches_.size();
+  out.potential.resize(record_.channels());
   out.elevation.resize((degree_ + 1) * patches_.size());
   out.ramp = ramp;
   out.time = t;
@@ -226,6 +320,25 @@ void IncidentWaveRecord::at(double t, double ramp, WavePolynomials& out) const {
     for (std::size_t j = 0; j <= degree_; ++j) elevation[j] = potential[j + 2];
     for (std::size_t m = 2; m < per_patch; ++m) potential[m] *= channel_scale_[m];
   }
+  out.line.resize(line_degree_ + 1);
+  for (std::size_t d = 0; d <= line_degree_; ++d) out.line[d] = ramp * out.potential[patch_channels + d].real();
+  chebyshev_derivative(out.line, out.line_rate);
+  chebyshev_derivative(out.line_rate, out.line_curvature);
+  chebyshev_integral(out.line, out.line_integral);
+  chebyshev_integral(out.line_integral, out.line_second_integral);
+}
+
+void IncidentWaveRecord::line_elevation(const WavePolynomials& p, double x, double& zeta, double& slope, double& curvature) const {
+  const double half_length = 0.5 * (x_max_ - x_min_), scaled = (x - 0.5 * (x_min_ + x_max_)) / half_length;
+  zeta = clenshaw(p.line, scaled);
+  slope = clenshaw(p.line_rate, scaled) / half_length;
+  curvature = clenshaw(p.line_curvature, scaled) / (half_length * half_length);
+}
+
+void IncidentWaveRecord::line_antiderivatives(const WavePolynomials& p, double x, double& first, double& second) const {
+  const double half_length = 0.5 * (x_max_ - x_min_), scaled = (x - 0.5 * (x_min_ + x_max_)) / half_length;
+  first = clenshaw(p.line_integral, scaled) * half_length;
+  second = clenshaw(p.line_second_integral, scaled) * half_length * half_length;
 }
 
 int IncidentWaveRecord::patch_of(double x, double y) const {

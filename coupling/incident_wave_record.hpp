@@ -15,8 +15,13 @@
 // Truncation: for |z − c| ≤ ρ the error of F is at most Σ_n |A_n| e^{k_n Re c} R_M(k_n ρ),
 // R_M(x) = Σ_{m>M} x^m/m! (that of G at most ρ times it, of H ρ² times it); M is the smallest
 // degree that keeps it below a quarter of the tolerance. Time interpolation: measured at every
-// segment midpoint. Both are stated with the record. Elevation and slope bounds over the whole x
-// range of the hull (for the keel and the deck, which lie outside the patches): sampled on a grid
+// segment midpoint. Both are stated with the record. Along still water over the hull's whole x range
+// [x_min, x_max] (where the keel's and the deck's waterline crossings lie, outside the patches) the
+// elevation is also recorded as a Chebyshev series in x̂ = (x − x_c)/(L/2):
+//   ζ(x, t) = Σ_d c_d(t) T_d(x̂),   c_d = Re Σ_n A_n e^{ik_n x_c} ε_d i^d J_d(k_n L/2) e^{−iδω_n t}
+// (Jacobi–Anger: e^{ia x̂} = J_0(a) + 2 Σ_{d≥1} i^d J_d(a) T_d(x̂); ε_0 = 1, ε_d = 2), truncated where
+// Σ_n |A_n| Σ_{d>D} 2|J_d(k_n L/2)| falls below a quarter of the tolerance; its x-derivatives and
+// antiderivatives are Chebyshev series too. Elevation and its x-derivative bounds over [x_min, x_max]: sampled on a grid
 // by FFT over the record, kept per window of `bound_window` seconds (a keel that the record's
 // deepest trough might reach is still certainly wet in the calmer minutes), with a stated margin
 // for the values between samples.
@@ -31,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include "coupling/incident_wave_record_stats.hpp"
 #include "coupling/wave_field.hpp"
 #include "hydro/harmonic_record.hpp"
 
@@ -48,24 +54,13 @@ struct IncidentWaveRecordOptions {
   std::size_t memory_limit = std::size_t{4} << 30;  // [bytes] refuse above this (std::length_error)
 };
 
-// What the record is and what it cost: stated in the run header and summary.json.
-struct IncidentWaveRecordStats {
-  std::size_t patches = 0, degree = 0, channels = 0, samples = 0, components = 0;
-  double time_step = 0.0;            // [s] of the Hermite segments
-  double truncation_bound = 0.0;     // [m] Taylor remainder bound of F in a patch
-  double interpolation_error = 0.0;  // [m] measured at segment midpoints (F units)
-  double elevation_bound = 0.0;      // [m] |ζ| ≤ this over [x_min, x_max] × record, before the ramp
-  double slope_bound = 0.0;          // [-] |∂ζ/∂x| ≤ this, likewise
-  double bound_window = 0.0;         // [s] the bounds are also kept per window of this length
-  double memory_bytes = 0.0;
-  double build_seconds = 0.0;
-};
-
 // The polynomials of every patch at one time t (filled by IncidentWaveRecord::at; reused across
 // calls: sized once, then no allocation).
 struct WavePolynomials {
   std::vector<std::complex<double>> elevation;  // f̂_j = F Taylor coefficients × ρ^j, per patch (M + 1 each)
-  std::vector<std::complex<double>> potential;  // η_m, per patch (M + 3 each)
+  std::vector<std::complex<double>> potential;  // η_m, per patch (M + 3 each), then the line's channels
+  // Chebyshev coefficients in x̂ along still water, ramp included: ζ, dζ/dx̂, d²ζ/dx̂², ∫ζ dx̂, ∫∫ζ dx̂².
+  std::vector<double> line, line_rate, line_curvature, line_integral, line_second_integral;
   double ramp = 0.0;
   double time = 0.0;
 };
@@ -89,6 +84,9 @@ class IncidentWaveRecord {
   // |ζ| and |∂ζ/∂x| over the x range in the bound window holding t, times the ramp r(t).
   double elevation_bound(double t, double ramp) const { return ramp * window_bound(window_elevation_, t); }
   double slope_bound(double t, double ramp) const { return ramp * window_bound(window_slope_, t); }
+  double curvature_bound(double t, double ramp) const { return ramp * window_bound(window_curvature_, t); }
+  double third_derivative_bound(double t, double ramp) const { return ramp * window_bound(window_third_, t); }
+  double max_wave_number() const { return max_wave_number_; }
 
   // The polynomials at t ∈ [0, duration] (the ramp of the wave field included in `ramp`).
   void at(double t, double ramp, WavePolynomials& out) const;
@@ -100,10 +98,16 @@ class IncidentWaveRecord {
                        std::complex<double>& f_rate) const;
   void antiderivatives(const WavePolynomials& p, int patch, double x, double y, std::complex<double>& g,
                        std::complex<double>& h) const;
+  // Along still water, x ∈ [x_min, x_max], ramp included: ζ, ∂ζ/∂x, ∂²ζ/∂x²; and ∫ζ dx, ∫∫ζ dx² (one
+  // fixed antiderivative of each, the same for every x at one time).
+  void line_elevation(const WavePolynomials& p, double x, double& zeta, double& slope, double& curvature) const;
+  void line_antiderivatives(const WavePolynomials& p, double x, double& first, double& second) const;
 
  private:
   std::vector<WavePatch> patches_;
   std::size_t degree_ = 0;  // M
+  std::size_t line_degree_ = 0;  // D
+  double max_wave_number_ = 0.0;
   double x_min_ = 0.0, x_max_ = 0.0;
   std::vector<double> channel_scale_;  // η_m = channel_m × channel_scale_[m]
   double window_bound(const std::vector<double>& bounds, double t) const {
@@ -113,7 +117,7 @@ class IncidentWaveRecord {
 
   hydro::HarmonicRecord record_;
   IncidentWaveRecordStats stats_;
-  std::vector<double> window_elevation_, window_slope_;  // per bound window, margin included
+  std::vector<double> window_elevation_, window_slope_, window_curvature_, window_third_;  // per bound window, margin included
 };
 
 }  // namespace ffrf::coupling

@@ -14,13 +14,6 @@ namespace ffrf::coupling {
 
 namespace {
 
-// Newton stops once its step is below 1e-9 in s ∈ [0, 1]: convergence is quadratic there, so the
-// returned iterate is good to round-off (the step it would take next is ~1e-18).
-constexpr double root_tolerance = 1e-9;
-constexpr double bracket_tolerance = 1e-15;  // bisection alone (Newton left the bracket) stops here
-constexpr double smallest_interval = 1e-13;
-constexpr int max_newton_iterations = 100;
-
 // g(s) and g'(s) along the edge.
 struct SurfaceGap {
   const WaveField& wave;
@@ -51,31 +44,6 @@ struct SurfaceGap {
   }
 };
 
-// The one root of a monotone g in [lo, hi] where wet (g < 0) changes: Newton from the chord's root,
-// kept inside the bracket.
-double polish_root(const SurfaceGap& gap, double lo, double hi, double g_lo, double g_hi) {
-  const bool lo_wet = g_lo < 0.0;
-  double s = g_lo != g_hi ? lo + (hi - lo) * g_lo / (g_lo - g_hi) : 0.5 * (lo + hi);
-  if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
-  for (int iteration = 0; iteration < max_newton_iterations; ++iteration) {
-    double g = 0.0, slope = 0.0;
-    gap.evaluate(s, g, slope);
-    if (g == 0.0) return s;
-    ((g < 0.0) == lo_wet ? lo : hi) = s;
-    double next = slope != 0.0 ? s - g / slope : 0.5 * (lo + hi);
-    const bool newton = next > lo && next < hi;
-    if (!newton) next = 0.5 * (lo + hi);  // the step left the bracket: bisect
-    if ((newton && std::abs(next - s) <= root_tolerance) || hi - lo <= bracket_tolerance) return next;
-    s = next;
-  }
-  return s;
-}
-
-// An interval with g, g' and g'' at both ends.
-struct Interval {
-  double lo, hi, g_lo, g_hi, slope_lo, slope_hi, curvature_lo, curvature_hi;
-};
-
 constexpr int max_samples = 256;  // start intervals per edge (an edge up to 512/k_max long)
 
 // The edge cut into `count` equal intervals with g, g', g'' at their ends. Component i's phase
@@ -83,7 +51,7 @@ constexpr int max_samples = 256;  // start intervals per edge (an edge up to 512
 // multiplication per sample (two phasors per component instead of one per sample). The components go
 // through in blocks of `lanes`, each lane with its own sums per sample (added up at the end): the
 // lanes are independent, so the compiler runs them side by side in vector registers.
-void sample_edge(const SurfaceGap& gap, int count, std::array<Interval, max_samples>& out) {
+void sample_edge(const SurfaceGap& gap, int count, std::array<CrossingInterval, max_samples>& out) {
   constexpr std::size_t lanes = 4;
   using Lanes = std::array<double, lanes>;
   std::array<Lanes, max_samples + 1> zeta{}, zeta_x{}, zeta_xx{};
@@ -148,50 +116,11 @@ WaterlineCrossings waterline_crossings(const WaveField& wave, double t, const Ei
   // at once by the local bound, the rest are halved (measured on the reference hull in the crane's
   // 3-hour sea: 1/k_max costs 1.4×, 3/k_max 1.2× the time of 2/k_max; bench/bench_waterline_crossings).
   const int count = std::clamp(static_cast<int>(std::ceil(0.5 * dx * wave.max_wave_number())), 1, max_samples);
-  std::array<Interval, max_samples> first;
+  std::array<CrossingInterval, max_samples> first;
   sample_edge(gap, count, first);
   out.wet_at_start = first[0].g_lo < 0.0;
 
-  for (int piece = 0; piece < count && !out.truncated; ++piece) {
-    // Depth-first, left half first, so the roots come out in increasing s. Each split replaces one
-    // interval by two, so the stack never holds more than one interval per halving level plus one.
-    std::array<Interval, 64> stack;
-    int size = 0;
-    stack[size++] = first[static_cast<std::size_t>(piece)];
-    while (size > 0) {
-      const Interval iv = stack[--size];
-      const bool changes = (iv.g_lo < 0.0) != (iv.g_hi < 0.0);
-      const double width = iv.hi - iv.lo;
-      // |g''| on the interval: every point lies within width/2 of an end, so |g''| is at most the
-      // larger end value plus width/2 times the field's bound on |g'''|, and never above the global bound.
-      const double end_curvature = std::max(std::abs(iv.curvature_lo), std::abs(iv.curvature_hi));
-      const double curvature = std::min(max_curvature, end_curvature + 0.5 * width * max_third);
-      if (!changes) {
-        // Root-free: g stays within curvature · width²/8 of its chord, or within width · max|g'| of
-        // its ends (the field's slope bound).
-        const double nearest = std::min(std::abs(iv.g_lo), std::abs(iv.g_hi));
-        if (nearest > 0.125 * curvature * width * width) continue;
-        if (std::abs(iv.g_lo) + std::abs(iv.g_hi) > width * max_slope) continue;
-      }
-      // g' cannot change sign on the interval if it is larger than max|g''| · width at either end.
-      const double reach = width * curvature;
-      const bool monotone = std::abs(iv.slope_lo) > reach || std::abs(iv.slope_hi) > reach;
-      if (monotone || width <= smallest_interval || size + 2 > static_cast<int>(stack.size())) {
-        if (!changes) continue;  // monotone without a sign change (or an unresolved tangency): no root
-        if (out.count == WaterlineCrossings::max_crossings) {
-          out.truncated = true;
-          break;
-        }
-        out.s[static_cast<std::size_t>(out.count++)] = polish_root(gap, iv.lo, iv.hi, iv.g_lo, iv.g_hi);
-        continue;
-      }
-      const double mid = 0.5 * (iv.lo + iv.hi);
-      double g_mid = 0.0, slope_mid = 0.0, curvature_mid = 0.0;
-      gap.evaluate(mid, g_mid, slope_mid, curvature_mid);
-      stack[size++] = {mid, iv.hi, g_mid, iv.g_hi, slope_mid, iv.slope_hi, curvature_mid, iv.curvature_hi};
-      stack[size++] = {iv.lo, mid, iv.g_lo, g_mid, iv.slope_lo, slope_mid, iv.curvature_lo, curvature_mid};
-    }
-  }
+  isolate_crossings(gap, first.data(), count, {max_slope, max_curvature, max_third}, out);
   return out;
 }
 

@@ -50,10 +50,12 @@ std::string irregular_text(const study::IrregularStatistics& s) {
                                  s.record_length, s.ramp_end);
   std::string text = fmt::format(
       "\nirregular sea: {}, sampled every {:g} s\n"
+      "  {} components over [{:.4g}, {:.4g}] rad/s, holding {:.2f} % of the spectrum's m0\n"
       "  incident wave at G1: realised Hs = 4σ = {} m, Tz {} s, spectral peak {} rad/s\n"
       "  most probable maxima (MPM) over the record, as levels: Rayleigh (narrow-band Gaussian), Weibull fit to the\n"
       "  peaks, Gumbel fit to 10 block maxima; motions about static equilibrium\n",
-      window, s.sample_interval, value(s.elevation.significant, 4), period(s.elevation.zero_crossing_period, 4),
+      window, s.sample_interval, s.components, s.band_lower, s.band_upper, 100.0 * s.band_share,
+      value(s.elevation.significant, 4), period(s.elevation.zero_crossing_period, 4),
       value(s.elevation.peak_frequency, 4));
   text += fmt::format("  {:<20} {:>11} {:>11} {:>8} {:>8} {:>11} {:>11} {:>11} {:>11}\n", "output", "sigma", "4 sigma",
                       "Tz [s]", "peak w", "max", "MPM Rayl.", "MPM Weib.", "MPM Gumb.");
@@ -75,6 +77,9 @@ Json irregular_json(const study::IrregularStatistics& s) {
             {"ramp_end_s", s.ramp_end},
             {"after_ramp", s.after_ramp},
             {"sample_interval_s", s.sample_interval},
+            {"band_rad_per_s", Json::array({s.band_lower, s.band_upper})},
+            {"components", s.components},
+            {"band_share_of_m0", s.band_share},
             {"incident_wave", response_json(s.elevation)},
             {"responses", std::move(responses)}};
   if (s.wire.static_tension > 0.0) {

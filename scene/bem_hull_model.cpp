@@ -1,8 +1,6 @@
 // The hull's BEM hydrodynamics for the crane (see the header).
 #include "scene/bem_hull_model.hpp"
 
-#include "coupling/excitation_record.hpp"
-
 #include <cmath>
 #include <fmt/format.h>
 #include <map>
@@ -11,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "coupling/excitation_record.hpp"
 #include "hydro/retardation.hpp"
 #include "hydro/state_space_fit.hpp"
 #include "scene/scene_loader.hpp"

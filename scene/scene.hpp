@@ -112,7 +112,7 @@ enum class WaveKinematics { precomputed, exact };
 
 // The motion range a recorded sea covers around the floating hull (± surge, heave [m], pitch [rad]).
 struct KinematicsRange {
-  double surge = 6.0, heave = 2.0, pitch = 0.05;
+  double surge = 6.0, heave = 2.0, pitch = 0.05235987755982988;  // pitch 3°
 };
 
 struct IrregularSea {

@@ -78,6 +78,17 @@ std::optional<IrregularStatistics> irregular_statistics(const scene::Scene& scen
   out.after_ramp = time[first] >= out.ramp_end;
   out.sample_interval = dt;
   const hydro::WaveComponents sea = scene::sea_components(scene);
+  if (sea.size() > 0) {
+    out.band_lower = *std::min_element(sea.frequency.begin(), sea.frequency.end());
+    out.band_upper = *std::max_element(sea.frequency.begin(), sea.frequency.end());
+  }
+  out.components = sea.size();
+  out.band_share = 1.0;
+  if (scene.sea->spectrum != scene::SeaSpectrum::components) {
+    const hydro::SeaRealisation realisation =
+        hydro::synthesize(scene::sea_spectrum(*scene.sea), scene::synthesis_options(*scene.sea, scene.simulation.duration));
+    out.band_share = realisation.band_m0 / realisation.spectrum_m0;
+  }
   const std::vector<double> eta = hydro::elevation_record(sea, time[first], dt, samples.size() - first);
   out.elevation = response_statistics("wave_elevation_m", "m", eta, dt, out.note);
   for (std::string_view column : statistics_columns()) {

@@ -42,6 +42,10 @@ struct IrregularStatistics {
   bool after_ramp = false;       // the window starts after the ramp; false: a run that ends within the
                                  // ramp, whose statistics are over the whole run, ramp included
   double sample_interval = 0.0;  // [s]
+  // The synthesized sea: its band, component count and the share of the spectrum's m0 it holds.
+  double band_lower = 0.0, band_upper = 0.0;  // [rad/s]
+  std::size_t components = 0;
+  double band_share = 0.0;       // Σ S(ω_n) Δω / m0 of the spectrum (1 for user components)
   ResponseStatistics elevation;  // the incident wave at x = 0 (G1 at rest)
   std::vector<ResponseStatistics> responses;  // statistics_columns() order
   hydro::TensionAmplification wire;           // DAF (crane with a wire)

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "coupling/incident_wave_record.hpp"
 #include "coupling/planar.hpp"
 #include "fem/analytic_beam.hpp"
 #include "scene/irregular_sea.hpp"

@@ -22,7 +22,7 @@
 #include "scene/crane_builder.hpp"
 #include "scene/crane_model_cache.hpp"
 #include "scene/scene.hpp"
-#include "coupling/incident_wave_record.hpp"
+#include "coupling/incident_wave_record_stats.hpp"
 #include "study/irregular_statistics.hpp"
 #include "study/output_series.hpp"
 #include "study/verdict.hpp"

@@ -66,7 +66,8 @@ TEST(ExcitationRecord, IsTheExactExcitationWithinItsMeasuredBoundOverAThreeHourR
   EXPECT_GT(record.midpoint_error_fraction(), 0.0);
   EXPECT_LE(record.midpoint_error_fraction(), 1.0);
   for (int c = 0; c < 3; ++c) EXPECT_LE(record.midpoint_error()(c), options.tolerance(c)) << "channel " << c;
-  EXPECT_EQ(record.memory_bytes(), 2 * 3 * record.samples() * sizeof(std::complex<double>));
+  // Three channels, each with its value and two time derivatives (quintic Hermite).
+  EXPECT_EQ(record.memory_bytes(), 3 * 3 * record.samples() * sizeof(std::complex<double>));
   EXPECT_NEAR(record.time_step() * static_cast<double>(record.samples() - 1), record.duration(), 1e-9 * three_hours);
 
   // Random times over the whole record, and the midpoints of the first and last segments.
