@@ -166,6 +166,7 @@ Json wave_kinematics_json(const study::WaveKinematicsUse& use) {
     json["record"] = Json{{"components", r.components},
                           {"patches", r.patches},
                           {"taylor_degree", r.degree},
+                          {"line_degree", r.line_degree},
                           {"channels", r.channels},
                           {"samples", r.samples},
                           {"time_step_s", r.time_step},
