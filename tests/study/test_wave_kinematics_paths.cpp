@@ -1,6 +1,6 @@
 // The crane in the reference irregular sea with the incident wave recorded once per record against
 // the same crane with the wave summed component by component (an independent evaluation of the
-// same loads): a 600-s record, both at the model-choice tolerance, every judged output within 1e-4
+// same loads): a 600-s record, both at rtol 1e-10, every judged output within 1e-4
 // (normalized RMS error, the measure `ffrf compare` judges by), the same sea (components and seed)
 // on both paths, and most hull loads taken from the record.
 #include <gtest/gtest.h>
@@ -34,8 +34,11 @@ TEST(WaveKinematicsPaths, RecordedSeaRunsAsTheComponentSums) {
   ASSERT_EQ(exact.sea->kinematics, scene::WaveKinematics::exact);
   study::DynamicsRequest request;
   request.duration = 600.0;
-  request.relative_tolerance = 1e-8;  // the model-choice rtol of a 1e-4 verdict
-  request.absolute_tolerance = 1e-8;
+  // Tight enough that the integrator's own error is far below the 1e-4 asked: at the model-choice
+  // rtol 1e-8 the two runs differed by 0.5–1.4e-4 in wire tension (measured), at 1e-10 by 6e-7 —
+  // the difference is the integrator's, not the loads' (those agree to 4e-11 of the buoyancy).
+  request.relative_tolerance = 1e-10;
+  request.absolute_tolerance = 1e-10;
   const scene::BoomChoice rigid{scene::BoomKind::rigid, 16, 0, false};
   const study::ModelRun a = study::run_model(recorded, rigid, study::integrator_settings(recorded, request));
   const study::ModelRun b = study::run_model(exact, rigid, study::integrator_settings(exact, request));
