@@ -30,7 +30,7 @@
 #include "study/run_pipeline.hpp"
 #include "../scene_text.hpp"
 
-namespace {
+namespace bem_crane_test {
 
 using namespace ffrf;
 constexpr double kPi = std::numbers::pi;
@@ -229,4 +229,4 @@ TEST(BemCrane, ConstantAndCumminsRadiationAgreeWhereTheDampingIsFlat) {
   EXPECT_LT(largest_gap(time, convolution, constant_exact, p), narrow + 0.005 * kStart);
 }
 
-}  // namespace
+}  // namespace bem_crane_test

@@ -25,7 +25,7 @@
 #include "coupling/constraint_drift.hpp"
 #include "crane_test_support.hpp"
 
-namespace {
+namespace constraint_formulations_test {
 
 using namespace ffrf;
 using coupling::Integrator;
@@ -199,4 +199,4 @@ TEST(ConstraintFormulationsEnergy, ProjectionInjectsNoEnergy) {
   EXPECT_NEAR(loss[1] / loss[0], 1.0, 0.15) << "projection loses what the minimal coordinates lose";
 }
 
-}  // namespace
+}  // namespace constraint_formulations_test

@@ -12,7 +12,7 @@
 
 #include "crane_test_support.hpp"
 
-namespace {
+namespace crane_dynamics_test {
 
 using namespace ffrf;
 using test::column;
@@ -141,4 +141,4 @@ TEST(CraneDynamics, VeryStiffBoomReproducesTheRigidBoom) {
   EXPECT_LT(test::relative_history_error(column(a, [](const O& o) { return o.cargo.z(); }), column(b, [](const O& o) { return o.cargo.z(); })), 1e-4);
 }
 
-}  // namespace
+}  // namespace crane_dynamics_test

@@ -8,7 +8,7 @@
 #include "coupling/planar.hpp"
 #include "crane_test_support.hpp"
 
-namespace {
+namespace crane_statics_test {
 
 using namespace ffrf;
 
@@ -65,4 +65,4 @@ TEST(CraneStatics, RigidAndModalBoomsReachTheSameFloatingPose) {
   EXPECT_NEAR(a.outputs.cargo.y(), b.outputs.cargo.y(), 1e-9);
 }
 
-}  // namespace
+}  // namespace crane_statics_test

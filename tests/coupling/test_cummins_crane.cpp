@@ -29,7 +29,7 @@
 #include "scene/scene_loader.hpp"
 #include "study/run_pipeline.hpp"
 
-namespace {
+namespace cummins_crane_test {
 
 using namespace ffrf::hydro;
 using cd = std::complex<double>;
@@ -227,4 +227,4 @@ TEST_F(BargeDecay, PitchWithSurgeCouplingMatchesTheFrequencyDomainRoot) {
   EXPECT_GT(surge, 1e-4);
 }
 
-}  // namespace
+}  // namespace cummins_crane_test

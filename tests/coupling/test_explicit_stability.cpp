@@ -15,7 +15,7 @@
 #include "crane_test_support.hpp"
 
 namespace ffrf {
-namespace {
+namespace explicit_stability_test {
 
 using scene::BoomKind;
 
@@ -167,5 +167,5 @@ TEST(ExplicitStability, EveryModelOfTheDefaultListAgreesWithTheLinearizedCrane) 
   }
 }
 
-}  // namespace
+}  // namespace explicit_stability_test
 }  // namespace ffrf

@@ -20,7 +20,7 @@
 
 #include "crane_test_support.hpp"
 
-namespace {
+namespace failure_detectors_test {
 
 using namespace ffrf;
 
@@ -185,4 +185,4 @@ TEST(FailureDetectors, EveryFailureKindHasADistinctName) {
   EXPECT_EQ(names.size(), static_cast<std::size_t>(count));
 }
 
-}  // namespace
+}  // namespace failure_detectors_test

@@ -16,7 +16,7 @@
 #include "nodal/nodal_coordinates.hpp"
 #include "one_element_reference.hpp"
 
-namespace {
+namespace floating_frame_body_test {
 
 using namespace ffrf;
 using Body = coupling::FloatingFrameBody<nodal::NodalCoordinates>;
@@ -147,4 +147,4 @@ TEST(FloatingFrameBody, OnePassLoadsEqualTheSeparateTerms) {
   EXPECT_NEAR(body.kinetic_energy(v, reference_fused, coupling_fused), body.kinetic_energy(q, v), 1e-12 * body.kinetic_energy(q, v));
 }
 
-}  // namespace
+}  // namespace floating_frame_body_test

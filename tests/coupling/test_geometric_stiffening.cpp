@@ -24,7 +24,7 @@
 #include "crane_test_support.hpp"
 #include "fem/analytic_beam.hpp"
 
-namespace {
+namespace geometric_stiffening_test {
 
 using namespace ffrf;
 
@@ -119,4 +119,4 @@ TEST(GeometricStiffening, CentrifugalStiffeningPreventsTheSpinDivergence) {
               spin, omega1, sigma, measured, 100.0 * (measured / sigma - 1.0), largest);
 }
 
-}  // namespace
+}  // namespace geometric_stiffening_test

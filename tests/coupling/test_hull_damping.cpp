@@ -24,7 +24,7 @@
 #include "scene/scene_loader.hpp"
 #include "study/run_pipeline.hpp"
 
-namespace {
+namespace hull_damping_test {
 
 using namespace ffrf;
 constexpr double kPi = std::numbers::pi;
@@ -137,4 +137,4 @@ TEST(HullDamping, TheLinearisationKeepsTheLinearPartOnly) {
   EXPECT_LT(std::abs(surge_damping(surge_scene(fmt::format("surge_quadratic = {}", q))) - none), 1e-6 * q);
 }
 
-}  // namespace
+}  // namespace hull_damping_test

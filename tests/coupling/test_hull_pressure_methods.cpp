@@ -22,7 +22,7 @@
 #include "hull_pressure_quadrature.hpp"
 #include "jonswap_test_sea.hpp"
 
-namespace {
+namespace hull_pressure_methods_test {
 
 using namespace ffrf::coupling;
 using Eigen::Vector2d;
@@ -166,4 +166,4 @@ TEST(HullPressureMethods, LongSeaRecurrenceAgreesWithDirectSumsAndQuadrature) {
   RecordProperty("worst_relative_difference_direct_quadrature", text);
 }
 
-}  // namespace
+}  // namespace hull_pressure_methods_test

@@ -14,7 +14,7 @@
 #include "coupling/incident_wave_record.hpp"
 #include "jonswap_test_sea.hpp"
 
-namespace {
+namespace hull_pressure_recorded_test {
 
 using namespace ffrf::coupling;
 using Eigen::Vector2d;
@@ -175,4 +175,4 @@ TEST(HullPressureRecorded, RefusesWhatItCannotRecord) {
   EXPECT_THROW(IncidentWaveRecord::build(sea, patches, options), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace hull_pressure_recorded_test

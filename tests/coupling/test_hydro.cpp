@@ -21,20 +21,21 @@
 #include "coupling/hull_pressure.hpp"
 #include "coupling/wave_field.hpp"
 
-// Global allocation counter (this executable only): hull_pressure_load must not allocate.
-namespace {
+// Global allocation counter (this executable only; off unless a test turns it on): hull_pressure_load
+// must not allocate.
+namespace hydro_test {
 long allocation_count = 0;
 bool counting_allocations = false;
-}  // namespace
+}  // namespace hydro_test
 void* operator new(std::size_t size) {
-  if (counting_allocations) ++allocation_count;
+  if (hydro_test::counting_allocations) ++hydro_test::allocation_count;
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
   throw std::bad_alloc();
 }
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
-namespace {
+namespace hydro_test {
 
 using namespace ffrf::coupling;
 using Eigen::Vector2d;
@@ -374,4 +375,4 @@ TEST(HullPressure, AllocatesNothing) {
   EXPECT_TRUE(std::isfinite(sink));
 }
 
-}  // namespace
+}  // namespace hydro_test

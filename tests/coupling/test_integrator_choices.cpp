@@ -13,7 +13,7 @@
 #include "coupling/integrator_table.hpp"
 #include "crane_test_support.hpp"
 
-namespace {
+namespace integrator_choices_test {
 
 using namespace ffrf;
 using coupling::Formulation;
@@ -193,4 +193,4 @@ TEST(IntegratorChoices, AFailingSetUpCallIsNamed) {
   }
 }
 
-}  // namespace
+}  // namespace integrator_choices_test

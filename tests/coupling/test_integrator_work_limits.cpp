@@ -12,7 +12,7 @@
 #include "coupling/integrator_table.hpp"
 #include "crane_test_support.hpp"
 
-namespace {
+namespace integrator_work_limits_test {
 
 using namespace ffrf;
 using coupling::FailureKind;
@@ -123,4 +123,4 @@ TEST(IntegratorWorkLimits, AStepSizeFloorAboveWhatAWireSnapNeedsIsAStepSizeColla
   EXPECT_NO_THROW(coupling::integrate(*crane.equations, z0, s));
 }
 
-}  // namespace
+}  // namespace integrator_work_limits_test

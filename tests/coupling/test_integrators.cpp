@@ -11,7 +11,7 @@
 
 #include "crane_test_support.hpp"
 
-namespace {
+namespace integrators_test {
 
 using namespace ffrf;
 using test::column;
@@ -168,4 +168,4 @@ TEST(Integrators, ArkodeBeyondTheStabilityLimitIsReportedUnstable) {
               std::abs(run.samples.back().cargo.y() - run.samples.front().cargo.y()));
 }
 
-}  // namespace
+}  // namespace integrators_test

@@ -14,7 +14,7 @@
 #include "crane_test_support.hpp"
 #include "linalg/dense_solvers.hpp"
 
-namespace {
+namespace modal_crane_test {
 
 using namespace ffrf;
 using coupling::OutputChannel;
@@ -75,9 +75,9 @@ TEST(ModalCrane, ErrorFallsWithModeCountAndStaticModesCarryTheQuasiStaticLoad) {
   EXPECT_LT(10.0 * e2s, e2) << "static modes must make k = 2 at least 10x more accurate";
 }
 
-}  // namespace
+}  // namespace modal_crane_test
 
-namespace {
+namespace modal_crane_test {
 
 TEST(ModalCrane, ModeCacheSolvesOncePerMeshAndGivesTheSameModel) {
   using namespace ffrf;
@@ -97,4 +97,4 @@ TEST(ModalCrane, ModeCacheSolvesOncePerMeshAndGivesTheSameModel) {
   EXPECT_EQ(cache.eigen_solves(), 1) << "one eigen solve for the whole mode-count sweep on one mesh";
 }
 
-}  // namespace
+}  // namespace modal_crane_test

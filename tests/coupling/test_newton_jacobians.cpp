@@ -22,7 +22,7 @@
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 
-namespace {
+namespace newton_jacobians_test {
 
 using namespace ffrf;
 using coupling::CraneEquations;
@@ -342,4 +342,4 @@ TEST(BorderedBandLU, SolvesLikeDenseLU) {
   EXPECT_FALSE(lu.factorize(singular));
 }
 
-}  // namespace
+}  // namespace newton_jacobians_test

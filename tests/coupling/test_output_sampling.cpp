@@ -15,7 +15,7 @@
 #include "coupling/simulation.hpp"
 #include "coupling/static_equilibrium.hpp"
 
-namespace {
+namespace output_sampling_test {
 
 using namespace ffrf;
 
@@ -89,4 +89,4 @@ TEST(OutputSampling, InterpolatedAccelerationsKeepTheJointReactionAtTheIntegrati
   EXPECT_LT(heave_error, 2e-4 * heave_range);
 }
 
-}  // namespace
+}  // namespace output_sampling_test

@@ -23,7 +23,7 @@
 
 #include "crane_test_support.hpp"
 
-namespace {
+namespace snap_loads_test {
 
 using namespace ffrf;
 
@@ -259,4 +259,4 @@ TEST(SnapLoads, OnlyAPeakAboveTheStaticTensionAfterSlackIsASnap) {
   EXPECT_EQ(coupling::snap_loads(record, limits).size(), 2u);
 }
 
-}  // namespace
+}  // namespace snap_loads_test

@@ -25,7 +25,7 @@
 #include "fem/analytic_beam.hpp"
 
 namespace ffrf {
-namespace {
+namespace spin_up_test {
 
 scene::Scene spin_scene() { return scene::load_scene(FFRF_SOURCE_DIR "/cases/spin_up_beam.toml"); }
 
@@ -190,5 +190,5 @@ TEST(SpinUp, FullCoordinateFormulationsReproduceTheMinimalRunOfTheDrivenBase) {
   }
 }
 
-}  // namespace
+}  // namespace spin_up_test
 }  // namespace ffrf

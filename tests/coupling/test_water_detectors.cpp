@@ -11,7 +11,7 @@
 #include "coupling/simulation.hpp"
 
 namespace ffrf::coupling {
-namespace {
+namespace water_detectors_test {
 
 // The reference hull (90 m box, G1 13 m aft of mid-length, 6 m above the keel, 8 m deep) and cargo
 // (20 m × 10 m) in a 1 m wave.
@@ -122,5 +122,5 @@ TEST(WaterDetectors, HubHasNoWater) {
   EXPECT_TRUE(post_run_detections(run, limits).empty());
 }
 
-}  // namespace
+}  // namespace water_detectors_test
 }  // namespace ffrf::coupling

@@ -21,7 +21,7 @@
 #include "jonswap_test_sea.hpp"
 #include "waterline_crossings_global_bounds.hpp"
 
-namespace {
+namespace waterline_crossings_test {
 
 using Eigen::Vector2d;
 using ffrf::coupling::ComponentSpec;
@@ -174,4 +174,4 @@ TEST(ComponentPhasors, RecurrenceMatchesTheDirectFormulaToTheLastComponentOfA3Ho
   EXPECT_FALSE(WaveField::from_components(shuffled, 1.0, 0.0, std::numeric_limits<double>::infinity(), g).harmonic_grid().active);
 }
 
-}  // namespace
+}  // namespace waterline_crossings_test

@@ -14,7 +14,7 @@
 
 #include "coupling/wave_field.hpp"
 
-namespace {
+namespace wave_field_test {
 
 using namespace ffrf::coupling;
 constexpr double rho = 1025.0, g = 9.81, pi = std::numbers::pi;
@@ -115,4 +115,4 @@ TEST(WaveField, NamesTheBadComponent) {
   EXPECT_EQ(calm.pressure(3.0, -2.0, 4.0, rho), rho * g * 2.0);
 }
 
-}  // namespace
+}  // namespace wave_field_test

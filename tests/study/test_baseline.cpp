@@ -19,7 +19,7 @@
 #include "study/output_series.hpp"
 #include "study_test_support.hpp"
 
-namespace {
+namespace baseline_test {
 
 using namespace ffrf;
 
@@ -304,4 +304,4 @@ TEST(BaselineOutputs, ColumnsAndJudgedChannelsAreAcceptedOthersAreNot) {
   EXPECT_THROW(study::record_baseline(scene, request), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace baseline_test

@@ -11,7 +11,7 @@
 #include "study/operability_criteria.hpp"
 
 namespace ffrf::study {
-namespace {
+namespace operability_criteria_test {
 
 constexpr double pi = std::numbers::pi;
 
@@ -174,5 +174,5 @@ TEST(OperabilityCriteria, LimitsOutOfRangeAreNamed) {
   }
 }
 
-}  // namespace
+}  // namespace operability_criteria_test
 }  // namespace ffrf::study

@@ -16,7 +16,7 @@
 #include "study_test_support.hpp"
 
 namespace ffrf::study {
-namespace {
+namespace operability_sea_test {
 
 constexpr double pi = std::numbers::pi;
 
@@ -147,5 +147,5 @@ TEST(OperabilityRun, TheBreakingCellIsNotPhysicalNotFailedAndARecordsTimeIsFollo
   EXPECT_DOUBLE_EQ(again.tension_mpm, study.cells[0].statistics.tension_mpm.mean);  // one seed: its own MPM
 }
 
-}  // namespace
+}  // namespace operability_sea_test
 }  // namespace ffrf::study

@@ -10,7 +10,7 @@
 #include "study_test_support.hpp"
 
 namespace ffrf {
-namespace {
+namespace rao_time_domain_test {
 
 void expect_within_one_percent(const study::TimeDomainCheck& check) {
   for (const auto& period : check.periods) {
@@ -41,5 +41,5 @@ TEST(RaoTimeDomain, RegularWaveRunsReproduceTheRaosOfTheNodalAndRigidCranes) {
   expect_within_one_percent(study::check_time_domain(scene, {scene::BoomKind::rigid, 1}, request));
 }
 
-}  // namespace
+}  // namespace rao_time_domain_test
 }  // namespace ffrf

@@ -15,7 +15,7 @@
 #include "study/recommend.hpp"
 #include "study_test_support.hpp"
 
-namespace {
+namespace recommend_test {
 
 using namespace ffrf;
 
@@ -212,4 +212,4 @@ TEST(Recommend, SpinUpRequiresCentrifugalStiffening) {
   EXPECT_NE(cheaper.failure.find("divergence"), std::string::npos) << cheaper.failure;
 }
 
-}  // namespace
+}  // namespace recommend_test

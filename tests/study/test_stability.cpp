@@ -13,7 +13,7 @@
 #include "study/stability.hpp"
 #include "study_test_support.hpp"
 
-namespace {
+namespace stability_test {
 
 using namespace ffrf;
 
@@ -108,4 +108,4 @@ TEST(Stability, DroppedLoadSnapPeakAndFreeFallMatchTheHandDerivation) {
   EXPECT_NEAR(w * w / (w0 * w0), 1.0 - compression / euler, 0.2 * compression / euler);
 }
 
-}  // namespace
+}  // namespace stability_test

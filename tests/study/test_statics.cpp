@@ -20,7 +20,7 @@
 #include "study/statics.hpp"
 #include "study_test_support.hpp"
 
-namespace {
+namespace statics_test {
 
 using namespace ffrf;
 
@@ -186,4 +186,4 @@ TEST(Statics, CargoBelowTheWaterIsNamed) {
   }
 }
 
-}  // namespace
+}  // namespace statics_test

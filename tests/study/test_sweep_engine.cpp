@@ -14,7 +14,7 @@
 #include "study_test_support.hpp"
 
 namespace ffrf::study {
-namespace {
+namespace sweep_engine_test {
 
 // The CSV line without its timing field (wall_s, the last but one; radiation is the last).
 std::string without_timing(const std::string& line) {
@@ -85,5 +85,5 @@ TEST_F(SweepEngine, AShardEqualsTheThreadedShard) {
   EXPECT_EQ(threaded.size(), 7u);  // ids 1, 4, ..., 19 of the 21
 }
 
-}  // namespace
+}  // namespace sweep_engine_test
 }  // namespace ffrf::study

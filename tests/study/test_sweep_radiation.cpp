@@ -17,7 +17,7 @@
 #include "study_test_support.hpp"
 
 namespace ffrf::study {
-namespace {
+namespace sweep_radiation_test {
 
 using hydro::RadiationKind;
 
@@ -87,5 +87,5 @@ TEST(SweepRadiation, ErrorsAgainstTheConvolutionReferenceOrderTheRadiationModels
               state_space, fit_error, convolution, study.reference.levels.back().change);
 }
 
-}  // namespace
+}  // namespace sweep_radiation_test
 }  // namespace ffrf::study
