@@ -182,20 +182,26 @@ hydro::HarmonicSums empty_sums(const WaveField& wave) {
 
 constexpr double bound_window = 5.0;  // [s]
 
-// |ζ| and |∂ζ/∂x| over [x_min, x_max] × [0, duration], sampled every tenth of the shortest wavelength
-// and (by the record's own step) in time, the largest per window of bound_window seconds (a sample
-// within one time step of a window's edge counts for both windows); the values between samples
-// exceed the sampled largest by at most (k_max Δx)²/8 of it for one component (1/cos(k Δx/2) − 1):
-// a margin of 10 % covers that (1.3 % at Δx = λ_min/10) and the time interpolation's.
+// |ζ| and its x-derivatives over [x_min, x_max] × [0, duration], sampled every sixth of the shortest
+// wavelength and at most every twelfth of the shortest period, the largest per window of
+// bound_window seconds (a sample within one time step of a window's edge counts for both windows).
+// Between samples a component's value exceeds the sampled largest by at most the factor
+// 1/(cos(k Δx/2) cos(ω Δt/2)) (its crest halfway between two samples in x and in t), largest for the
+// shortest component: that factor (1.20 at these spacings) is the margin, plus the samples' own
+// interpolation tolerance.
 void sample_bounds(const WaveField& wave, const IncidentWaveRecordOptions& options, std::vector<double>& elevation,
                    std::vector<double>& slope, std::vector<double>& curvature, std::vector<double>& third) {
   const double shortest = 2.0 * std::numbers::pi / wave.max_wave_number();
   const double span = options.x_max - options.x_min;
-  const auto points = static_cast<std::size_t>(std::ceil(span / (0.1 * shortest))) + 1;
+  const auto points = static_cast<std::size_t>(std::ceil(span / (shortest / 6.0))) + 1;
+  const double spacing = span / static_cast<double>(points - 1);
+  double highest_frequency = 0.0;
+  for (const WaveComponent& c : wave.components()) highest_frequency = std::max(highest_frequency, c.angular_frequency);
   hydro::HarmonicRecordOptions record_options;
   record_options.duration = options.duration;
+  record_options.largest_time_step = std::numbers::pi / (6.0 * highest_frequency);
   // The bounds need the largest values to a small fraction of the sea, not the record's accuracy:
-  // their samples are interpolated within 0.1 mm (covered by the margin below), which takes far fewer
+  // their samples are interpolated within 0.1 mm (added to the bounds below), which takes far fewer
   // time samples than the record's tolerance would.
   record_options.tolerance = std::max(options.tolerance, 1e-4);
   record_options.memory_limit = options.memory_limit;
@@ -205,6 +211,7 @@ void sample_bounds(const WaveField& wave, const IncidentWaveRecordOptions& optio
   curvature.assign(windows, 0.0);
   third.assign(windows, 0.0);
   std::vector<Complex> value(4);
+  double time_step = record_options.largest_time_step;
   for (std::size_t i = 0; i < points; ++i) {
     const double x = options.x_min + span * static_cast<double>(i) / static_cast<double>(points - 1);
     hydro::HarmonicSums sums = empty_sums(wave);
@@ -219,6 +226,7 @@ void sample_bounds(const WaveField& wave, const IncidentWaveRecordOptions& optio
     }
     const hydro::HarmonicRecord record = hydro::HarmonicRecord::build(sums, record_options);
     const double step = record.time_step();
+    time_step = step;
     for (std::size_t j = 0; j < record.samples(); ++j) {
       const double t = static_cast<double>(j) * step;
       record.evaluate(t, value.data());
@@ -232,11 +240,12 @@ void sample_bounds(const WaveField& wave, const IncidentWaveRecordOptions& optio
       }
     }
   }
+  const double margin = 1.0 / (std::cos(0.5 * wave.max_wave_number() * spacing) * std::cos(0.5 * highest_frequency * time_step));
   for (std::size_t w = 0; w < windows; ++w) {
-    elevation[w] = 1.1 * elevation[w] + options.tolerance;
-    slope[w] = 1.1 * slope[w] + options.tolerance;
-    curvature[w] = 1.1 * curvature[w] + options.tolerance;
-    third[w] = 1.1 * third[w] + options.tolerance;
+    elevation[w] = margin * elevation[w] + record_options.tolerance;
+    slope[w] = margin * slope[w] + record_options.tolerance;
+    curvature[w] = margin * curvature[w] + record_options.tolerance;
+    third[w] = margin * third[w] + record_options.tolerance;
   }
 }
 
