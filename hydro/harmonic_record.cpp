@@ -200,15 +200,10 @@ void HarmonicRecord::evaluate(double t, std::complex<double>* out) const {
   double tau = 0.0;
   const std::size_t j = segment(t, time_step_, samples_, tau);
   const double u = 1.0 - tau, tau3 = tau * tau * tau, u3 = u * u * u, h = time_step_;
-  const double v0 = u3 * (6.0 * tau * tau + 3.0 * tau + 1.0), v1 = tau3 * (6.0 * u * u + 3.0 * u + 1.0);
-  const double d0 = h * tau * u3 * (3.0 * tau + 1.0), d1 = -h * tau3 * u * (3.0 * u + 1.0);
-  const double s0 = 0.5 * h * h * tau * tau * u3, s1 = 0.5 * h * h * tau3 * u * u;
-  const Complex* value = &values_[j * channels_];
-  const Complex* rate = &rates_[j * channels_];
-  const Complex* acceleration = &accelerations_[j * channels_];
-  const std::size_t n = channels_;
-  for (std::size_t c = 0; c < n; ++c)
-    out[c] = v0 * value[c] + d0 * rate[c] + s0 * acceleration[c] + v1 * value[c + n] + d1 * rate[c + n] + s1 * acceleration[c + n];
+  const double weights[6] = {u3 * (6.0 * tau * tau + 3.0 * tau + 1.0), h * tau * u3 * (3.0 * tau + 1.0),
+                             0.5 * h * h * tau * tau * u3,          tau3 * (6.0 * u * u + 3.0 * u + 1.0),
+                             -h * tau3 * u * (3.0 * u + 1.0),       0.5 * h * h * tau3 * u * u};
+  combine(j, weights, out);
 }
 
 void HarmonicRecord::evaluate(double t, std::complex<double>* out, std::complex<double>* rate_out) const {
@@ -217,15 +212,21 @@ void HarmonicRecord::evaluate(double t, std::complex<double>* out, std::complex<
   const std::size_t j = segment(t, time_step_, samples_, tau);
   // d/dt of the basis above (d/dτ divided by Δt).
   const double u = 1.0 - tau, h = time_step_;
-  const double v0 = -30.0 * tau * tau * u * u / h, v1 = -v0;
-  const double d0 = u * u * (1.0 - 3.0 * tau) * (5.0 * tau + 1.0), d1 = tau * tau * (2.0 - 3.0 * tau) * (5.0 * tau - 6.0);
-  const double s0 = 0.5 * h * tau * u * u * (2.0 - 5.0 * tau), s1 = -0.5 * h * tau * tau * u * (5.0 * tau - 3.0);
+  const double weights[6] = {-30.0 * tau * tau * u * u / h, u * u * (1.0 - 3.0 * tau) * (5.0 * tau + 1.0),
+                             0.5 * h * tau * u * u * (2.0 - 5.0 * tau), 30.0 * tau * tau * u * u / h,
+                             tau * tau * (2.0 - 3.0 * tau) * (5.0 * tau - 6.0), -0.5 * h * tau * tau * u * (5.0 * tau - 3.0)};
+  combine(j, weights, rate_out);
+}
+
+void HarmonicRecord::combine(std::size_t j, const double (&weights)[6], std::complex<double>* out) const {
   const Complex* value = &values_[j * channels_];
   const Complex* rate = &rates_[j * channels_];
   const Complex* acceleration = &accelerations_[j * channels_];
   const std::size_t n = channels_;
-  for (std::size_t c = 0; c < n; ++c)
-    rate_out[c] = v0 * value[c] + d0 * rate[c] + s0 * acceleration[c] + v1 * value[c + n] + d1 * rate[c + n] + s1 * acceleration[c + n];
+  for (std::size_t c = 0; c < n; ++c) {
+    out[c] = weights[0] * value[c] + weights[1] * rate[c] + weights[2] * acceleration[c] + weights[3] * value[c + n] +
+             weights[4] * rate[c + n] + weights[5] * acceleration[c + n];
+  }
 }
 
 }  // namespace ffrf::hydro

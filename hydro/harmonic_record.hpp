@@ -73,6 +73,9 @@ class HarmonicRecord {
   void evaluate(double t, std::complex<double>* out, std::complex<double>* rate) const;
 
  private:
+  // Σ of the segment j's six Hermite terms (value, rate, acceleration at its two ends) with `weights`.
+  void combine(std::size_t j, const double (&weights)[6], std::complex<double>* out) const;
+
   std::size_t channels_ = 0, samples_ = 0, fft_size_ = 0;
   double time_step_ = 0.0, duration_ = 0.0, midpoint_error_ = 0.0, build_seconds_ = 0.0;
   std::vector<std::complex<double>> values_, rates_, accelerations_;  // [sample × channels + channel]

@@ -28,6 +28,7 @@
 #include "coupling/simulation.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/run_pipeline.hpp"
+#include "../barge_excitation_lines.hpp"
 #include "../scene_text.hpp"
 
 namespace bem_crane_test {
@@ -71,25 +72,8 @@ HullState hull_state(const std::string& text, double t) {
   return s;
 }
 
-// The excitation of barge.3 at PER = 8.100003 s, heading 0, read from the file's lines: X_i = ρ g (Re + i Im)
-// (ULEN = 1: L^(2+k) = 1), pitch sign flipped (WAMIT's mode 5 is bow-down).
-Eigen::Vector3cd file_excitation(double rho, double g) {
-  std::string path = FFRF_SOURCE_DIR;  // appended: a false -Warray-bounds of GCC 12 through the PCH on `+`
-  path += "/tests/hydro/data/barge.3";
-  std::ifstream in(path);
-  std::string line;
-  Eigen::Vector3cd x = Eigen::Vector3cd::Zero();
-  while (std::getline(in, line)) {
-    std::istringstream fields(line);
-    double period = 0, heading = 0, modulus = 0, phase = 0, re = 0, im = 0;
-    int mode = 0;
-    if (!(fields >> period >> heading >> mode >> modulus >> phase >> re >> im)) continue;
-    if (std::abs(period - 8.100003) > 1e-9 || heading != 0.0) continue;
-    const int index = mode == 1 ? 0 : mode == 3 ? 1 : 2;
-    x(index) = rho * g * std::complex<double>(re, im) * (mode == 5 ? -1.0 : 1.0);
-  }
-  return x;
-}
+// The excitation of barge.3 at the wave's period, read from the file's lines (../barge_excitation_lines.hpp).
+Eigen::Vector3cd file_excitation(double rho, double g) { return test_text::barge_file_excitation(8.100003, rho, g); }
 
 TEST(BemCrane, TheWaveForceOnTheHullIsTheBemExcitationAndNotPlusFroudeKrylov) {
   const std::string bem = barge_scene_text();

@@ -1,6 +1,7 @@
 // The waterline-crossing search as it was before the local curvature bounds (commit 7adb74e): the
-// same isolation and Newton polish, with the wave field's GLOBAL bounds |g'| ≤ |d_y| + |d_x| r Σ a k and
-// |g''| ≤ d_x² r Σ a k² on every interval. Exact (the same roots), only slower for many components.
+// same isolation and the same Newton polish (coupling/crossing_isolation.hpp), with the wave field's
+// GLOBAL bounds |g'| ≤ |d_y| + |d_x| r Σ a k and |g''| ≤ d_x² r Σ a k² on every interval. Exact (the
+// same roots), only slower for many components.
 // Kept for tests (a second, independently bounded search to compare the roots with) and for
 // bench/bench_waterline_crossings.cpp (old/new cost side by side).
 #pragma once
@@ -20,12 +21,7 @@ using ffrf::coupling::WaterlineCrossings;
 
 namespace global_bounds_detail {
 
-// Newton stops once its step is below 1e-9 in s ∈ [0, 1]: convergence is quadratic there, so the
-// returned iterate is good to round-off (the step it would take next is ~1e-18).
-inline constexpr double root_tolerance = 1e-9;
-inline constexpr double bracket_tolerance = 1e-15;  // bisection alone (Newton left the bracket) stops here
 inline constexpr double smallest_interval = 1e-13;
-inline constexpr int max_newton_iterations = 100;
 
 // g(s) and g'(s) along the edge.
 struct SurfaceGap {
@@ -46,26 +42,6 @@ struct SurfaceGap {
     slope = d.y() - d.x() * ramp * zeta_x;
   }
 };
-
-// The one root of a monotone g in [lo, hi] where wet (g < 0) changes: Newton from the chord's root,
-// kept inside the bracket.
-inline double polish_root(const SurfaceGap& gap, double lo, double hi, double g_lo, double g_hi) {
-  const bool lo_wet = g_lo < 0.0;
-  double s = g_lo != g_hi ? lo + (hi - lo) * g_lo / (g_lo - g_hi) : 0.5 * (lo + hi);
-  if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
-  for (int iteration = 0; iteration < max_newton_iterations; ++iteration) {
-    double g = 0.0, slope = 0.0;
-    gap.evaluate(s, g, slope);
-    if (g == 0.0) return s;
-    ((g < 0.0) == lo_wet ? lo : hi) = s;
-    double next = slope != 0.0 ? s - g / slope : 0.5 * (lo + hi);
-    const bool newton = next > lo && next < hi;
-    if (!newton) next = 0.5 * (lo + hi);  // the step left the bracket: bisect
-    if ((newton && std::abs(next - s) <= root_tolerance) || hi - lo <= bracket_tolerance) return next;
-    s = next;
-  }
-  return s;
-}
 
 // An interval with g and g' at both ends.
 struct Interval {
@@ -105,7 +81,7 @@ inline WaterlineCrossings waterline_crossings_global_bounds(const WaveField& wav
         out.truncated = true;
         break;
       }
-      out.s[static_cast<std::size_t>(out.count++)] = polish_root(gap, iv.lo, iv.hi, iv.g_lo, iv.g_hi);
+      out.s[static_cast<std::size_t>(out.count++)] = coupling::polish_crossing(gap, iv.lo, iv.hi, iv.g_lo, iv.g_hi);
       continue;
     }
     const double mid = 0.5 * (iv.lo + iv.hi);

@@ -28,6 +28,7 @@
 #include "study/rao.hpp"
 #include "study/rao_check.hpp"
 #include "study/run_pipeline.hpp"
+#include "../barge_excitation_lines.hpp"
 #include "../scene_text.hpp"
 
 namespace ffrf {
@@ -54,22 +55,8 @@ std::string asymmetric_scene_text() {
 
 scene::Scene asymmetric_scene() { return scene::load_scene_text(asymmetric_scene_text(), "asymmetric_barge.toml"); }
 
-// X at the BEM origin per metre of amplitude from barge.3's lines at kPeriod, heading 0 (ULEN = 1).
-Eigen::Vector3cd file_excitation(double rho, double g) {
-  std::ifstream in(kSource + "/tests/hydro/data/barge.3");
-  std::string line;
-  Eigen::Vector3cd x = Eigen::Vector3cd::Zero();
-  while (std::getline(in, line)) {
-    std::istringstream fields(line);
-    double period = 0, heading = 0, modulus = 0, phase = 0, re = 0, im = 0;
-    int mode = 0;
-    if (!(fields >> period >> heading >> mode >> modulus >> phase >> re >> im)) continue;
-    if (std::abs(period - kPeriod) > 1e-9 || heading != 0.0) continue;
-    const int index = mode == 1 ? 0 : mode == 3 ? 1 : 2;
-    x(index) = rho * g * Complex(re, im) * (mode == 5 ? -1.0 : 1.0);
-  }
-  return x;
-}
+// The excitation of barge.3 at the wave's period, read from the file's lines (../barge_excitation_lines.hpp).
+Eigen::Vector3cd file_excitation(double rho, double g) { return test_text::barge_file_excitation(kPeriod, rho, g); }
 
 TEST(BemAsymmetry, TheSceneWarnsWithTheLargestAsymmetryAndTheModelUsesTheSymmetricPart) {
   const scene::Scene scene = asymmetric_scene();
