@@ -89,11 +89,11 @@ ExcitationRecordOutcome ExcitationRecord::build(const BemExcitation& excitation,
   sums.frequency_step = wave.harmonic_grid().frequency_step;
   sums.first_harmonic = static_cast<std::int64_t>(std::llround(wave.harmonic_grid().first_harmonic));
   sums.time_sign = 1;  // e^{+iω t}: BemExcitation's Re{F e^{i(ω t + ψ)}}
-  sums.coefficients.assign(3, std::vector<std::complex<double>>(count));
+  sums.real_parts.assign(3, std::vector<std::complex<double>>(count));  // the forces are real parts: two to a channel
   for (std::size_t i = 0; i < count; ++i) {
     const std::complex<double> phasor = std::polar(1.0, excitation.phase[i]);
     for (int c = 0; c < 3; ++c)
-      sums.coefficients[static_cast<std::size_t>(c)][i] = excitation.force[i](c) * phasor / result.channel_scale_(c);
+      sums.real_parts[static_cast<std::size_t>(c)][i] = excitation.force[i](c) * phasor / result.channel_scale_(c);
   }
   hydro::HarmonicRecordOptions record_options;
   record_options.duration = options.duration;
@@ -116,10 +116,10 @@ ExcitationRecordOutcome ExcitationRecord::build(const BemExcitation& excitation,
 
 Eigen::Vector3d ExcitationRecord::at(double t) const {
   if (!record_.covers(t)) return exact_.at(t);
-  std::complex<double> recorded[3];
+  std::complex<double> recorded[2];  // surge and heave force in one channel, pitch moment in the next
   record_.evaluate(t, recorded);
-  return {channel_scale_(0) * recorded[0].real(), channel_scale_(1) * recorded[1].real(),
-          channel_scale_(2) * recorded[2].real()};
+  return {channel_scale_(0) * record_.real_channel(recorded, 0), channel_scale_(1) * record_.real_channel(recorded, 1),
+          channel_scale_(2) * record_.real_channel(recorded, 2)};
 }
 
 }  // namespace ffrf::coupling

@@ -50,11 +50,19 @@ class RecordedEdges {
   }
 
  private:
-  // ζ and dζ/dx at x from the record along still water; false outside its x range.
+  // ζ and dζ/dx at x on still water: from the disc holding (x, 0) where there is one (its Taylor
+  // polynomial of degree M costs less than the line's Chebyshev series of degree D, and a steep
+  // side's crossings lie in its disc), else from the line; false outside both.
   bool elevation(double x, double& zeta, double& slope) const {
+    if (const int patch = record_.patch_of(x, 0.0); patch >= 0) {
+      Complex f, f_rate;
+      record_.elevation_terms(poly_, patch, x, 0.0, f, f_rate);
+      zeta = poly_.ramp * f.real();
+      slope = -poly_.ramp * f_rate.imag();  // ∂/∂x = i ∂/∂z
+      return true;
+    }
     if (!(x >= record_.x_min() && x <= record_.x_max())) return false;
-    double curvature = 0.0;
-    record_.line_elevation(poly_, x, zeta, slope, curvature);
+    record_.line_elevation(poly_, x, zeta, slope);
     return true;
   }
 
@@ -111,25 +119,41 @@ class RecordedEdges {
     return !wet || wetted(edge, wet_start, 1.0, acc);
   }
 
-  // The root of g in [s_low, s_high] (g(s_low) ≤ 0 ≤ g(s_high) up to the bound's margin): Newton
-  // kept inside the bracket.
+  // The root of g in [s_low, s_high]: Newton from the still-water point, kept inside the bracket. An
+  // end that is the bound's level (not clamped to the edge's end) has a known sign — wet at y = −bound,
+  // dry at y = +bound — and is not evaluated; a clamped end is, and when both ends have one sign the
+  // side is wet or dry up to the clipped end.
   bool surface_crossing(const HullEdge& edge, double s_low, double s_high, double& root) const {
-    double lo = std::min(s_low, s_high), hi = std::max(s_low, s_high);
-    double g_lo = 0.0, g_hi = 0.0, zeta = 0.0, slope = 0.0;
-    if (!elevation(edge.a.x() + lo * edge.d.x(), zeta, slope)) return false;
-    g_lo = edge.a.y() + lo * edge.d.y() - zeta;
-    if (!elevation(edge.a.x() + hi * edge.d.x(), zeta, slope)) return false;
-    g_hi = edge.a.y() + hi * edge.d.y() - zeta;
-    if ((g_lo < 0.0) == (g_hi < 0.0)) {  // no crossing inside: wet or dry up to the clipped end
-      root = ((g_lo < 0.0) == (edge.d.y() > 0.0)) ? hi : lo;
+    const auto gap = [&](double s, double& g, double& g_rate) {
+      double zeta = 0.0, slope = 0.0;
+      if (!elevation(edge.a.x() + s * edge.d.x(), zeta, slope)) return false;
+      g = edge.a.y() + s * edge.d.y() - zeta;
+      g_rate = edge.d.y() - edge.d.x() * slope;
+      return true;
+    };
+    const auto sign_at = [&](double s, bool clamped, double known, double& g) {
+      double g_rate = 0.0;
+      if (!clamped) {
+        g = known;
+        return true;
+      }
+      return gap(s, g, g_rate);
+    };
+    const double at_low_level = (-bound_ - edge.a.y()) / edge.d.y(), at_high_level = (bound_ - edge.a.y()) / edge.d.y();
+    double g_wet = 0.0, g_dry = 0.0;  // g at s_low (wet side) and s_high (dry side)
+    if (!sign_at(s_low, s_low != at_low_level, -1.0, g_wet) || !sign_at(s_high, s_high != at_high_level, 1.0, g_dry))
+      return false;
+    if ((g_wet < 0.0) == (g_dry < 0.0)) {  // no crossing inside: wet or dry up to the clipped end
+      root = ((g_wet < 0.0) == (edge.d.y() > 0.0)) ? std::max(s_low, s_high) : std::min(s_low, s_high);
       return true;
     }
-    const bool lo_wet = g_lo < 0.0;
-    double s = lo + (hi - lo) * g_lo / (g_lo - g_hi);
+    // Bracket [lo, hi] with lo on the side of g's sign at s_low.
+    double lo = std::min(s_low, s_high), hi = std::max(s_low, s_high);
+    const bool lo_wet = (lo == s_low) == (g_wet < 0.0);
+    double s = std::clamp(-edge.a.y() / edge.d.y(), lo, hi);
     for (int iteration = 0; iteration < max_root_iterations; ++iteration) {
-      if (!elevation(edge.a.x() + s * edge.d.x(), zeta, slope)) return false;
-      const double g = edge.a.y() + s * edge.d.y() - zeta;
-      const double g_rate = edge.d.y() - edge.d.x() * slope;
+      double g = 0.0, g_rate = 0.0;
+      if (!gap(s, g, g_rate)) return false;
       if (g == 0.0) break;
       ((g < 0.0) == lo_wet ? lo : hi) = s;
       double next = s - g / g_rate;

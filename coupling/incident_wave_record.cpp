@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -98,17 +99,38 @@ void add_patch_channels(const WaveField& wave, const WavePatch& patch, std::size
   }
 }
 
+// |J_d(k_n L/2)| for every component n and d = 0 … largest: the Jacobi–Anger weights, computed once
+// for the degree's bound and the channels both.
+struct BesselTable {
+  std::size_t largest = 0;
+  std::vector<double> values;  // [n × (largest + 1) + d] = J_d(k_n L/2)
+  double at(std::size_t n, std::size_t d) const { return values[n * (largest + 1) + d]; }
+};
+
+BesselTable bessel_table(const WaveField& wave, double half_length) {
+  BesselTable table;
+  table.largest = static_cast<std::size_t>(std::ceil(wave.max_wave_number() * half_length)) + 80;
+  const std::size_t count = wave.components().size();
+  table.values.resize(count * (table.largest + 1));
+  for (std::size_t n = 0; n < count; ++n) {
+    const double a = wave.components()[n].wave_number * half_length;
+    for (std::size_t d = 0; d <= table.largest; ++d)
+      table.values[n * (table.largest + 1) + d] = std::cyl_bessel_j(static_cast<double>(d), a);
+  }
+  return table;
+}
+
 // The Chebyshev degree D along still water: the smallest with Σ_n |A_n| Σ_{d>D} 2|J_d(k_n L/2)| within
 // `budget`; the bound at that degree.
-std::size_t line_degree(const WaveField& wave, double half_length, double budget, double& bound) {
-  const std::size_t largest = static_cast<std::size_t>(std::ceil(wave.max_wave_number() * half_length)) + 80;
+std::size_t line_degree(const WaveField& wave, const BesselTable& bessel, double budget, double& bound) {
+  const std::size_t largest = bessel.largest;
   std::vector<double> tail(largest + 2, 0.0);  // tail[D] = Σ_n |A_n| Σ_{d>D} 2|J_d|
-  for (const WaveComponent& c : wave.components()) {
-    const double a = c.wave_number * half_length;
+  for (std::size_t n = 0; n < wave.components().size(); ++n) {
+    const double amplitude = wave.components()[n].amplitude;
     double above = 0.0;
     for (std::size_t d = largest + 1; d-- > 0;) {
-      tail[d] += c.amplitude * above;
-      above += 2.0 * std::abs(std::cyl_bessel_j(static_cast<double>(d), a));
+      tail[d] += amplitude * above;
+      above += 2.0 * std::abs(bessel.at(n, d));
     }
   }
   for (std::size_t d = 0; d <= largest; ++d) {
@@ -122,19 +144,19 @@ std::size_t line_degree(const WaveField& wave, double half_length, double budget
                                           budget));
 }
 
-// Channels of the line: c_d = Σ A e^{ik x_c} ε_d i^d J_d(k L/2) (the real part is the coefficient).
-void add_line_channels(const WaveField& wave, double centre, double half_length, std::size_t degree,
+// Channels of the line, recorded by their real parts: c_d = Re Σ A e^{ik x_c} ε_d i^d J_d(k L/2) e^{−iδωt}.
+void add_line_channels(const WaveField& wave, const BesselTable& bessel, double centre, std::size_t degree,
                        hydro::HarmonicSums& sums) {
   const std::size_t count = wave.components().size();
-  const std::size_t first = sums.coefficients.size();
-  sums.coefficients.resize(first + degree + 1, std::vector<Complex>(count));
+  const std::size_t first = sums.real_parts.size();
+  sums.real_parts.resize(first + degree + 1, std::vector<Complex>(count));
   for (std::size_t n = 0; n < count; ++n) {
     const double k = wave.components()[n].wave_number;
     const Complex base = wave.complex_amplitudes()[n] * std::polar(1.0, k * centre);
     Complex power(1.0, 0.0);  // i^d
     for (std::size_t d = 0; d <= degree; ++d) {
-      const double weight = (d == 0 ? 1.0 : 2.0) * std::cyl_bessel_j(static_cast<double>(d), k * half_length);
-      sums.coefficients[first + d][n] = base * power * weight;
+      const double weight = (d == 0 ? 1.0 : 2.0) * bessel.at(n, d);
+      sums.real_parts[first + d][n] = base * power * weight;
       power *= Complex(0.0, 1.0);
     }
   }
@@ -183,12 +205,12 @@ hydro::HarmonicSums empty_sums(const WaveField& wave) {
 constexpr double bound_window = 5.0;  // [s]
 
 // |ζ| and its x-derivatives over [x_min, x_max] × [0, duration], sampled every sixth of the shortest
-// wavelength and at most every twelfth of the shortest period, the largest per window of
-// bound_window seconds (a sample within one time step of a window's edge counts for both windows).
-// Between samples a component's value exceeds the sampled largest by at most the factor
-// 1/(cos(k Δx/2) cos(ω Δt/2)) (its crest halfway between two samples in x and in t), largest for the
-// shortest component: that factor (1.20 at these spacings) is the margin, plus the samples' own
-// interpolation tolerance.
+// wavelength and at most every twelfth of the shortest period (exactly, by FFT: two real channels per
+// transform), the largest per window of bound_window seconds (a sample within one time step of a
+// window's edge counts for both windows). Between samples a component's value exceeds the sampled
+// largest by at most the factor 1/(cos(k Δx/2) cos(ω Δt/2)) (its crest halfway between two samples in
+// x and in t), largest for the shortest component: that factor (1.20 at these spacings) is the margin,
+// plus 10⁻¹² Σ|a| per derivative for the transforms' round-off.
 void sample_bounds(const WaveField& wave, const IncidentWaveRecordOptions& options, std::vector<double>& elevation,
                    std::vector<double>& slope, std::vector<double>& curvature, std::vector<double>& third) {
   const double shortest = 2.0 * std::numbers::pi / wave.max_wave_number();
@@ -197,56 +219,41 @@ void sample_bounds(const WaveField& wave, const IncidentWaveRecordOptions& optio
   const double spacing = span / static_cast<double>(points - 1);
   double highest_frequency = 0.0;
   for (const WaveComponent& c : wave.components()) highest_frequency = std::max(highest_frequency, c.angular_frequency);
-  hydro::HarmonicRecordOptions record_options;
-  record_options.duration = options.duration;
-  record_options.largest_time_step = std::numbers::pi / (6.0 * highest_frequency);
-  // The bounds need the largest values to a small fraction of the sea, not the record's accuracy:
-  // their samples are interpolated within 0.1 mm (added to the bounds below), which takes far fewer
-  // time samples than the record's tolerance would.
-  record_options.tolerance = std::max(options.tolerance, 1e-4);
-  record_options.memory_limit = options.memory_limit;
   const auto windows = static_cast<std::size_t>(std::ceil(options.duration / bound_window)) + 1;
-  elevation.assign(windows, 0.0);
-  slope.assign(windows, 0.0);
-  curvature.assign(windows, 0.0);
-  third.assign(windows, 0.0);
-  std::vector<Complex> value(4);
-  double time_step = record_options.largest_time_step;
+  std::array<std::vector<double>*, 4> bounds{&elevation, &slope, &curvature, &third};
+  for (std::vector<double>* b : bounds) b->assign(windows, 0.0);
+  std::array<double, 4> round_off{};
+  double time_step = 0.0;
+  hydro::HarmonicSums sums = empty_sums(wave);
+  sums.real_parts.assign(4, std::vector<Complex>(wave.components().size()));
   for (std::size_t i = 0; i < points; ++i) {
     const double x = options.x_min + span * static_cast<double>(i) / static_cast<double>(points - 1);
-    hydro::HarmonicSums sums = empty_sums(wave);
-    sums.coefficients.assign(4, std::vector<Complex>(wave.components().size()));
     for (std::size_t n = 0; n < wave.components().size(); ++n) {
       const double k = wave.components()[n].wave_number;
       const Complex at_x = wave.complex_amplitudes()[n] * std::polar(1.0, k * x);
-      sums.coefficients[0][n] = at_x;
-      sums.coefficients[1][n] = Complex(0.0, k) * at_x;  // ∂/∂x
-      sums.coefficients[2][n] = -k * k * at_x;           // ∂²/∂x²
-      sums.coefficients[3][n] = Complex(0.0, -k * k * k) * at_x;  // ∂³/∂x³
+      sums.real_parts[0][n] = at_x;
+      sums.real_parts[1][n] = Complex(0.0, k) * at_x;        // ∂/∂x
+      sums.real_parts[2][n] = -k * k * at_x;                 // ∂²/∂x²
+      sums.real_parts[3][n] = Complex(0.0, -k * k * k) * at_x;  // ∂³/∂x³
     }
-    const hydro::HarmonicRecord record = hydro::HarmonicRecord::build(sums, record_options);
-    const double step = record.time_step();
-    time_step = step;
-    for (std::size_t j = 0; j < record.samples(); ++j) {
-      const double t = static_cast<double>(j) * step;
-      record.evaluate(t, value.data());
-      const auto first = static_cast<std::size_t>(std::max(t - step, 0.0) / bound_window);
-      const auto last = std::min(static_cast<std::size_t>((t + step) / bound_window), windows - 1);
-      for (std::size_t w = first; w <= last; ++w) {
-        elevation[w] = std::max(elevation[w], std::abs(value[0].real()));
-        slope[w] = std::max(slope[w], std::abs(value[1].real()));
-        curvature[w] = std::max(curvature[w], std::abs(value[2].real()));
-        third[w] = std::max(third[w], std::abs(value[3].real()));
+    const hydro::HarmonicSamples sampled = hydro::sample_real_parts(sums, std::numbers::pi / (6.0 * highest_frequency));
+    time_step = sampled.time_step;
+    const std::size_t period = sampled.channels[0].size();
+    const auto steps = static_cast<std::size_t>(std::ceil(options.duration / time_step));
+    for (std::size_t j = 0; j <= steps; ++j) {
+      const double t = static_cast<double>(j) * time_step;
+      const auto first = static_cast<std::size_t>(std::max(t - time_step, 0.0) / bound_window);
+      const auto last = std::min(static_cast<std::size_t>((t + time_step) / bound_window), windows - 1);
+      for (std::size_t d = 0; d < 4; ++d) {
+        const double value = std::abs(sampled.channels[d][j % period]);
+        for (std::size_t w = first; w <= last; ++w) (*bounds[d])[w] = std::max((*bounds[d])[w], value);
       }
     }
+    for (std::size_t d = 0; d < 4; ++d) round_off[d] = std::max(round_off[d], 1e-12 * sampled.magnitude_sums[d]);
   }
   const double margin = 1.0 / (std::cos(0.5 * wave.max_wave_number() * spacing) * std::cos(0.5 * highest_frequency * time_step));
-  for (std::size_t w = 0; w < windows; ++w) {
-    elevation[w] = margin * elevation[w] + record_options.tolerance;
-    slope[w] = margin * slope[w] + record_options.tolerance;
-    curvature[w] = margin * curvature[w] + record_options.tolerance;
-    third[w] = margin * third[w] + record_options.tolerance;
-  }
+  for (std::size_t d = 0; d < 4; ++d)
+    for (double& b : *bounds[d]) b = margin * b + round_off[d];
 }
 
 }  // namespace
@@ -261,8 +268,9 @@ std::size_t IncidentWaveRecord::predicted_memory(const WaveField& wave, const st
   for (const WavePatch& patch : patches) add_patch_channels(wave, patch, degree, sums);
   const double centre = 0.5 * (options.x_min + options.x_max), half_length = 0.5 * (options.x_max - options.x_min);
   double line_bound = 0.0;
-  const std::size_t line = line_degree(wave, half_length, 0.25 * options.tolerance, line_bound);
-  add_line_channels(wave, centre, half_length, line, sums);
+  const BesselTable bessel = bessel_table(wave, half_length);
+  const std::size_t line = line_degree(wave, bessel, 0.25 * options.tolerance, line_bound);
+  add_line_channels(wave, bessel, centre, line, sums);
   hydro::HarmonicRecordOptions record_options;
   record_options.duration = options.duration;
   record_options.tolerance = 0.25 * options.tolerance / static_cast<double>(std::max(degree + 3, line + 1));
@@ -287,9 +295,13 @@ std::optional<IncidentWaveRecord> IncidentWaveRecord::build(const WaveField& wav
   for (const WavePatch& patch : patches) add_patch_channels(wave, patch, out.degree_, sums);
   const double centre = 0.5 * (options.x_min + options.x_max), half_length = 0.5 * (options.x_max - options.x_min);
   double line_bound = 0.0;
-  out.line_degree_ = line_degree(wave, half_length, 0.25 * options.tolerance, line_bound);
-  add_line_channels(wave, centre, half_length, out.line_degree_, sums);
+  {
+    const BesselTable bessel = bessel_table(wave, half_length);
+    out.line_degree_ = line_degree(wave, bessel, 0.25 * options.tolerance, line_bound);
+    add_line_channels(wave, bessel, centre, out.line_degree_, sums);
+  }
   out.max_wave_number_ = wave.max_wave_number();
+  out.period_ = 2.0 * std::numbers::pi / wave.harmonic_grid().frequency_step;
   const std::size_t widest = std::max(out.degree_ + 3, out.line_degree_ + 1);
   hydro::HarmonicRecordOptions record_options;
   record_options.duration = options.duration;
@@ -320,7 +332,7 @@ std::optional<IncidentWaveRecord> IncidentWaveRecord::build(const WaveField& wav
 }
 
 void IncidentWaveRecord::at(double t, double ramp, WavePolynomials& out) const {
-  const std::size_t per_patch = degree_ + 3, patch_channels = per_patch * patches_.size();
+  const std::size_t per_patch = degree_ + 3;
   out.potential.resize(record_.channels());
   out.elevation.resize((degree_ + 1) * patches_.size());
   out.ramp = ramp;
@@ -333,7 +345,7 @@ void IncidentWaveRecord::at(double t, double ramp, WavePolynomials& out) const {
     for (std::size_t m = 2; m < per_patch; ++m) potential[m] *= channel_scale_[m];
   }
   out.line.resize(line_degree_ + 1);
-  for (std::size_t d = 0; d <= line_degree_; ++d) out.line[d] = ramp * out.potential[patch_channels + d].real();
+  for (std::size_t d = 0; d <= line_degree_; ++d) out.line[d] = ramp * record_.real_channel(out.potential.data(), d);
   chebyshev_derivative(out.line, out.line_rate);
   chebyshev_derivative(out.line_rate, out.line_curvature);
   chebyshev_integral(out.line, out.line_integral);
@@ -345,6 +357,12 @@ void IncidentWaveRecord::line_elevation(const WavePolynomials& p, double x, doub
   zeta = clenshaw(p.line, scaled);
   slope = clenshaw(p.line_rate, scaled) / half_length;
   curvature = clenshaw(p.line_curvature, scaled) / (half_length * half_length);
+}
+
+void IncidentWaveRecord::line_elevation(const WavePolynomials& p, double x, double& zeta, double& slope) const {
+  const double half_length = 0.5 * (x_max_ - x_min_), scaled = (x - 0.5 * (x_min_ + x_max_)) / half_length;
+  zeta = clenshaw(p.line, scaled);
+  slope = clenshaw(p.line_rate, scaled) / half_length;
 }
 
 void IncidentWaveRecord::line_antiderivatives(const WavePolynomials& p, double x, double& first, double& second) const {

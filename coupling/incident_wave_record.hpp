@@ -11,7 +11,7 @@
 // from below the keel to the surface, with a motion margin) H is a Taylor polynomial in
 // w = (z − c)/ρ of degree M + 2, whose coefficients are harmonic sums in t:
 //   H(z, t) = ρ² Σ_m η_m(t) w^m,   η_m = Σ_n A_n e^{k_n c} (k_n ρ)^{m−2}/m! e^{−iδω_n t},
-// recorded once per record by FFT and cubic Hermite interpolation (hydro/harmonic_record.hpp).
+// recorded once per record by FFT and quintic Hermite interpolation (hydro/harmonic_record.hpp).
 // Truncation: for |z − c| ≤ ρ the error of F is at most Σ_n |A_n| e^{k_n Re c} R_M(k_n ρ),
 // R_M(x) = Σ_{m>M} x^m/m! (that of G at most ρ times it, of H ρ² times it); M is the smallest
 // degree that keeps it below a quarter of the tolerance. Time interpolation: measured at every
@@ -21,7 +21,8 @@
 //   ζ(x, t) = Σ_d c_d(t) T_d(x̂),   c_d = Re Σ_n A_n e^{ik_n x_c} ε_d i^d J_d(k_n L/2) e^{−iδω_n t}
 // (Jacobi–Anger: e^{ia x̂} = J_0(a) + 2 Σ_{d≥1} i^d J_d(a) T_d(x̂); ε_0 = 1, ε_d = 2), truncated where
 // Σ_n |A_n| Σ_{d>D} 2|J_d(k_n L/2)| falls below a quarter of the tolerance; its x-derivatives and
-// antiderivatives are Chebyshev series too. Elevation and its x-derivative bounds over [x_min, x_max]: sampled on a grid
+// antiderivatives are Chebyshev series too (real coefficients: recorded two to a complex channel).
+// Elevation and its x-derivative bounds over [x_min, x_max]: sampled on a grid
 // by FFT over the record, kept per window of `bound_window` seconds (a keel that the record's
 // deepest trough might reach is still certainly wet in the calmer minutes), with a stated margin
 // for the values between samples.
@@ -30,6 +31,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <complex>
 #include <cstddef>
 #include <optional>
@@ -78,7 +80,7 @@ class IncidentWaveRecord {
 
   const IncidentWaveRecordStats& stats() const { return stats_; }
   const std::vector<WavePatch>& patches() const { return patches_; }
-  double duration() const { return record_.duration(); }
+  double duration() const { return record_.duration(); }  // +inf: one whole period recorded, read periodically
   double x_min() const { return x_min_; }
   double x_max() const { return x_max_; }
   // |ζ| and |∂ζ/∂x| over the x range in the bound window holding t, times the ramp r(t).
@@ -101,6 +103,7 @@ class IncidentWaveRecord {
   // Along still water, x ∈ [x_min, x_max], ramp included: ζ, ∂ζ/∂x, ∂²ζ/∂x²; and ∫ζ dx, ∫∫ζ dx² (one
   // fixed antiderivative of each, the same for every x at one time).
   void line_elevation(const WavePolynomials& p, double x, double& zeta, double& slope, double& curvature) const;
+  void line_elevation(const WavePolynomials& p, double x, double& zeta, double& slope) const;  // ζ and ∂ζ/∂x only
   void line_antiderivatives(const WavePolynomials& p, double x, double& first, double& second) const;
 
  private:
@@ -108,9 +111,11 @@ class IncidentWaveRecord {
   std::size_t degree_ = 0;  // M
   std::size_t line_degree_ = 0;  // D
   double max_wave_number_ = 0.0;
+  double period_ = 0.0;  // 2π/Δω: the sums repeat
   double x_min_ = 0.0, x_max_ = 0.0;
   std::vector<double> channel_scale_;  // η_m = channel_m × channel_scale_[m]
   double window_bound(const std::vector<double>& bounds, double t) const {
+    if (record_.periodic() && t >= period_) t -= std::floor(t / period_) * period_;  // the sea repeats
     const auto w = static_cast<std::size_t>(std::max(t, 0.0) / stats_.bound_window);
     return w < bounds.size() ? bounds[w] : bounds.back();
   }

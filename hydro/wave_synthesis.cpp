@@ -1,14 +1,19 @@
 // Random-phase synthesis of an irregular sea and its elevation (see wave_synthesis.hpp).
 #include "hydro/wave_synthesis.hpp"
 
+#include <fftw3.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <complex>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
 
+#include "hydro/harmonic_record.hpp"
 #include "hydro/random_stream.hpp"
 
 namespace ffrf::hydro {
@@ -103,7 +108,52 @@ double elevation(const WaveComponents& c, double t) {
   return sum;
 }
 
+namespace {
+
+// The FFT's length when the components lie on a harmonic grid n Δω and 2π/Δω is a whole number of
+// steps dt (within 10⁻⁹ of a step; the sums are then sampled exactly), else 0.
+std::size_t harmonic_fft_size(const WaveComponents& c, double dt) {
+  if (!(c.frequency_step > 0.0) || !(dt > 0.0) || c.size() == 0) return 0;
+  const double steps = kTwoPi / c.frequency_step / dt;
+  const double whole = std::round(steps);
+  if (!(whole >= 1.0) || std::abs(steps - whole) > 1e-9 * whole || whole > 1e9) return 0;
+  for (const double w : c.frequency)
+    if (std::abs(w / c.frequency_step - std::round(w / c.frequency_step)) > 1e-6) return 0;
+  return static_cast<std::size_t>(whole);
+}
+
+struct FftwFree {
+  void operator()(void* p) const { fftw_free(p); }
+};
+
+std::vector<double> elevation_by_fft(const WaveComponents& c, double t0, std::size_t n, std::size_t count) {
+  std::unique_ptr<fftw_complex, FftwFree> buffer(fftw_alloc_complex(n));
+  auto* bins = reinterpret_cast<std::complex<double>*>(buffer.get());
+  std::fill(bins, bins + n, std::complex<double>(0.0));
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const auto harmonic = static_cast<std::size_t>(std::llround(c.frequency[i] / c.frequency_step));
+    bins[harmonic % n] += std::polar(c.amplitude[i], c.frequency[i] * t0 + c.phase[i]);
+  }
+  fftw_plan plan = nullptr;
+  {
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    plan = fftw_plan_dft_1d(static_cast<int>(n), buffer.get(), buffer.get(), FFTW_BACKWARD, FFTW_ESTIMATE);
+  }
+  if (plan == nullptr) throw std::runtime_error(fmt::format("elevation record: FFTW could not plan a transform of {} samples", n));
+  fftw_execute(plan);
+  {
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    fftw_destroy_plan(plan);
+  }
+  std::vector<double> eta(count);
+  for (std::size_t k = 0; k < count; ++k) eta[k] = bins[k % n].real();
+  return eta;
+}
+
+}  // namespace
+
 std::vector<double> elevation_record(const WaveComponents& c, double t0, double dt, std::size_t count) {
+  if (const std::size_t n = harmonic_fft_size(c, dt); n > 0) return elevation_by_fft(c, t0, n, count);
   constexpr std::size_t kAnchor = 1024;
   std::vector<double> eta(count, 0.0);
   for (std::size_t n = 0; n < c.size(); ++n) {

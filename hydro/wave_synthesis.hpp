@@ -66,7 +66,9 @@ SeaRealisation synthesize(const WaveSpectrum& spectrum, const SynthesisOptions& 
 
 // η at the reference point (x = 0) by direct superposition.
 double elevation(const WaveComponents& components, double t);
-// η(t0 + k dt), k = 0..count−1, by rotating phasors (re-anchored every 1024 samples: error ~1e-13 a).
+// η(t0 + k dt), k = 0..count−1. Components on a harmonic grid whose period 2π/Δω is a whole number N
+// of steps dt: one FFT of length N (bins a_n e^{i(ω_n t0 + φ_n)} at n mod N), O(N log N) instead of
+// O(components × count); otherwise by rotating phasors (re-anchored every 1024 samples: error ~1e-13 a).
 std::vector<double> elevation_record(const WaveComponents& components, double t0, double dt, std::size_t count);
 
 }  // namespace ffrf::hydro

@@ -172,6 +172,20 @@ TEST(WaveSynthesis, RecordByPhasorsEqualsDirectSuperposition) {
   EXPECT_DOUBLE_EQ(elevation(c, 0.0), std::cos(0.1) + 0.5 * std::cos(2.0) + 0.25 * std::cos(-1.0));
 }
 
+// On a harmonic grid whose period is a whole number of steps the record is one FFT: the same values
+// as the direct superposition, past one period too.
+TEST(WaveSynthesis, RecordByFftOnAHarmonicGridEqualsDirectSuperposition) {
+  const double step = 2.0 * std::numbers::pi / 100.0;
+  const auto c = user_components({3.0 * step, 7.0 * step, 40.0 * step, 41.0 * step}, {1.0, 0.5, 0.25, 0.1}, {0.1, 2.0, -1.0, 0.4},
+                                 WaveHeading::following, step);
+  const auto eta = elevation_record(c, 3.3, 0.25, 1000);  // 400 steps per period
+  ASSERT_EQ(eta.size(), 1000u);
+  for (std::size_t k = 0; k < eta.size(); k += 13) EXPECT_NEAR(eta[k], elevation(c, 3.3 + 0.25 * static_cast<double>(k)), 1e-12);
+  // A step that does not divide the period: the phasors, the same values.
+  const auto uneven = elevation_record(c, 3.3, 0.3, 500);
+  for (std::size_t k = 0; k < uneven.size(); k += 17) EXPECT_NEAR(uneven[k], elevation(c, 3.3 + 0.3 * static_cast<double>(k)), 1e-12);
+}
+
 TEST(WaveSynthesis, BadComponentsNameIndexValueAndRange) {
   try {
     user_components({0.5, -0.8}, {1.0, 1.0}, {0.0, 0.0}, WaveHeading::following);
