@@ -6,9 +6,15 @@
 # for rigid, modal k = 2 + static and nodal N = 32, side by side in one run (docs/performance.md,
 # "Irregular seas"). Prints wall time, real-time factor (simulated seconds per wall second of the
 # integration), steps, the record's size and build time and the loads taken by each path.
-#   bash bench/bench_irregular_sea.sh [BUILD_DIR]      (environment: EXACT_SECONDS, default 600)
+# With OLD_TREE (a source tree of an earlier commit with its Release build, e.g. made by
+#   git archive 8b41ec1 | tar -x -C /tmp/ffrf-8b41ec1 && cmake -S /tmp/ffrf-8b41ec1 -B /tmp/ffrf-8b41ec1/build
+#   -DCMAKE_BUILD_TYPE=Release && cmake --build /tmp/ffrf-8b41ec1/build --target ffrf)
+# each model also runs that tree's program on that tree's scene over EXACT_SECONDS, in the same loop
+# (row kinematics "before"): the earlier code itself, not only its algorithm.
+#   bash bench/bench_irregular_sea.sh [BUILD_DIR]      (environment: EXACT_SECONDS, default 600; OLD_TREE)
 set -euo pipefail
 build=${1:-build}
+old_tree=${OLD_TREE:-}
 ffrf="$build/app/ffrf"
 scene=cases/irregular_sea_crane.toml
 exact_seconds=${EXACT_SECONDS:-600}
@@ -20,9 +26,13 @@ echo "# $(date -u '+%F %T') UTC, $(git rev-parse --short HEAD), load average $(c
 printf '%-22s %-12s %9s %9s %10s %9s %9s %9s %9s\n' model kinematics duration_s wall_s real_time steps record_MB build_s exact_loads
 for model in "rigid" "modal" "nodal -N 32"; do
   # shellcheck disable=SC2086
-  for path in precomputed exact; do
+  paths="precomputed exact"
+  [ -n "$old_tree" ] && paths="$paths before"
+  for path in $paths; do
+    program=$ffrf
     if [ $path = precomputed ]; then file=$scene duration=10800; else file=$scratch/exact.toml duration=$exact_seconds; fi
-    "$ffrf" run "$file" --boom $model --duration $duration --json < /dev/null 2> /dev/null > "$scratch/run.json"
+    if [ $path = before ]; then program=$old_tree/build/app/ffrf file=$old_tree/$scene; fi
+    "$program" run "$file" --boom $model --duration $duration --json < /dev/null 2> /dev/null > "$scratch/run.json"
     python3 - "$scratch/run.json" "$model" $path $duration <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1])); s = d["solver"]; w = d.get("wave_kinematics", {}); r = w.get("record", {})
