@@ -85,7 +85,7 @@ void add_model_options(CLI::App& sub, ModelOptions& options) {
   sub.add_option("--elements,-N", options.elements, "Number of beam elements (default: boom.elements of the scene)")
       ->check(scene_key_count("boom.elements"));
   sub.add_option("--modes,-k", options.modes,
-                 fmt::format("Number of vibration modes of the modal boom (default: {}, with static modes)", default_modal_modes))
+                 fmt::format("Number of vibration modes of the modal boom (default: {}, with static modes)", study::default_modal_modes))
       ->check(whole_number(1, 1000));
   sub.add_flag("--static-modes", options.static_modes,
                "Add the static correction modes to the modal boom (the default; docs/validation.md)");
@@ -95,50 +95,22 @@ void add_model_options(CLI::App& sub, ModelOptions& options) {
                  "Geometric stiffening none|static|centrifugal|both (default: boom.stiffening of the scene)");
 }
 
-scene::BoomChoice default_boom_choice(const scene::Scene& scene) {
-  scene::BoomChoice choice;
-  choice.kind = scene::BoomKind::nodal;
-  choice.elements = scene.boom.mesh.element_count;
-  choice.modes = default_modal_modes;
-  choice.static_modes = true;
-  return choice;
-}
-
-scene::BoomChoice boom_choice(const ModelOptions& options, scene::BoomChoice choice) {
-  if (!options.boom.empty()) {
-    const auto kind = scene::parse_boom_kind(options.boom);
-    if (!kind) throw BadOption(fmt::format("--boom {}: unknown boom model; choose one of {}", options.boom, scene::boom_kind_choices()));
-    choice.kind = *kind;
-  }
-  choice.elements = options.elements.value_or(choice.elements);
-  if (choice.elements < 1) {
-    throw BadOption(fmt::format("--elements {}: not a valid element count (valid range [1, inf))", choice.elements));
-  }
+scene::BoomChoice boom_choice(const ModelOptions& options, scene::BoomChoice base) {
   if (options.static_modes && options.no_static_modes) throw BadOption("--static-modes and --no-static-modes exclude each other");
-  choice.modes = options.modes.value_or(choice.modes);
-  if (options.static_modes) choice.static_modes = true;
-  if (options.no_static_modes) choice.static_modes = false;
-  if (!options.stiffening.empty()) {
-    choice.stiffening = scene::parse_stiffening(options.stiffening);
-    if (!choice.stiffening) {
-      throw BadOption(fmt::format("--stiffening {}: unknown stiffening; choose one of none, static, centrifugal, both",
-                                  options.stiffening));
-    }
-  }
-  if (choice.kind == scene::BoomKind::modal) {
-    const int dof = 3 * choice.elements;  // (u, v, φ) per node, the root node clamped
-    if (choice.modes < 1 || choice.modes >= dof) {
-      throw BadOption(fmt::format("--modes {}: not a valid mode count for N = {} elements ({} elastic DOFs) (valid range [1, {}])",
-                                  choice.modes, choice.elements, dof, dof - 1));
-    }
-  }
+  study::BoomRequest request;
+  request.kind = options.boom;
+  request.elements = options.elements;
+  request.modes = options.modes;
+  if (options.static_modes) request.static_modes = true;
+  if (options.no_static_modes) request.static_modes = false;
+  request.stiffening = options.stiffening;
   try {
-    study::check_run_memory(choice);
+    return study::boom_choice(request, base);
   } catch (const study::SettingError& error) {  // name where the element count came from
-    throw BadOption(options.elements ? option_message(error)
-                                     : fmt::format("boom.elements = {}: {}", choice.elements, error.problem()));
+    if (error.setting() == study::Setting::elements && !options.elements)
+      throw BadOption(fmt::format("boom.elements = {}: {}", base.elements, error.problem()));
+    throw BadOption(option_message(error));
   }
-  return choice;
 }
 
 std::string_view option_name(study::Setting setting) {
@@ -155,6 +127,9 @@ std::string_view option_name(study::Setting setting) {
     case study::Setting::tolerance: return "--tolerance";
     case study::Setting::jobs: return "--jobs";
     case study::Setting::elements: return "--elements";
+    case study::Setting::boom_model: return "--boom";
+    case study::Setting::modes: return "--modes";
+    case study::Setting::stiffening: return "--stiffening";
   }
   return "?";
 }

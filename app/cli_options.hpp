@@ -13,6 +13,7 @@
 #include "scene/scene.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/reference.hpp"
+#include "study/boom_choice.hpp"
 #include "study/run_pipeline.hpp"
 
 namespace ffrf::app {
@@ -55,15 +56,12 @@ struct ModelOptions {
   bool no_static_modes = false;
   std::string stiffening;  // empty: the scene's boom.stiffening (or the baseline's)
 };
-// The default modal boom is the one docs/validation.md recommends under a hanging load: k = 2
-// vibration modes with static correction modes (k = 4 without them misses the static deflection).
-inline constexpr int default_modal_modes = 2;
 // --boom --elements/-N --modes/-k --static-modes --no-static-modes --stiffening.
 void add_model_options(CLI::App& sub, ModelOptions& options);
-// The boom of a scene when no option is given: nodal on the scene's mesh (boom.elements), the
-// default modal modes with static modes, the scene's stiffening.
-scene::BoomChoice default_boom_choice(const scene::Scene& scene);
-// `base` with the options that were given; throws BadOption naming the option, value and range.
+// The boom of a scene when no option is given (study/boom_choice.hpp).
+using study::default_boom_choice;
+// `base` with the options that were given (checked by study::boom_choice); throws BadOption naming
+// the option (or boom.elements of the scene), the value and the range.
 scene::BoomChoice boom_choice(const ModelOptions& options, scene::BoomChoice base);
 
 // The integrator settings for a scene (progress on a terminal); throws BadOption.

@@ -26,6 +26,7 @@
 #include "app/version.hpp"
 #include "distributed/errors.hpp"
 #include "distributed/session.hpp"
+#include "distributed/shard.hpp"
 #include "report/output_directory.hpp"
 #include "report/gnuplot.hpp"
 #include "report/reference_report.hpp"
@@ -56,20 +57,6 @@ std::string read_file(const std::filesystem::path& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
-}
-
-// "i/n" with 0 <= i < n; nothing when malformed.
-std::optional<study::Shard> parse_shard(const std::string& text) {
-  const auto slash = text.find('/');
-  if (slash == std::string::npos) return std::nullopt;
-  study::Shard shard;
-  const char* begin = text.data();
-  const char* end = text.data() + text.size();
-  const auto [p1, e1] = std::from_chars(begin, begin + slash, shard.index);
-  const auto [p2, e2] = std::from_chars(begin + slash + 1, end, shard.count);
-  if (e1 != std::errc() || e2 != std::errc() || p1 != begin + slash || p2 != end) return std::nullopt;
-  if (shard.count < 1 || shard.index < 0 || shard.index >= shard.count) return std::nullopt;
-  return shard;
 }
 
 int merge(const SweepOptions& options) {
@@ -109,7 +96,7 @@ int run_sweep(const SweepOptions& options) {
   study::SweepRequest request;
   request.grid = options.full ? study::SweepGrid::full : options.medium ? study::SweepGrid::medium : study::SweepGrid::quick;
   if (!options.shard.empty()) {
-    const auto shard = parse_shard(options.shard);
+    const auto shard = distributed::parse_shard(options.shard);
     if (!shard) return bad_input("sweep", fmt::format("--shard {}: not a shard i/n with 0 <= i < n", options.shard));
     request.shard = *shard;
   }

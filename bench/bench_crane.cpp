@@ -47,7 +47,7 @@ namespace scene_library = ffrf::cases;
 #include "crane_bench_table.hpp"
 #if __has_include("coupling/second_order_newton.hpp")
 #include "coupling/bordered_band_matrix.hpp"
-#include "coupling/hull_pressure.hpp"
+#include "sea/hull_pressure.hpp"
 #define FFRF_BENCH_BREAKDOWN 1
 #endif
 

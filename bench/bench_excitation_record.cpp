@@ -1,5 +1,5 @@
 // The first-order BEM wave excitation per call: the exact sum BemExcitation::at (a sine and cosine per
-// component) against the record of it (coupling/excitation_record.hpp: one segment lookup and a quintic
+// component) against the record of it (sea/excitation_record.hpp: one segment lookup and a quintic
 // Hermite interpolation per channel), in the sea of cases/irregular_bem_barge_crane.toml (the WAMIT
 // barge, JONSWAP Hs 2 m, Tp 8 s over 3 hours: 3 376 components), and the exact sum of a regular wave
 // (one component) as the cost to match. Times march through the record by 13.7 ms per call, as an
@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "coupling/bem_excitation.hpp"
-#include "coupling/excitation_record.hpp"
+#include "sea/bem_excitation.hpp"
+#include "sea/excitation_record.hpp"
 #include "scene/bem_hull_model.hpp"
 #include "scene/irregular_sea.hpp"
 #include "scene/scene_loader.hpp"
@@ -31,16 +31,16 @@ constexpr double march_step = 0.0137;  // [s] between calls
 constexpr int random_times = 4096;
 
 struct Sea {
-  coupling::WaveField wave;
-  coupling::BemExcitation excitation;
+  sea::WaveField wave;
+  sea::BemExcitation excitation;
 };
 
 // The scene's sea and its BEM excitation, as scene/bem_hull_model.cpp builds them (G1 at x = 0).
 Sea scene_sea(const scene::Scene& scene) {
-  const std::optional<coupling::WaveField> wave = scene::scene_wave_field(scene);
+  const std::optional<sea::WaveField> wave = scene::scene_wave_field(scene);
   if (!wave || !scene.bem || !scene.bem->excitation_table) throw std::runtime_error("the scene has no sea or no BEM excitation");
   const Eigen::Vector2d origin = scene::bem_origin_offset(scene);
-  return {*wave, coupling::bem_excitation(*scene.bem->excitation_table, *wave, origin.x(), origin)};
+  return {*wave, sea::bem_excitation(*scene.bem->excitation_table, *wave, origin.x(), origin)};
 }
 
 template <class Excitation>
@@ -54,7 +54,7 @@ void marching(benchmark::State& state, const Excitation* excitation, double dura
   benchmark::DoNotOptimize(sink);
 }
 
-void random_access(benchmark::State& state, const coupling::ExcitationRecord* record) {
+void random_access(benchmark::State& state, const sea::ExcitationRecord* record) {
   std::mt19937_64 random(3);
   std::uniform_real_distribution<double> time(0.0, record->duration());
   std::vector<double> times(random_times);
@@ -78,11 +78,11 @@ struct Collector : benchmark::ConsoleReporter {
   }
 };
 
-coupling::ExcitationRecord record_at(const Sea& sea, double duration, double fraction) {
-  coupling::ExcitationRecordOptions options;
+sea::ExcitationRecord record_at(const Sea& sea, double duration, double fraction) {
+  sea::ExcitationRecordOptions options;
   options.duration = duration;
-  options.tolerance = coupling::excitation_tolerance(sea.excitation, fraction);
-  auto outcome = coupling::ExcitationRecord::build(sea.excitation, sea.wave, options);
+  options.tolerance = sea::excitation_tolerance(sea.excitation, fraction);
+  auto outcome = sea::ExcitationRecord::build(sea.excitation, sea.wave, options);
   if (!outcome.record) throw std::runtime_error("no excitation record: " + outcome.refusal);
   return std::move(*outcome.record);
 }
@@ -94,16 +94,16 @@ int main(int argc, char** argv) {
   const double duration = scene.simulation.duration;
   static const Sea sea = scene_sea(scene);
   // The regular wave of the sea's significant height and peak period: the cost to match.
-  static const coupling::BemExcitation regular = coupling::bem_excitation(
-      *scene.bem->excitation_table, coupling::WaveField::regular(2.0, 8.0, 1.0, 0.0, sea.wave.depth(), sea.wave.gravity()),
+  static const sea::BemExcitation regular = sea::bem_excitation(
+      *scene.bem->excitation_table, sea::WaveField::regular(2.0, 8.0, 1.0, 0.0, sea.wave.depth(), sea.wave.gravity()),
       scene::bem_origin_offset(scene).x(), scene::bem_origin_offset(scene));
-  static const coupling::ExcitationRecord record = record_at(sea, duration, coupling::kDefaultExcitationFraction);
+  static const sea::ExcitationRecord record = record_at(sea, duration, sea::kDefaultExcitationFraction);
 
   const auto unit = benchmark::kNanosecond;
-  benchmark::RegisterBenchmark("excitation/exact/sea", marching<coupling::BemExcitation>, &sea.excitation, duration)->Unit(unit);
-  benchmark::RegisterBenchmark("excitation/record/sea", marching<coupling::ExcitationRecord>, &record, duration)->Unit(unit);
+  benchmark::RegisterBenchmark("excitation/exact/sea", marching<sea::BemExcitation>, &sea.excitation, duration)->Unit(unit);
+  benchmark::RegisterBenchmark("excitation/record/sea", marching<sea::ExcitationRecord>, &record, duration)->Unit(unit);
   benchmark::RegisterBenchmark("excitation/record/sea/random", random_access, &record)->Unit(unit);
-  benchmark::RegisterBenchmark("excitation/exact/regular", marching<coupling::BemExcitation>, &regular, duration)->Unit(unit);
+  benchmark::RegisterBenchmark("excitation/exact/regular", marching<sea::BemExcitation>, &regular, duration)->Unit(unit);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   Collector collector;
@@ -122,17 +122,17 @@ int main(int argc, char** argv) {
   fmt::print("|---:|---:|---:|---:|---:|\n| {:.0f} | {:.1f} | {:.1f} | {:.1f} | {:.0f} |\n", exact, recorded, random, one,
              exact / recorded);
 
-  const Eigen::Vector3d sigma = coupling::excitation_standard_deviation(sea.excitation);
+  const Eigen::Vector3d sigma = sea::excitation_standard_deviation(sea.excitation);
   fmt::print("\nThe record over {:.0f} s; sigma = {:.4g} N, {:.4g} N, {:.4g} N m (surge, heave, pitch)\n\n", duration,
              sigma(0), sigma(1), sigma(2));
   fmt::print("| tolerance [sigma] | time step [s] | samples | memory [MB] | build [s] | midpoint error [tolerance] |\n");
   fmt::print("|---:|---:|---:|---:|---:|---:|\n");
-  const auto row = [](const coupling::ExcitationRecord& r, double fraction, const char* note) {
+  const auto row = [](const sea::ExcitationRecord& r, double fraction, const char* note) {
     fmt::print("| {:.0e}{} | {:.4f} | {} | {:.1f} | {:.3f} | {:.3f} |\n", fraction, note, r.time_step(), r.samples(),
                static_cast<double>(r.memory_bytes()) / 1e6, r.build_seconds(), r.midpoint_error_fraction());
   };
   for (const double fraction : {1e-6, 1e-7}) row(record_at(sea, duration, fraction), fraction, "");
-  row(record, coupling::kDefaultExcitationFraction, " (default)");
+  row(record, sea::kDefaultExcitationFraction, " (default)");
   row(record_at(sea, duration, 1e-9), 1e-9, "");
   return 0;
 }

@@ -1,6 +1,6 @@
-// Benchmark of one hull pressure integral (coupling/hull_pressure.hpp) on the reference hull
+// Benchmark of one hull pressure integral (sea/hull_pressure.hpp) on the reference hull
 // (90 m × 40 m × 8 m box floating at its loaded draft, slightly trimmed), closed form against the
-// sampled-and-bisected Gauss–Legendre quadrature it replaced (tests/coupling/hull_pressure_quadrature.hpp,
+// sampled-and-bisected Gauss–Legendre quadrature it replaced (tests/sea/hull_pressure_quadrature.hpp,
 // 64 samples per edge), in calm water, in the reference scene's regular wave (H = 1 m, T = 10 s), and
 // in irregular seas of 1 to 256 components (periods 4–25 s, amplitudes scaled so that Σ a_i = 1 m),
 // deep water and 30 m depth. The time is per call, averaged over a sweep of 64 times through a wave
@@ -15,15 +15,15 @@
 #include <numbers>
 #include <vector>
 
-#include "../tests/coupling/hull_pressure_quadrature.hpp"
-#include "coupling/hull_pressure.hpp"
-#include "coupling/wave_field.hpp"
+#include "../tests/sea/hull_pressure_quadrature.hpp"
+#include "sea/hull_pressure.hpp"
+#include "sea/wave_field.hpp"
 
 namespace {
 
-using ffrf::coupling::BoxHullSection;
-using ffrf::coupling::ComponentSpec;
-using ffrf::coupling::WaveField;
+using ffrf::sea::BoxHullSection;
+using ffrf::sea::ComponentSpec;
+using ffrf::sea::WaveField;
 
 constexpr double rho = 1025.0, g = 9.81;
 const BoxHullSection hull{-32.0, 58.0, -6.0, 2.0, 40.0};
@@ -46,7 +46,7 @@ void closed_form(benchmark::State& state, const WaveField* wave) {
   double sink = 0.0;
   for (auto _ : state) {
     for (int i = 0; i < times; ++i) {
-      const auto load = ffrf::coupling::hull_pressure_load(hull, wave, rho, g, g1, pitch, sample_time(i));
+      const auto load = ffrf::sea::hull_pressure_load(hull, wave, rho, g, g1, pitch, sample_time(i));
       sink += load.force.y();
     }
   }
@@ -58,7 +58,7 @@ void quadrature(benchmark::State& state, const WaveField* wave) {
   double sink = 0.0;
   for (auto _ : state) {
     for (int i = 0; i < times; ++i) {
-      const ffrf::coupling::testing::QuadratureHullPressure method(wave, rho, g, sample_time(i));
+      const ffrf::sea::testing::QuadratureHullPressure method(wave, rho, g, sample_time(i));
       sink += method.load(hull, g1, pitch).force.y();
     }
   }

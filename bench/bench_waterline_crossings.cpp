@@ -1,12 +1,12 @@
-// Benchmark of the waterline-crossing search (coupling/waterline_crossings.hpp) and of the whole hull
-// pressure integral (coupling/hull_pressure.hpp) on the reference hull's four box edges (90 m × 8 m,
+// Benchmark of the waterline-crossing search (sea/waterline_crossings.hpp) and of the whole hull
+// pressure integral (sea/hull_pressure.hpp) on the reference hull's four box edges (90 m × 8 m,
 // loaded draft, random heave ±1 m and pitch ±1.5°) in the reference crane's JONSWAP sea (Hs 2 m,
 // Tp 8 s, γ 3.3 on Δω = 2π/record over [ωp/2, 3ωp], cases/irregular_sea_crane.toml, synthesized by
-// hydro::synthesize: tests/coupling/jonswap_test_sea.hpp) for records of 20 minutes, 1 hour and
+// hydro::synthesize: tests/sea/jonswap_test_sea.hpp) for records of 20 minutes, 1 hour and
 // 3 hours. Side by side in one run: the search with the wave field's global bounds
-// (tests/coupling/waterline_crossings_global_bounds.hpp, direct sums), the search and the hull load
+// (tests/sea/waterline_crossings_global_bounds.hpp, direct sums), the search and the hull load
 // with every component sum by the direct formula (WaveField::with_direct_sums) and by the harmonic-grid
-// recurrence (coupling/component_phasors.hpp, what the crane uses). Prints the time per hull (four
+// recurrence (sea/component_phasors.hpp, what the crane uses). Prints the time per hull (four
 // edges) and the ratios; all searches must find the same number of crossings and both hull loads must
 // agree to 1e-10 of the box's buoyancy (checked, else exit 1).
 #include <fmt/core.h>
@@ -18,15 +18,15 @@
 #include <random>
 #include <vector>
 
-#include "../tests/coupling/jonswap_test_sea.hpp"
-#include "../tests/coupling/waterline_crossings_global_bounds.hpp"
-#include "coupling/hull_pressure.hpp"
-#include "coupling/waterline_crossings.hpp"
-#include "coupling/wave_field.hpp"
+#include "../tests/sea/jonswap_test_sea.hpp"
+#include "../tests/sea/waterline_crossings_global_bounds.hpp"
+#include "sea/hull_pressure.hpp"
+#include "sea/waterline_crossings.hpp"
+#include "sea/wave_field.hpp"
 
 namespace {
 
-using ffrf::coupling::WaveField;
+using ffrf::sea::WaveField;
 
 struct Pose {
   double heave, pitch, t;
@@ -45,13 +45,13 @@ double seconds_per_hull(const std::vector<Pose>& poses, Search&& search, long& c
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / static_cast<double>(poses.size());
 }
 
-const ffrf::coupling::BoxHullSection hull{-32.0, 58.0, -6.0, 2.0, 40.0};
+const ffrf::sea::BoxHullSection hull{-32.0, 58.0, -6.0, 2.0, 40.0};
 
 double seconds_per_load(const std::vector<Pose>& poses, const WaveField& wave, std::vector<double>& heave_forces) {
   heave_forces.clear();
   const auto start = std::chrono::steady_clock::now();
   for (const Pose& p : poses) {
-    heave_forces.push_back(ffrf::coupling::hull_pressure_load(hull, &wave, 1025.0, 9.81, Eigen::Vector2d(0.0, 1.91 + p.heave), p.pitch, p.t).force.y());
+    heave_forces.push_back(ffrf::sea::hull_pressure_load(hull, &wave, 1025.0, 9.81, Eigen::Vector2d(0.0, 1.91 + p.heave), p.pitch, p.t).force.y());
   }
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / static_cast<double>(poses.size());
 }
@@ -69,7 +69,7 @@ int main() {
              "recur.", "ratio", "direct", "recur.", "ratio");
   const auto search_with = [](const WaveField& wave) {
     return [&wave](double t, const Eigen::Vector2d& a, const Eigen::Vector2d& d) {
-      return ffrf::coupling::waterline_crossings(wave, t, a, d);
+      return ffrf::sea::waterline_crossings(wave, t, a, d);
     };
   };
   int status = 0;

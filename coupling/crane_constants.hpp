@@ -34,7 +34,7 @@ class CraneConstants final : public SharedCraneModel, public std::enable_shared_
 
   std::unique_ptr<CraneEquations> equations() const override;  // coupling/crane_system.cpp
   std::shared_ptr<const SharedCraneModel> in_waters(const HullModel& hull,
-                                                    const std::optional<WaveField>& wave) const override;  // ditto
+                                                    const std::optional<sea::WaveField>& wave) const override;  // ditto
   int elastic_size() const override { return n; }
 
   bool hull_free() const { return !model.hull.fixed; }

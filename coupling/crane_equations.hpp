@@ -15,6 +15,10 @@
 
 #include "coupling/second_order_jacobian.hpp"
 
+namespace ffrf::sea {
+class IncidentWaveRecord;  // sea/incident_wave_record.hpp
+}  // namespace ffrf::sea
+
 namespace ffrf::coupling {
 
 // One output sample: what a time-series row and the static report show.
@@ -48,7 +52,6 @@ class MassMatrixError : public std::runtime_error {
   double smallest_pivot_;
 };
 
-class IncidentWaveRecord;
 
 // How this system's hull loads read the incident wave so far: from the record of the sea, or by
 // the exact component sums where the record could not answer (outside its patches or its time).
@@ -105,7 +108,7 @@ class CraneEquations {
   // Hull-load evaluations in a wave so far, by path (zeros without a wave).
   virtual HullLoadCounts hull_load_counts() const { return {}; }
   // The record of the sea the hull loads read (nullptr: component sums), and why not when absent.
-  virtual const IncidentWaveRecord* wave_record() const { return nullptr; }
+  virtual const sea::IncidentWaveRecord* wave_record() const { return nullptr; }
   virtual std::string exact_kinematics_reason() const { return {}; }
 
   // --- structured linearizations for the Newton solvers (coupling/second_order_jacobian.hpp) ---

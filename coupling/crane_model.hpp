@@ -10,22 +10,24 @@
 #include <optional>
 #include <string>
 
-#include "coupling/bem_excitation.hpp"
+#include "sea/bem_excitation.hpp"
 #include "coupling/floating_frame_body.hpp"
-#include "coupling/hull_pressure.hpp"
+#include "sea/hull_pressure.hpp"
 #include "coupling/prescribed_motion.hpp"
-#include "coupling/wave_field.hpp"
+#include "sea/wave_field.hpp"
 #include "hydro/radiation_memory.hpp"
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
+class IncidentWaveRecord;  // sea/incident_wave_record.hpp
+class ExcitationRecord;    // sea/excitation_record.hpp
+}  // namespace ffrf::sea
 
-class IncidentWaveRecord;  // coupling/incident_wave_record.hpp
-class ExcitationRecord;    // coupling/excitation_record.hpp
+namespace ffrf::coupling {
 
 struct HullModel {
   double mass = 0.0;                                        // without the boom [kg]
   double pitch_inertia = 0.0;                               // about G1 [kg m²]
-  BoxHullSection section{};                                 // box, hull frame at G1
+  sea::BoxHullSection section{};                                 // box, hull frame at G1
   Eigen::Vector3d added_mass = Eigen::Vector3d::Zero();     // A11, A33, A55 (surge, heave, pitch)
   Eigen::Vector3d radiation_damping = Eigen::Vector3d::Zero();  // B11, B33, B55 [N s/m, N m s/rad]
   // Damping beside the radiation (viscous, skin friction), per DOF at G1: F_i = −b_i v_i − q_i |v_i| v_i;
@@ -38,13 +40,13 @@ struct HullModel {
   std::shared_ptr<const hydro::RadiationMemoryModel> radiation_memory;
   // First-order excitation from BEM (Froude–Krylov + diffraction) at G1; when set, the pressure is
   // integrated in calm water (hydrostatics only), so Froude–Krylov is counted once.
-  std::shared_ptr<const BemExcitation> bem_excitation;
-  // The same excitation recorded once per record (coupling/excitation_record.hpp); empty: summed.
-  std::shared_ptr<const ExcitationRecord> bem_excitation_record;
-  // The incident sea of this record evaluated once (coupling/incident_wave_record.hpp): the hull
+  std::shared_ptr<const sea::BemExcitation> bem_excitation;
+  // The same excitation recorded once per record (sea/excitation_record.hpp); empty: summed.
+  std::shared_ptr<const sea::ExcitationRecord> bem_excitation_record;
+  // The incident sea of this record evaluated once (sea/incident_wave_record.hpp): the hull
   // pressure reads the wave from it, and takes the exact component sums wherever it cannot answer.
   // Empty: every evaluation sums the components (regular waves, exact kinematics, finite depth).
-  std::shared_ptr<const IncidentWaveRecord> wave_record;
+  std::shared_ptr<const sea::IncidentWaveRecord> wave_record;
   std::string exact_kinematics_reason;  // without a record in a wave: why (for reports)
   double mooring_stiffness = 0.0;                           // surge spring [N/m], anchored at x = 0
   bool hydrostatics = true;                                 // pressure integration on/off
@@ -85,7 +87,7 @@ struct CraneModel {
   WireModel wire;
   double gravity = 9.81;
   double water_density = 1025.0;
-  std::optional<WaveField> wave;  // empty: calm water
+  std::optional<sea::WaveField> wave;  // empty: calm water
 };
 
 }  // namespace ffrf::coupling

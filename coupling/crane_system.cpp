@@ -16,7 +16,7 @@ std::unique_ptr<CraneEquations> CraneConstants<Coords>::equations() const {
 
 template <fem::ElasticCoordinates Coords>
 std::shared_ptr<const SharedCraneModel> CraneConstants<Coords>::in_waters(const HullModel& hull,
-                                                                         const std::optional<WaveField>& wave) const {
+                                                                         const std::optional<sea::WaveField>& wave) const {
   CraneModel<Coords> crane = model;
   crane.hull = hull;
   crane.wave = wave;

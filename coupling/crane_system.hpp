@@ -30,7 +30,7 @@ class SharedCraneModel {
   // hydrodynamics) and wave: a new model (this one unchanged) whose constants are derived again from
   // the copied coordinates (the boom's matrices, modes and projections are not rebuilt). The frequency
   // domain's one crane in a regular wave per frequency (study/rao.cpp).
-  virtual std::shared_ptr<const SharedCraneModel> in_waters(const HullModel& hull, const std::optional<WaveField>& wave) const = 0;
+  virtual std::shared_ptr<const SharedCraneModel> in_waters(const HullModel& hull, const std::optional<sea::WaveField>& wave) const = 0;
 };
 
 // Computes the model's constant data (factorizes M_ff; throws std::runtime_error when it is not

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "coupling/crane_constants.hpp"
-#include "coupling/excitation_record.hpp"
-#include "coupling/hull_pressure_recorded.hpp"
+#include "sea/excitation_record.hpp"
+#include "sea/hull_pressure_recorded.hpp"
 #include "coupling/wire_rope.hpp"
 
 namespace ffrf::coupling::detail {
@@ -46,7 +46,7 @@ class CraneSystem final : public CraneEquations {
   int cargo_offset() const override { return has_cargo() ? cargo_at_ : -1; }
   int elastic_size() const override { return n_; }
   HullLoadCounts hull_load_counts() const override { return hull_load_counts_; }
-  const IncidentWaveRecord* wave_record() const override { return m_.hull.wave_record.get(); }
+  const sea::IncidentWaveRecord* wave_record() const override { return m_.hull.wave_record.get(); }
   std::string exact_kinematics_reason() const override { return m_.hull.exact_kinematics_reason; }
   BandStructure minimal_structure() const override { return shared_->minimal_structure; }
   void minimal_jacobian(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, SecondOrderJacobian& out) override;
@@ -138,7 +138,7 @@ class CraneSystem final : public CraneEquations {
   Eigen::Vector3d frame_known_acc_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d joint_reaction_ = Eigen::Vector3d::Zero();
   WireState wire_;
-  WavePolynomials wave_polynomials_;  // the recorded sea at one time (sized on first use)
+  sea::WavePolynomials wave_polynomials_;  // the recorded sea at one time (sized on first use)
   HullLoadCounts hull_load_counts_;
   // run state: the history of m_.hull.radiation_memory (inactive without one)
   hydro::RadiationMemory radiation_;

@@ -54,15 +54,15 @@ void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q
   hull_force_ = Eigen::Vector3d(0.0, -hull.mass * g, 0.0);
   // Froude–Krylov has one owner: the pressure of the incident wave, or the BEM excitation.
   if (hull.hydrostatics) {
-    const WaveField* wave = (with_wave && m_.wave && !hull.bem_excitation) ? &*m_.wave : nullptr;
-    std::optional<HullLoad> recorded;
+    const sea::WaveField* wave = (with_wave && m_.wave && !hull.bem_excitation) ? &*m_.wave : nullptr;
+    std::optional<sea::HullLoad> recorded;
     if (wave && hull.wave_record) {
-      recorded = recorded_hull_pressure_load(hull.section, *hull.wave_record, *wave, wave_polynomials_, wave->ramp(t),
+      recorded = sea::recorded_hull_pressure_load(hull.section, *hull.wave_record, *wave, wave_polynomials_, wave->ramp(t),
                                              m_.water_density, g, hull_q.head<2>(), hull_q(2), t);
     }
     if (wave) ++(recorded ? hull_load_counts_.recorded : hull_load_counts_.exact);
-    const HullLoad load =
-        recorded ? *recorded : hull_pressure_load(hull.section, wave, m_.water_density, g, hull_q.head<2>(), hull_q(2), t);
+    const sea::HullLoad load =
+        recorded ? *recorded : sea::hull_pressure_load(hull.section, wave, m_.water_density, g, hull_q.head<2>(), hull_q(2), t);
     hull_force_.head<2>() += load.force;
     hull_force_(2) += load.moment;
   }

@@ -162,7 +162,7 @@ Json wave_kinematics_json(const study::WaveKinematicsUse& use) {
             {"hull_loads_exact", use.hull_loads.exact}};
   if (!use.reason.empty()) json["reason"] = use.reason;
   if (use.record) {
-    const coupling::IncidentWaveRecordStats& r = *use.record;
+    const sea::IncidentWaveRecordStats& r = *use.record;
     json["record"] = Json{{"components", r.components},
                           {"patches", r.patches},
                           {"taylor_degree", r.degree},
@@ -183,7 +183,7 @@ Json wave_kinematics_json(const study::WaveKinematicsUse& use) {
 std::string wave_kinematics_text(const study::WaveKinematicsUse& use) {
   if (use.method.empty()) return {};
   if (!use.record) return fmt::format("sea         exact component sums ({})\n", use.reason);
-  const coupling::IncidentWaveRecordStats& r = *use.record;
+  const sea::IncidentWaveRecordStats& r = *use.record;
   return fmt::format("sea         precomputed: {} components recorded in {} patches (Taylor degree {}), {} samples every "
                      "{:.3g} s, {:.1f} MB, built in {:.2f} s; error <= {:.2g} m\n",
                      r.components, r.patches, r.degree, r.samples, r.time_step, r.memory_bytes / 1e6, r.build_seconds,

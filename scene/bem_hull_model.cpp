@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "coupling/excitation_record.hpp"
+#include "sea/excitation_record.hpp"
 #include "hydro/retardation.hpp"
 #include "hydro/state_space_fit.hpp"
 #include "scene/scene_loader.hpp"
@@ -48,7 +48,7 @@ namespace {
 
 std::shared_ptr<const hydro::RadiationMemoryModel> build_model(const Scene& scene) {
   const BemHull& bem = *scene.bem;
-  const Eigen::Matrix3d transfer = coupling::rigid_transfer(bem_origin_offset(scene));
+  const Eigen::Matrix3d transfer = sea::rigid_transfer(bem_origin_offset(scene));
   if (bem.radiation_model == hydro::RadiationKind::constant) {
     return std::make_shared<const hydro::RadiationMemoryModel>(hydro::transferred(
         hydro::constant_memory(hydro::radiation_at(bem.radiation, constant_radiation_frequency(scene))), transfer));
@@ -92,7 +92,7 @@ std::shared_ptr<const hydro::RadiationMemoryModel> bem_radiation_model(const Sce
   return cache.emplace(key, std::move(model)).first->second;
 }
 
-void apply_bem_hydrodynamics(const Scene& scene, coupling::HullModel& hull, const std::optional<coupling::WaveField>& wave) {
+void apply_bem_hydrodynamics(const Scene& scene, coupling::HullModel& hull, const std::optional<sea::WaveField>& wave) {
   if (!scene.bem) return;
   hull.added_mass.setZero();
   hull.radiation_damping.setZero();
@@ -100,16 +100,16 @@ void apply_bem_hydrodynamics(const Scene& scene, coupling::HullModel& hull, cons
   if (scene.bem->excitation == ExcitationModel::bem && wave && scene.bem->excitation_table) {
     const Eigen::Vector2d origin = bem_origin_offset(scene);
     const double origin_x = hull.support_pose.x() + origin.x();
-    hull.bem_excitation = std::make_shared<const coupling::BemExcitation>(
-        coupling::bem_excitation(*scene.bem->excitation_table, *wave, origin_x, origin));
+    hull.bem_excitation = std::make_shared<const sea::BemExcitation>(
+        sea::bem_excitation(*scene.bem->excitation_table, *wave, origin_x, origin));
     // An irregular sea on the component grid: the excitation history recorded once (exact sums
     // outside the record, or wherever the grid does not allow one).
     if (scene.sea && scene.sea->kinematics == WaveKinematics::precomputed) {
-      coupling::ExcitationRecordOptions options;
+      sea::ExcitationRecordOptions options;
       options.duration = scene.simulation.duration;
-      options.tolerance = coupling::excitation_tolerance(*hull.bem_excitation);
-      coupling::ExcitationRecordOutcome outcome = coupling::ExcitationRecord::build(*hull.bem_excitation, *wave, options);
-      if (outcome.record) hull.bem_excitation_record = std::make_shared<const coupling::ExcitationRecord>(std::move(*outcome.record));
+      options.tolerance = sea::excitation_tolerance(*hull.bem_excitation);
+      sea::ExcitationRecordOutcome outcome = sea::ExcitationRecord::build(*hull.bem_excitation, *wave, options);
+      if (outcome.record) hull.bem_excitation_record = std::make_shared<const sea::ExcitationRecord>(std::move(*outcome.record));
     }
   }
 }

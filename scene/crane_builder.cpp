@@ -106,7 +106,7 @@ coupling::HullModel floating_hull(const Scene& scene) {
   const double center_of_gravity_above_keel =
       hull.g1_above_keel + (boom_mass * boom_cg + cargo.mass * cargo_cg) / displaced_mass;
   const Eigen::Vector2d hydrostatic =
-      coupling::box_hydrostatic_stiffness(h.section, rho, g, displaced_mass / rho, center_of_gravity_above_keel);
+      sea::box_hydrostatic_stiffness(h.section, rho, g, displaced_mass / rho, center_of_gravity_above_keel);
   h.mooring_stiffness = scene.mooring.surge_stiffness;
   h.radiation_damping = {rad.surge_damping * critical_damping(displaced_mass + h.added_mass(0), h.mooring_stiffness),
                          rad.heave_damping * critical_damping(displaced_mass + h.added_mass(1), hydrostatic(0)),

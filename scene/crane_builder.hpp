@@ -72,7 +72,7 @@ std::shared_ptr<const coupling::SharedCraneModel> build_shared_crane(const Scene
 // the scene's waters (build_crane_model). Throws SceneError (a hull that cannot float the load).
 struct SceneWaters {
   coupling::HullModel hull;
-  std::optional<coupling::WaveField> wave;  // empty: calm water (or a hub)
+  std::optional<sea::WaveField> wave;  // empty: calm water (or a hub)
 };
 SceneWaters scene_waters(const Scene& scene);
 

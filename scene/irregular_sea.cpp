@@ -66,21 +66,21 @@ hydro::WaveComponents sea_components(const Scene& scene) {
   return hydro::synthesize(sea_spectrum(sea), synthesis_options(sea, scene.simulation.duration)).components;
 }
 
-std::optional<coupling::WaveField> scene_wave_field(const Scene& scene) {
+std::optional<sea::WaveField> scene_wave_field(const Scene& scene) {
   if (!scene.wave && !scene.sea) return std::nullopt;
   const hydro::WaveComponents components = sea_components(scene);
   const double direction = direction_sign(components.heading);
-  std::vector<coupling::ComponentSpec> specs;
+  std::vector<sea::ComponentSpec> specs;
   specs.reserve(components.size());
   for (std::size_t n = 0; n < components.size(); ++n) {
     specs.push_back({components.frequency[n], components.amplitude[n], -direction * components.phase[n]});
   }
   if (scene.wave) {
     // The regular wave exactly as before: one component, ramp over ramp_periods · T.
-    return coupling::WaveField::regular(scene.wave->height, scene.wave->period, direction, scene.wave->ramp_periods,
+    return sea::WaveField::regular(scene.wave->height, scene.wave->period, direction, scene.wave->ramp_periods,
                                         scene.environment.water_depth, scene.environment.gravity);
   }
-  return coupling::WaveField::from_components(specs, direction, wave_ramp_duration(scene), scene.environment.water_depth,
+  return sea::WaveField::from_components(specs, direction, wave_ramp_duration(scene), scene.environment.water_depth,
                                               scene.environment.gravity);
 }
 

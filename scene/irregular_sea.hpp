@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <string>
 
-#include "coupling/wave_field.hpp"
+#include "sea/wave_field.hpp"
 #include "hydro/wave_synthesis.hpp"
 #include "scene/scene.hpp"
 
@@ -44,7 +44,7 @@ hydro::SynthesisOptions synthesis_options(const IrregularSea& sea, double record
 // components: as given), in hydro's convention. Empty for calm water.
 hydro::WaveComponents sea_components(const Scene& scene);
 // The wave field of the scene (calm water: none), with the scene's depth, gravity and ramp.
-std::optional<coupling::WaveField> scene_wave_field(const Scene& scene);
+std::optional<sea::WaveField> scene_wave_field(const Scene& scene);
 
 // Summary values of the scene's waves (0 in calm water).
 double wave_ramp_duration(const Scene& scene);       // [s] end of the ramp-in

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "coupling/hull_pressure_recorded.hpp"
+#include "sea/hull_pressure_recorded.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace ffrf::scene {
@@ -19,11 +19,11 @@ namespace ffrf::scene {
 namespace {
 
 // Everything the record depends on, as bits: the components, the hull section and pose, the settings.
-std::vector<std::uint64_t> record_key(const coupling::WaveField& wave, const coupling::BoxHullSection& section,
+std::vector<std::uint64_t> record_key(const sea::WaveField& wave, const sea::BoxHullSection& section,
                                       double g1_height, const IrregularSea& sea, double duration) {
   std::vector<std::uint64_t> key;
   const auto add = [&](double v) { key.push_back(std::bit_cast<std::uint64_t>(v)); };
-  for (const coupling::WaveComponent& c : wave.components()) {
+  for (const sea::WaveComponent& c : wave.components()) {
     add(c.amplitude);
     add(c.angular_frequency);
     add(c.phase);
@@ -36,7 +36,7 @@ std::vector<std::uint64_t> record_key(const coupling::WaveField& wave, const cou
 }
 
 std::mutex cache_mutex;
-std::map<std::vector<std::uint64_t>, std::weak_ptr<const coupling::IncidentWaveRecord>> cache;
+std::map<std::vector<std::uint64_t>, std::weak_ptr<const sea::IncidentWaveRecord>> cache;
 
 }  // namespace
 
@@ -59,10 +59,10 @@ WaveKinematicsChoice wave_kinematics_choice(const Scene& scene) {
   return choice;
 }
 
-std::shared_ptr<const coupling::IncidentWaveRecord> recorded_sea(const Scene& scene, const coupling::HullModel& hull,
-                                                                 const coupling::WaveField& wave, WaveKinematicsChoice* choice) {
+std::shared_ptr<const sea::IncidentWaveRecord> recorded_sea(const Scene& scene, const coupling::HullModel& hull,
+                                                                 const sea::WaveField& wave, WaveKinematicsChoice* choice) {
   WaveKinematicsChoice chosen = wave_kinematics_choice(scene);
-  const auto give = [&](std::shared_ptr<const coupling::IncidentWaveRecord> record) {
+  const auto give = [&](std::shared_ptr<const sea::IncidentWaveRecord> record) {
     if (choice) *choice = chosen;
     return record;
   };
@@ -78,15 +78,15 @@ std::shared_ptr<const coupling::IncidentWaveRecord> recorded_sea(const Scene& sc
     const std::lock_guard<std::mutex> lock(cache_mutex);
     if (auto found = cache[key].lock()) return give(found);
   }
-  const coupling::HullMotionRange range{sea.kinematics_range.surge, sea.kinematics_range.heave, sea.kinematics_range.pitch};
-  coupling::IncidentWaveRecordOptions options;
+  const sea::HullMotionRange range{sea.kinematics_range.surge, sea.kinematics_range.heave, sea.kinematics_range.pitch};
+  sea::IncidentWaveRecordOptions options;
   options.duration = duration;
   options.tolerance = sea.kinematics_tolerance;
-  coupling::box_hull_x_range(hull.section, g1_height, range, options.x_min, options.x_max);
+  sea::box_hull_x_range(hull.section, g1_height, range, options.x_min, options.x_max);
   std::string why;
-  std::optional<coupling::IncidentWaveRecord> built;
+  std::optional<sea::IncidentWaveRecord> built;
   try {
-    built = coupling::IncidentWaveRecord::build(wave, coupling::box_hull_patches(hull.section, g1_height, range), options, &why);
+    built = sea::IncidentWaveRecord::build(wave, sea::box_hull_patches(hull.section, g1_height, range), options, &why);
   } catch (const std::length_error& e) {
     throw SceneError({SceneProblem{scene.file, 0, 0, "wave.kinematics", "\"precomputed\"",
                                    fmt::format("the recorded sea would not fit in memory ({}); use wave.kinematics = "
@@ -100,7 +100,7 @@ std::shared_ptr<const coupling::IncidentWaveRecord> recorded_sea(const Scene& sc
     chosen = {"exact", why};
     return give(nullptr);
   }
-  auto record = std::make_shared<const coupling::IncidentWaveRecord>(std::move(*built));
+  auto record = std::make_shared<const sea::IncidentWaveRecord>(std::move(*built));
   {
     const std::lock_guard<std::mutex> lock(cache_mutex);
     for (auto it = cache.begin(); it != cache.end();) it = it->second.expired() ? cache.erase(it) : std::next(it);

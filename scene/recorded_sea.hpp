@@ -1,4 +1,4 @@
-// The incident sea of a scene's record evaluated once (coupling/incident_wave_record.hpp) for its
+// The incident sea of a scene's record evaluated once (sea/incident_wave_record.hpp) for its
 // floating box hull: patches at the hull's sides over the motion range of wave.kinematics_*_range,
 // the record over simulation.duration within wave.kinematics_tolerance. Built once per distinct
 // sea, hull and settings and shared (a process-wide cache of weak references: compare, sweep and
@@ -23,8 +23,8 @@ struct WaveKinematicsChoice {
 // The record for `hull` (its section, and its floating pose in support_pose) in `wave`, or nullptr
 // with `choice` saying why not. Throws SceneError naming wave.kinematics when the record would not
 // fit in memory (the size and the way out in the message).
-std::shared_ptr<const coupling::IncidentWaveRecord> recorded_sea(const Scene& scene, const coupling::HullModel& hull,
-                                                                 const coupling::WaveField& wave,
+std::shared_ptr<const sea::IncidentWaveRecord> recorded_sea(const Scene& scene, const coupling::HullModel& hull,
+                                                                 const sea::WaveField& wave,
                                                                  WaveKinematicsChoice* choice = nullptr);
 
 // The choice for a scene without building anything (the record's own reasons come from building it).

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 #include <numbers>
 
-#include "coupling/wave_field.hpp"
+#include "sea/wave_field.hpp"
 #include "hydro/sea_steepness.hpp"
 #include "scene/irregular_sea.hpp"
 
@@ -173,7 +173,7 @@ void check_wave(const Scene& scene, Findings& found) {
   const double g = scene.environment.gravity, depth = scene.environment.water_depth;
   if (wave.height <= 0.0 || g <= 0.0) return;
   const double omega = 2.0 * std::numbers::pi / wave.period;
-  const double k = coupling::WaveField::wave_number_from_dispersion(omega, depth, g);
+  const double k = sea::WaveField::wave_number_from_dispersion(omega, depth, g);
   const double wavelength = 2.0 * std::numbers::pi / k;
   if (wave.height >= wavelength / 7.0) {
     found.error({"wave.height", "wave.period"},
@@ -208,7 +208,7 @@ void check_sea(const Scene& scene, Findings& found) {
   if (g <= 0.0) return;
   if (sea.spectrum == SeaSpectrum::components) {
     for (std::size_t n = 0; n < sea.component_frequencies.size() && n < sea.component_amplitudes.size(); ++n) {
-      const double k = coupling::WaveField::wave_number_from_dispersion(sea.component_frequencies[n], depth, g);
+      const double k = sea::WaveField::wave_number_from_dispersion(sea.component_frequencies[n], depth, g);
       const double limit = std::numbers::pi / (7.0 * k);
       if (sea.component_amplitudes[n] >= limit) {
         found.error({"wave.component_amplitudes", "wave.component_frequencies"},

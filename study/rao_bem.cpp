@@ -8,7 +8,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "coupling/bem_excitation.hpp"
+#include "sea/bem_excitation.hpp"
 #include "hydro/radiation_memory.hpp"
 #include "scene/bem_files.hpp"
 #include "scene/bem_hull_model.hpp"
@@ -63,7 +63,7 @@ HullImpedance bem_hull_impedance(const scene::Scene& scene, BemRadiationSource s
       return s * (kernel_transform(*model, s) - initial_damping.cast<Complex>());
     };
   }
-  const Eigen::Matrix3d transfer = coupling::rigid_transfer(scene::bem_origin_offset(scene));
+  const Eigen::Matrix3d transfer = sea::rigid_transfer(scene::bem_origin_offset(scene));
   const hydro::PlanarRadiation radiation = scene.bem->radiation;
   const std::string file = scene.bem->radiation_file;
   return [radiation, transfer, model_added_mass, initial_damping, file](Complex s) -> Eigen::Matrix3cd {

@@ -13,7 +13,7 @@
 //     constant model. At s = iω, K̂ = B_model(ω) + iω(A_model(ω) − A∞). Defined for complex s too, so
 //     the natural modes of a memory hull are the roots of det(s²M + sC + K + Z(s)) = 0.
 // The wave excitation needs no term here: with excitation = "bem" the waved crane's generalized force
-// is the .3 file's (coupling/bem_excitation.hpp) and the linearisation's central difference returns
+// is the .3 file's (sea/bem_excitation.hpp) and the linearisation's central difference returns
 // TᵀX(ω) exactly; the hydrostatic restoring is the linearisation's, i.e. the calm-water pressure on the
 // wetted box that the time domain integrates (the .hst only checks the files belong to the hull).
 #pragma once

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "coupling/incident_wave_record.hpp"
+#include "sea/incident_wave_record.hpp"
 #include "coupling/planar.hpp"
 #include "fem/analytic_beam.hpp"
 #include "scene/irregular_sea.hpp"
@@ -30,6 +30,9 @@ std::string_view to_string(Setting setting) {
     case Setting::tolerance: return "error tolerance";
     case Setting::jobs: return "worker threads";
     case Setting::elements: return "boom elements";
+    case Setting::boom_model: return "boom model";
+    case Setting::modes: return "mode count";
+    case Setting::stiffening: return "geometric stiffening";
   }
   return "?";
 }
@@ -182,7 +185,7 @@ ModelRun prepared_model(const PreparedRun& prepared) {
   run.state_size = prepared.state_size();
   run.from_static_equilibrium = prepared.from_static_equilibrium;
   run.statics = prepared.statics;
-  if (const coupling::IncidentWaveRecord* record = prepared.equations->wave_record()) {
+  if (const sea::IncidentWaveRecord* record = prepared.equations->wave_record()) {
     run.wave_kinematics = {"precomputed", "", record->stats(), {}};
   } else if (const std::string reason = prepared.equations->exact_kinematics_reason(); !reason.empty()) {
     run.wave_kinematics = {"exact", reason, std::nullopt, {}};

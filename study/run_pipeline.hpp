@@ -22,7 +22,7 @@
 #include "scene/crane_builder.hpp"
 #include "scene/crane_model_cache.hpp"
 #include "scene/scene.hpp"
-#include "coupling/incident_wave_record_stats.hpp"
+#include "sea/incident_wave_record_stats.hpp"
 #include "study/irregular_statistics.hpp"
 #include "study/output_series.hpp"
 #include "study/verdict.hpp"
@@ -35,6 +35,7 @@ namespace ffrf::study {
 enum class Setting {
   relative_tolerance, absolute_tolerance, duration, fixed_step, max_order,
   reference_elements, reference_tolerance, reference_bound, reference_levels, tolerance, jobs, elements,
+  boom_model, modes, stiffening,
 };
 std::string_view to_string(Setting setting);  // "relative tolerance", ...
 
@@ -92,11 +93,11 @@ struct PreparedRun {
 };
 
 // How the run's hull loads read the incident wave: method, why exact, the record's size and cost
-// (coupling/incident_wave_record.hpp), and how many loads took each path.
+// (sea/incident_wave_record.hpp), and how many loads took each path.
 struct WaveKinematicsUse {
   std::string method;  // "precomputed" | "exact"; empty: no wave on a floating hull
   std::string reason;  // why exact
-  std::optional<coupling::IncidentWaveRecordStats> record;
+  std::optional<sea::IncidentWaveRecordStats> record;
   coupling::HullLoadCounts hull_loads;  // of this run's integration
 };
 

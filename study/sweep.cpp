@@ -116,7 +116,7 @@ SweepStudy sweep_reference(const scene::Scene& scene, const SweepRequest& reques
 std::vector<SweepConfig> sweep_configurations(const SweepRequest& request) {
   std::vector<SweepConfig> configs;
   for (const SweepConfig& config : sweep_grid(request.grid, request.radiation_axis, model_choice_rtol(request.tolerance))) {
-    if (request.shard.contains(config)) configs.push_back(config);
+    if (in_shard(config, request.shard)) configs.push_back(config);
   }
   return configs;
 }

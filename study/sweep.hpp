@@ -42,7 +42,7 @@ struct SweepResult {
 
 struct SweepRequest {
   SweepGrid grid = SweepGrid::quick;
-  Shard shard;
+  distributed::Shard shard;  // the whole grid by default
   double duration = 0.0;                // simulated time of every run [s]
   ReferenceOptions reference;
   int jobs = 1;                         // worker threads

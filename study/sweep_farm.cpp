@@ -36,8 +36,7 @@ SweepOnEngine sweep_on_engine(distributed::Session& session, const scene::Scene&
       throw distributed::TaskAbandoned(fmt::format("{}: interrupted by signal {}", task.key, stop.signal));
     }
   };
-  farm_options.shard = distributed::Shard{static_cast<std::size_t>(request.shard.index),
-                                          static_cast<std::size_t>(request.shard.count)};
+  farm_options.shard = request.shard;
   out.farm = distributed::run_farm(session, tasks, work, farm_options);
   for (const distributed::TaskOutcome& outcome : out.farm.outcomes) {
     if (outcome.ok) {

@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "distributed/shard.hpp"
+
 #include "hydro/radiation_memory.hpp"
 #include "scene/crane_builder.hpp"
 #include "coupling/simulation.hpp"
@@ -44,11 +46,9 @@ std::string model_family(const scene::BoomChoice& choice);
 // "cvode rtol 1e-06", "generalized-alpha h 0.01 s", "arkode h 2x limit": for tables.
 std::string integrator_label(const SweepConfig& config);
 
-// A deterministic slice of the grid: the configurations with id % count == index.
-struct Shard {
-  int index = 0;
-  int count = 1;
-  bool contains(const SweepConfig& config) const { return config.id % count == index; }
-};
+// Whether the configuration is in the shard (distributed/shard.hpp): id % count == index.
+inline bool in_shard(const SweepConfig& config, const distributed::Shard& shard) {
+  return static_cast<std::size_t>(config.id) % shard.count == shard.index;
+}
 
 }  // namespace ffrf::study

@@ -108,7 +108,7 @@ TEST(IrregularSea, WaveFieldElevationIsTheSynthesisInBothHeadings) {
                  std::string("direction = \"") + heading + "\""),
         "sea.toml");
     const hydro::WaveComponents components = sea_components(scene);
-    const std::optional<coupling::WaveField> field = scene_wave_field(scene);
+    const std::optional<sea::WaveField> field = scene_wave_field(scene);
     ASSERT_TRUE(field.has_value());
     ASSERT_EQ(field->components().size(), components.size());
     const double sign = std::string(heading) == "following" ? 1.0 : -1.0;
@@ -135,7 +135,7 @@ TEST(IrregularSea, ElevationVarianceOverTheRecordIsTheSpectrumsBandIntegral) {
   const Scene scene = short_sea();
   const IrregularSea& sea = *scene.sea;
   ASSERT_EQ(sea.frequency_max, 0.0);  // the automatic band
-  const std::optional<coupling::WaveField> field = scene_wave_field(scene);
+  const std::optional<sea::WaveField> field = scene_wave_field(scene);
   const double record = scene.simulation.duration, dt = 0.25;
   const auto samples = static_cast<std::size_t>(record / dt);
   double sum = 0.0, square = 0.0;
@@ -168,7 +168,7 @@ TEST(IrregularSea, OneComponentSeaIsTheRegularWave) {
   text = replaced(text, "period = 10.0 ", "#");
   const Scene one = load_scene_text(text, "one.toml");
   ASSERT_TRUE(one.sea.has_value());
-  const std::optional<coupling::WaveField> a = scene_wave_field(regular), b = scene_wave_field(one);
+  const std::optional<sea::WaveField> a = scene_wave_field(regular), b = scene_wave_field(one);
   ASSERT_EQ(b->components().size(), 1u);
   EXPECT_NEAR(b->ramp_duration(), a->ramp_duration(), 1e-12);
   EXPECT_EQ(b->components()[0].wave_number, a->components()[0].wave_number);

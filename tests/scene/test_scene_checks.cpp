@@ -11,7 +11,7 @@
 #include <numbers>
 
 #include "coupling/failure.hpp"
-#include "coupling/hull_pressure.hpp"
+#include "sea/hull_pressure.hpp"
 #include "coupling/static_equilibrium.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene_checks.hpp"
@@ -90,10 +90,10 @@ TEST(SceneChecks, MetacentricHeightIsTheBoxPitchStiffnessOverWeight) {
   const double kg = (hull.mass * hull.g1_above_keel + boom_mass * (tip - 60.0 * std::sin(mount.angle)) +
                      scene.cargo->mass * tip) / rest.displacement;
   const double rho = scene.environment.water_density, g = scene.environment.gravity;
-  const coupling::BoxHullSection box{hull.g1_aft_of_mid_length - 45.0, hull.g1_aft_of_mid_length + 45.0,
+  const sea::BoxHullSection box{hull.g1_aft_of_mid_length - 45.0, hull.g1_aft_of_mid_length + 45.0,
                                      -hull.g1_above_keel, hull.depth - hull.g1_above_keel, hull.width};
   const double volume = rest.displacement / rho;
-  const double pitch_stiffness = coupling::box_hydrostatic_stiffness(box, rho, g, volume, kg)(1);
+  const double pitch_stiffness = sea::box_hydrostatic_stiffness(box, rho, g, volume, kg)(1);
   EXPECT_NEAR(rest.metacentric_height, pitch_stiffness / (rho * g * volume), 1e-9 * rest.metacentric_height);
 }
 

@@ -20,7 +20,7 @@
 #include <sstream>
 #include <string>
 
-#include "coupling/bem_excitation.hpp"
+#include "sea/bem_excitation.hpp"
 #include "coupling/linearisation.hpp"
 #include "hydro/wamit_reader.hpp"
 #include "scene/bem_hull_model.hpp"
@@ -73,7 +73,7 @@ TEST(BemAsymmetry, TheSceneWarnsWithTheLargestAsymmetryAndTheModelUsesTheSymmetr
   std::size_t k = 0;
   while (k < read.frequency.size() && std::abs(read.frequency[k] - 2.0 * std::numbers::pi / kPeriod) > 1e-12) ++k;
   ASSERT_LT(k, read.frequency.size());
-  const Eigen::Matrix3d t = coupling::rigid_transfer(Eigen::Vector2d(3.0, 0.0));
+  const Eigen::Matrix3d t = sea::rigid_transfer(Eigen::Vector2d(3.0, 0.0));
   const Eigen::Matrix3d expected = t.transpose() * (0.5 * (read.added_mass[k] + read.added_mass[k].transpose())) * t;
   const Eigen::Matrix3d model = scene::bem_radiation_model(scene)->added_mass;
   EXPECT_TRUE(model.isApprox(expected, 1e-12)) << model << "\nexpected\n" << expected;
@@ -98,7 +98,7 @@ TEST(BemAsymmetry, RaoIsTheDirectSolveWithTheFilesExcitation) {
   const Eigen::Vector3cd at_origin = file_excitation(1025.0, g);
   ASSERT_GT(std::abs(at_origin(1)), 1e5);
   Eigen::VectorXcd force = Eigen::VectorXcd::Zero(linear.size());
-  force.head<3>() = coupling::rigid_transfer(Eigen::Vector2d(origin_x, 0.0)).transpose().cast<Complex>() * at_origin *
+  force.head<3>() = sea::rigid_transfer(Eigen::Vector2d(origin_x, 0.0)).transpose().cast<Complex>() * at_origin *
                     std::exp(Complex(0.0, -wave_number * origin_x));
   const Eigen::MatrixXcd dynamic = (-omega * omega) * linear.mass.cast<Complex>() + Complex(0.0, omega) * linear.damping.cast<Complex>() +
                                    linear.stiffness.cast<Complex>();

@@ -79,7 +79,7 @@ TEST_F(SweepEngine, RowsEqualTheThreadedSweepAndARerunResumesThemAll) {
 TEST_F(SweepEngine, AShardEqualsTheThreadedShard) {
   const scene::Scene scene = test::scene_file("paper_floating_crane.toml");
   SweepRequest request = short_quick_sweep();
-  request.shard = Shard{1, 3};
+  request.shard = distributed::Shard{1, 3};
   const std::vector<std::string> threaded = threaded_rows(scene, request);
   EXPECT_EQ(engine_rows(scene, request, dir_), threaded);
   EXPECT_EQ(threaded.size(), 7u);  // ids 1, 4, ..., 19 of the 21

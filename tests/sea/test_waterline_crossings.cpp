@@ -1,10 +1,10 @@
-// Waterline crossings with local curvature bounds (coupling/waterline_crossings.hpp) on random
+// Waterline crossings with local curvature bounds (sea/waterline_crossings.hpp) on random
 // irregular seas, against two references independent of the local bound: the search with the wave
-// field's global bounds only (tests/coupling/waterline_crossings_global_bounds.hpp, the code before
+// field's global bounds only (tests/sea/waterline_crossings_global_bounds.hpp, the code before
 // the local bounds; rigorous, slow for many components) and sign changes on a dense grid refined by
 // bisection. Seas: the reference crane's JONSWAP sea (Hs 2 m, Tp 8 s) on Δω = 2π/record over [ωp/2, 3ωp]
 // with random phases (jonswap_test_sea.hpp), 20-minute and 3-hour records (376 and 3 376 components),
-// deep water (sums by the harmonic-grid recurrence, coupling/component_phasors.hpp) and 30 m depth
+// deep water (sums by the harmonic-grid recurrence, sea/component_phasors.hpp) and 30 m depth
 // (direct sums); the recurrence's phasors against the direct formula up to a 3-hour sea's last
 // component; edges: the reference hull's box (90 m × 8 m) at random heave, pitch and time, and a
 // nearly level edge at the still-water line (many crossings).
@@ -15,18 +15,18 @@
 #include <random>
 #include <vector>
 
-#include "coupling/component_phasors.hpp"
-#include "coupling/waterline_crossings.hpp"
-#include "coupling/wave_field.hpp"
+#include "sea/component_phasors.hpp"
+#include "sea/waterline_crossings.hpp"
+#include "sea/wave_field.hpp"
 #include "jonswap_test_sea.hpp"
 #include "waterline_crossings_global_bounds.hpp"
 
 namespace waterline_crossings_test {
 
 using Eigen::Vector2d;
-using ffrf::coupling::ComponentSpec;
-using ffrf::coupling::WaterlineCrossings;
-using ffrf::coupling::WaveField;
+using ffrf::sea::ComponentSpec;
+using ffrf::sea::WaterlineCrossings;
+using ffrf::sea::WaveField;
 
 constexpr double g = 9.81;
 
@@ -39,7 +39,7 @@ struct Edge {
 };
 
 // The four edges of the 90 m × 8 m box (G1 6 m above the keel, 13 m aft of mid-length) at heave y,
-// pitch θ, counter-clockwise like coupling/hull_pressure.cpp, plus a nearly level edge at still water.
+// pitch θ, counter-clockwise like sea/hull_pressure.cpp, plus a nearly level edge at still water.
 std::vector<Edge> hull_edges(double heave, double pitch) {
   const double c = std::cos(pitch), s = std::sin(pitch);
   const auto place = [&](double x, double y) { return Vector2d(c * x - s * y, 1.91 + heave + s * x + c * y); };
@@ -81,7 +81,7 @@ TEST(WaterlineCrossings, LocalBoundsFindTheSameRootsAsGlobalBoundsOnRandomSeas) 
       for (int trial = 0; trial < 8; ++trial) {
         const double t = time(random);
         for (const Edge& edge : hull_edges(heave(random), pitch(random))) {
-          const WaterlineCrossings local = ffrf::coupling::waterline_crossings(wave, t, edge.a, edge.d);
+          const WaterlineCrossings local = ffrf::sea::waterline_crossings(wave, t, edge.a, edge.d);
           const WaterlineCrossings global = ffrf::test_support::waterline_crossings_global_bounds(wave, t, edge.a, edge.d);
           ASSERT_FALSE(local.truncated);
           ASSERT_FALSE(global.truncated);
@@ -109,7 +109,7 @@ TEST(WaterlineCrossings, LocalBoundsMatchDenseSamplingOnA20MinuteSea) {
   for (int trial = 0; trial < 4; ++trial) {
     const double t = time(random);
     for (const Edge& edge : hull_edges(heave(random), pitch(random))) {
-      const WaterlineCrossings found = ffrf::coupling::waterline_crossings(wave, t, edge.a, edge.d);
+      const WaterlineCrossings found = ffrf::sea::waterline_crossings(wave, t, edge.a, edge.d);
       // 20 000 points: 4.5 mm on the 90 m edges, 2 400 points per shortest wavelength (11 m).
       const std::vector<double> reference = sampled_crossings(wave, t, edge, 20000);
       ASSERT_EQ(found.count, static_cast<int>(reference.size())) << t;
@@ -150,11 +150,11 @@ TEST(ComponentPhasors, RecurrenceMatchesTheDirectFormulaToTheLastComponentOfA3Ho
   const WaveField wave = jonswap_sea(10800.0, std::numeric_limits<double>::infinity(), 5);
   ASSERT_TRUE(wave.harmonic_grid().active);
   ASSERT_EQ(wave.components().size(), 3376u);
-  using ffrf::coupling::Complex;
+  using ffrf::sea::Complex;
   double worst = 0.0, last = 0.0;
   for (const double t : {0.0, 4321.0, 10799.9}) {
     for (const Complex z : {Complex(0.0, 61.3), Complex(-6.2, -37.9), Complex(-0.4, 88.0), Complex(-7.9, 1.2)}) {
-      ffrf::coupling::ComponentPhasors phasors(wave, z, t);
+      ffrf::sea::ComponentPhasors phasors(wave, z, t);
       for (const auto& c : wave.components()) {
         const Complex direct = std::exp(c.wave_number * z.real()) *
                                Complex(std::cos(c.wave_number * z.imag() - c.angular_frequency * t),

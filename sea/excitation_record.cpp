@@ -1,5 +1,5 @@
 // The BEM wave excitation recorded once by FFT and read back by Hermite interpolation (see the header).
-#include "coupling/excitation_record.hpp"
+#include "sea/excitation_record.hpp"
 
 #include <fmt/format.h>
 
@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 namespace {
 
@@ -122,4 +122,4 @@ Eigen::Vector3d ExcitationRecord::at(double t) const {
           channel_scale_(2) * record_.real_channel(recorded, 2)};
 }
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

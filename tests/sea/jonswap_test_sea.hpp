@@ -10,13 +10,13 @@
 #include <numbers>
 #include <vector>
 
-#include "coupling/wave_field.hpp"
+#include "sea/wave_field.hpp"
 #include "hydro/wave_spectrum.hpp"
 #include "hydro/wave_synthesis.hpp"
 
 namespace ffrf::test_support {
 
-inline coupling::WaveField jonswap_test_sea(double record, double depth, std::uint64_t seed) {
+inline sea::WaveField jonswap_test_sea(double record, double depth, std::uint64_t seed) {
   const double peak_frequency = 2.0 * std::numbers::pi / 8.0;
   hydro::SynthesisOptions options;
   options.record_length = record;
@@ -24,9 +24,9 @@ inline coupling::WaveField jonswap_test_sea(double record, double depth, std::ui
   options.omega_max = 3.0 * peak_frequency;
   options.seed = seed;
   const hydro::WaveComponents sea = hydro::synthesize(hydro::jonswap(2.0, 8.0, 3.3), options).components;
-  std::vector<coupling::ComponentSpec> specs;
+  std::vector<sea::ComponentSpec> specs;
   for (std::size_t n = 0; n < sea.size(); ++n) specs.push_back({sea.frequency[n], sea.amplitude[n], -sea.phase[n]});
-  return coupling::WaveField::from_components(specs, 1.0, 0.0, depth, 9.81);
+  return sea::WaveField::from_components(specs, 1.0, 0.0, depth, 9.81);
 }
 
 }  // namespace ffrf::test_support

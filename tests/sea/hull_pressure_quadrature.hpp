@@ -1,4 +1,4 @@
-// The second method for the closed-form hull pressure integral (coupling/hull_pressure.cpp): the
+// The second method for the closed-form hull pressure integral (sea/hull_pressure.cpp): the
 // quadrature ffrf used before the closed form, kept here as an independent check. Each box edge is sampled
 // `samples` times for sign changes of y − ζ, every change refined by bisection to 1e-13 in the edge
 // parameter, each wetted interval split at y = 0 and into pieces ≤ 5 m integrated by 8-point
@@ -10,10 +10,10 @@
 #include <array>
 #include <cmath>
 
-#include "coupling/hull_pressure.hpp"
-#include "coupling/wave_field.hpp"
+#include "sea/hull_pressure.hpp"
+#include "sea/wave_field.hpp"
 
-namespace ffrf::coupling::testing {
+namespace ffrf::sea::testing {
 
 class QuadratureHullPressure {
  public:
@@ -116,4 +116,4 @@ class QuadratureHullPressure {
   int samples_;
 };
 
-}  // namespace ffrf::coupling::testing
+}  // namespace ffrf::sea::testing

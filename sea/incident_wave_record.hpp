@@ -27,7 +27,7 @@
 // deepest trough might reach is still certainly wet in the calmer minutes), with a stated margin
 // for the values between samples.
 // Needs deep water and components on a harmonic grid (ω_n = n Δω); otherwise the exact sums are the
-// only path (coupling/wave_field.hpp). Reference: docs/hydrodynamics.md ("The sea evaluated once").
+// only path (sea/wave_field.hpp). Reference: docs/hydrodynamics.md ("The sea evaluated once").
 #pragma once
 
 #include <algorithm>
@@ -38,11 +38,11 @@
 #include <string>
 #include <vector>
 
-#include "coupling/incident_wave_record_stats.hpp"
-#include "coupling/wave_field.hpp"
+#include "sea/incident_wave_record_stats.hpp"
+#include "sea/wave_field.hpp"
 #include "hydro/harmonic_record.hpp"
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 // A disc of the (x, y) plane in which F, G and H are recorded: centre (x, y) and radius [m].
 struct WavePatch {
@@ -125,4 +125,4 @@ class IncidentWaveRecord {
   std::vector<double> window_elevation_, window_slope_, window_curvature_, window_third_;  // per bound window, margin included
 };
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

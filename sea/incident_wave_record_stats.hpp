@@ -1,11 +1,11 @@
-// What a record of the incident sea is and what it cost (coupling/incident_wave_record.hpp): the
+// What a record of the incident sea is and what it cost (sea/incident_wave_record.hpp): the
 // figures a run states in its header and summary.json. Its own header so that the studies and
 // reports that carry it do not depend on the record's machinery.
 #pragma once
 
 #include <cstddef>
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 // What the record is and what it cost: stated in the run header and summary.json.
 struct IncidentWaveRecordStats {
@@ -22,4 +22,4 @@ struct IncidentWaveRecordStats {
   double build_seconds = 0.0;
 };
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

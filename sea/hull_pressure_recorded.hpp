@@ -1,9 +1,9 @@
-// The hydrostatic + Froude–Krylov load of coupling/hull_pressure.hpp with the incident wave read
-// from a record of the sea (coupling/incident_wave_record.hpp) instead of summed component by
+// The hydrostatic + Froude–Krylov load of sea/hull_pressure.hpp with the incident wave read
+// from a record of the sea (sea/incident_wave_record.hpp) instead of summed component by
 // component: the same wetted boundary (edges clipped at the wave surface, split at still water),
 // the same exact hydrostatics (−ρ g y). Waterline crossings: on a side steeper than the surface by
 // Newton's method on the recorded ζ (one crossing at most), on the keel and the deck by the same
-// interval isolation as the exact path (coupling/crossing_isolation.hpp) on the recorded ζ, ∂ζ/∂x,
+// interval isolation as the exact path (sea/crossing_isolation.hpp) on the recorded ζ, ∂ζ/∂x,
 // ∂²ζ/∂x² with the record's bounds. The wave's part of each wetted piece: below still water from the
 // recorded antiderivatives at the piece's ends (∫F = ΔG/w, ∫uF = h G1/w − ΔH/w²); on the crest
 // extension from the antiderivatives of ζ along still water (Gauss–Legendre on ζ when the piece
@@ -20,10 +20,10 @@
 #include <optional>
 #include <vector>
 
-#include "coupling/hull_pressure.hpp"
-#include "coupling/incident_wave_record.hpp"
+#include "sea/hull_pressure.hpp"
+#include "sea/incident_wave_record.hpp"
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 // How far the hull may move from its pose at zero surge: the record's patches and bounds cover it.
 struct HullMotionRange {
@@ -46,4 +46,4 @@ std::optional<HullLoad> recorded_hull_pressure_load(const BoxHullSection& hull, 
                                                     double gravity, const Eigen::Vector2d& g1_position, double pitch,
                                                     double t);
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

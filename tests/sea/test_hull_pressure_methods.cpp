@@ -3,7 +3,7 @@
 // over poses that put the waterline on every edge (trimmed, heaved, deck overtopped, keel emerging,
 // submerged), regular waves deep and finite depth, and an irregular sea of several components; the
 // reference crane's 20-minute and 3-hour JONSWAP seas with sums by the harmonic-grid recurrence
-// (coupling/component_phasors.hpp) against the same seas summed component by component and against
+// (sea/component_phasors.hpp) against the same seas summed component by component and against
 // the quadrature; and the waterline crossings against dense sampling of y − ζ along an edge.
 #include <gtest/gtest.h>
 
@@ -17,14 +17,14 @@
 #include <utility>
 #include <vector>
 
-#include "coupling/hull_pressure.hpp"
-#include "coupling/waterline_crossings.hpp"
+#include "sea/hull_pressure.hpp"
+#include "sea/waterline_crossings.hpp"
 #include "hull_pressure_quadrature.hpp"
 #include "jonswap_test_sea.hpp"
 
 namespace hull_pressure_methods_test {
 
-using namespace ffrf::coupling;
+using namespace ffrf::sea;
 using Eigen::Vector2d;
 constexpr double rho = 1025.0, g = 9.81;
 const double deep = std::numeric_limits<double>::infinity();
@@ -53,7 +53,7 @@ TEST(HullPressureMethods, ClosedFormAgreesWithQuadratureToRoundOff) {
   for (const WaveField& wave : waves()) {
     for (const double t : {0.0, 3.3, 17.0, 44.4, 101.0}) {
       // 512 samples per edge so the reference resolves every crossing of the 15 m components.
-      const ffrf::coupling::testing::QuadratureHullPressure reference(&wave, rho, g, t, 512);
+      const ffrf::sea::testing::QuadratureHullPressure reference(&wave, rho, g, t, 512);
       for (const Pose& p : poses) {
         const HullLoad closed = hull_pressure_load(hull, &wave, rho, g, Vector2d(p.x, p.y), p.theta, t);
         const HullLoad quadrature = reference.load(hull, Vector2d(p.x, p.y), p.theta);
@@ -76,7 +76,7 @@ TEST(HullPressureMethods, ClosedFormAgreesWithQuadratureToRoundOff) {
 }
 
 TEST(HullPressureMethods, CalmWaterClosedFormIsExactArchimedes) {
-  const ffrf::coupling::testing::QuadratureHullPressure reference(nullptr, rho, g, 0.0);
+  const ffrf::sea::testing::QuadratureHullPressure reference(nullptr, rho, g, 0.0);
   for (const Pose& p : poses) {
     const HullLoad closed = hull_pressure_load(hull, nullptr, rho, g, Vector2d(p.x, p.y), p.theta, 0.0);
     const HullLoad quadrature = reference.load(hull, Vector2d(p.x, p.y), p.theta);
@@ -151,7 +151,7 @@ TEST(HullPressureMethods, LongSeaRecurrenceAgreesWithDirectSumsAndQuadrature) {
                           std::abs(fast.moment - reference.moment) / (scale * 90.0),
                           std::abs(fast.wetted_length - reference.wetted_length) / 196.0});
         if (record == 10800.0 && std::isinf(depth) && trial < 3) {
-          const HullLoad quadrature = ffrf::coupling::testing::QuadratureHullPressure(&wave, rho, g, t, 512).load(hull, g1, theta);
+          const HullLoad quadrature = ffrf::sea::testing::QuadratureHullPressure(&wave, rho, g, t, 512).load(hull, g1, theta);
           worst_quadrature = std::max({worst_quadrature, std::abs(fast.force.x() - quadrature.force.x()) / scale,
                                        std::abs(fast.force.y() - quadrature.force.y()) / scale,
                                        std::abs(fast.moment - quadrature.moment) / (scale * 90.0)});

@@ -20,9 +20,9 @@
 #include <complex>
 #include <cstddef>
 
-#include "coupling/wave_field.hpp"
+#include "sea/wave_field.hpp"
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 using Complex = std::complex<double>;
 
@@ -77,4 +77,4 @@ class ComponentPhasors {
   std::size_t index_ = 0, next_seed_ = 0;
 };
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

@@ -1,8 +1,8 @@
 // Nonlinear hydrostatic + Froude–Krylov load on a box-shaped hull section: the total incident
-// pressure (coupling/wave_field.hpp; calm water when wave == nullptr) integrated over the hull's
+// pressure (sea/wave_field.hpp; calm water when wave == nullptr) integrated over the hull's
 // instantaneous wetted boundary below the incident wave profile. The box (in the hull frame, origin
 // at G1) is clipped by the wave surface: each edge is split where it crosses ζ(x, t)
-// (coupling/waterline_crossings.hpp) and the pressure, a sum of exponentials along a straight edge,
+// (sea/waterline_crossings.hpp) and the pressure, a sum of exponentials along a straight edge,
 // is integrated on each wetted piece in closed form (linear cost in the wave component count).
 // F = −B ∮ p n ds (B the width normal to the plane, n the outward normal),
 // M = −B ∮ p (r − r_G1) × n ds about G1 (planar cross product a × b = a_x b_y − a_y b_x).
@@ -12,9 +12,9 @@
 
 #include <Eigen/Dense>
 
-#include "coupling/wave_field.hpp"
+#include "sea/wave_field.hpp"
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 struct BoxHullSection {
   double aft_x;    // hull frame x of the stern relative to G1 [m] (< fore_x)
@@ -52,4 +52,4 @@ HullLoad hull_pressure_load(const BoxHullSection& hull, const WaveField* wave, d
 Eigen::Vector2d box_hydrostatic_stiffness(const BoxHullSection& hull, double water_density, double gravity,
                                           double displaced_volume, double center_of_gravity_above_keel);
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

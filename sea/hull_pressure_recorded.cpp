@@ -1,19 +1,19 @@
 // Hydrostatic + Froude–Krylov hull load with the incident wave read from a record of the sea: the
 // wetted boundary and the piece integrals from the recorded F, G, H (see hull_pressure_recorded.hpp,
 // docs/hydrodynamics.md, "The sea evaluated once").
-#include "coupling/hull_pressure_recorded.hpp"
+#include "sea/hull_pressure_recorded.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <array>
 #include <complex>
 
-#include "coupling/component_phasors.hpp"
-#include "coupling/crossing_isolation.hpp"
-#include "coupling/hull_edges.hpp"
+#include "sea/component_phasors.hpp"
+#include "sea/crossing_isolation.hpp"
+#include "sea/hull_edges.hpp"
 #include "hydro/gauss_legendre.hpp"
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 namespace {
 
@@ -326,4 +326,4 @@ std::optional<HullLoad> recorded_hull_pressure_load(const BoxHullSection& hull, 
   return load;
 }
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

@@ -1,6 +1,6 @@
 // The box hull section's boundary as four straight edges, and what every pressure integration over
 // it shares: the edges placed at a pose, the hydrostatic part of a piece's pressure integrals, and a
-// wetted piece's contribution to the edge's moments, then to the load (coupling/hull_pressure.hpp).
+// wetted piece's contribution to the edge's moments, then to the load (sea/hull_pressure.hpp).
 // The edges run counter-clockwise (keel aft → keel fore → deck fore → deck aft), r(s) = a + s d,
 // s ∈ [0, 1]; the outward normal is (d_y, −d_x)/|d|. Pressures are divided by ρg.
 #pragma once
@@ -9,9 +9,9 @@
 #include <array>
 #include <cmath>
 
-#include "coupling/hull_pressure.hpp"
+#include "sea/hull_pressure.hpp"
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 struct HullEdge {
   Eigen::Vector2d a, d;
@@ -67,4 +67,4 @@ inline void add_edge_load(const BoxHullSection& hull, const HullEdge& edge, cons
   load.wetted_length += m.wetted_length;
 }
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

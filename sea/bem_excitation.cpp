@@ -1,5 +1,5 @@
 // BEM wave excitation for the wave field's components (see the header).
-#include "coupling/bem_excitation.hpp"
+#include "sea/bem_excitation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 Eigen::Vector3d BemExcitation::at(double t) const {
   Eigen::Vector3d total = Eigen::Vector3d::Zero();
@@ -62,4 +62,4 @@ BemExcitation bem_excitation(const hydro::PlanarExcitation& table, const WaveFie
   return out;
 }
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

@@ -1,5 +1,5 @@
 // First-order wave excitation of the hull from BEM coefficients (Froude–Krylov + diffraction), for
-// the same components as the wave field (coupling/wave_field.hpp). Component i with amplitude a_i,
+// the same components as the wave field (sea/wave_field.hpp). Component i with amplitude a_i,
 // frequency ω_i, wave number k_i and phase φ_i has the incident elevation at the BEM body origin's
 // mean position x_O, ζ(x_O, t) = a_i cos(k_i x_O − δω_i t + φ_i) = a_i cos(ω_i t + ψ_i),
 // ψ_i = −δ(k_i x_O + φ_i) (δ = +1 following, −1 head sea), so the force on the origin is
@@ -13,10 +13,10 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "coupling/wave_field.hpp"
+#include "sea/wave_field.hpp"
 #include "hydro/planar_coefficients.hpp"
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 struct BemExcitation {
   std::vector<Eigen::Vector3cd> force;  // a_i Tᵀ X(ω_i) [N, N, N m] per component
@@ -40,4 +40,4 @@ hydro::PlanarComplexVector excitation_at(const hydro::PlanarExcitation& table, d
 BemExcitation bem_excitation(const hydro::PlanarExcitation& table, const WaveField& wave, double origin_x,
                              const Eigen::Vector2d& origin_offset);
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

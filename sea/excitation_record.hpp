@@ -1,4 +1,4 @@
-// The first-order BEM wave excitation of the hull (coupling/bem_excitation.hpp) sampled once over a
+// The first-order BEM wave excitation of the hull (sea/bem_excitation.hpp) sampled once over a
 // record and read back by interpolation, so that an irregular sea costs what a regular wave does on
 // every right-hand-side evaluation. The exact excitation at G1, channel c ∈ {surge, heave, pitch},
 //   F_c(t) = Σ_i Re{F_{c,i} e^{i(ω_i t + ψ_i)}} = Re{s_c(t)},   s_c(t) = Σ_i (F_{c,i} e^{iψ_i}) e^{+iω_i t},
@@ -26,11 +26,11 @@
 #include <optional>
 #include <string>
 
-#include "coupling/bem_excitation.hpp"
-#include "coupling/wave_field.hpp"
+#include "sea/bem_excitation.hpp"
+#include "sea/wave_field.hpp"
 #include "hydro/harmonic_record.hpp"
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 struct ExcitationRecordOptions {
   double duration = 0.0;                                // [s] > 0: the record covers [0, duration]
@@ -91,4 +91,4 @@ struct ExcitationRecordOutcome {
   std::string refusal;  // empty when there is a record
 };
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

@@ -1,16 +1,16 @@
 // Roots of g(s) = y(s) − ζ(x(s), t) on a straight edge: monotone/root-free interval isolation from
 // local curvature bounds (the curvature at an interval's ends plus the field's third-derivative bound
 // times the half-width), then safeguarded Newton (see waterline_crossings.hpp).
-#include "coupling/waterline_crossings.hpp"
+#include "sea/waterline_crossings.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
 
-#include "coupling/component_phasors.hpp"
+#include "sea/component_phasors.hpp"
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 namespace {
 
@@ -124,4 +124,4 @@ WaterlineCrossings waterline_crossings(const WaveField& wave, double t, const Ei
   return out;
 }
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

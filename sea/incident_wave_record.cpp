@@ -1,7 +1,7 @@
 // The incident sea recorded once per record on patches around the hull's sides: Taylor polynomials
 // of H = ∫∫F in z = y + i x whose coefficients are FFT-sampled harmonic sums, and sampled elevation
 // and slope bounds over the hull's x range (see incident_wave_record.hpp).
-#include "coupling/incident_wave_record.hpp"
+#include "sea/incident_wave_record.hpp"
 
 #include <fmt/format.h>
 
@@ -12,9 +12,9 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "coupling/component_phasors.hpp"
+#include "sea/component_phasors.hpp"
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 namespace {
 
@@ -407,4 +407,4 @@ void IncidentWaveRecord::antiderivatives(const WavePolynomials& p, int patch, do
   g = disc.radius * rate;
 }
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

@@ -9,8 +9,8 @@
 // recurrence on a harmonic grid, two complex products each instead of an exponential, sine and cosine),
 // and the components inside the series radius are summed power by power (SeriesSums). Finite depth
 // (two exponentials per component) keeps the direct formula. Waterline crossings:
-// coupling/waterline_crossings.hpp. No heap allocation.
-#include "coupling/hull_pressure.hpp"
+// sea/waterline_crossings.hpp. No heap allocation.
+#include "sea/hull_pressure.hpp"
 
 #include <array>
 #include <cmath>
@@ -18,11 +18,11 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "coupling/component_phasors.hpp"
-#include "coupling/hull_edges.hpp"
-#include "coupling/waterline_crossings.hpp"
+#include "sea/component_phasors.hpp"
+#include "sea/hull_edges.hpp"
+#include "sea/waterline_crossings.hpp"
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 namespace {
 
@@ -290,4 +290,4 @@ Eigen::Vector2d box_hydrostatic_stiffness(const BoxHullSection& hull, double wat
           rho_g * (waterplane_inertia + displaced_volume * (buoyancy_center_above_keel - center_of_gravity_above_keel))};
 }
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

@@ -1,5 +1,5 @@
 // The waterline-crossing search as it was before the local curvature bounds (commit 7adb74e): the
-// same isolation and the same Newton polish (coupling/crossing_isolation.hpp), with the wave field's
+// same isolation and the same Newton polish (sea/crossing_isolation.hpp), with the wave field's
 // GLOBAL bounds |g'| ≤ |d_y| + |d_x| r Σ a k and |g''| ≤ d_x² r Σ a k² on every interval. Exact (the
 // same roots), only slower for many components.
 // Kept for tests (a second, independently bounded search to compare the roots with) and for
@@ -10,14 +10,14 @@
 #include <array>
 #include <cmath>
 
-#include "coupling/waterline_crossings.hpp"
-#include "coupling/wave_field.hpp"
+#include "sea/waterline_crossings.hpp"
+#include "sea/wave_field.hpp"
 
 namespace ffrf::test_support {
 
-using ffrf::coupling::WaveComponent;
-using ffrf::coupling::WaveField;
-using ffrf::coupling::WaterlineCrossings;
+using ffrf::sea::WaveComponent;
+using ffrf::sea::WaveField;
+using ffrf::sea::WaterlineCrossings;
 
 namespace global_bounds_detail {
 
@@ -81,7 +81,7 @@ inline WaterlineCrossings waterline_crossings_global_bounds(const WaveField& wav
         out.truncated = true;
         break;
       }
-      out.s[static_cast<std::size_t>(out.count++)] = coupling::polish_crossing(gap, iv.lo, iv.hi, iv.g_lo, iv.g_hi);
+      out.s[static_cast<std::size_t>(out.count++)] = sea::polish_crossing(gap, iv.lo, iv.hi, iv.g_lo, iv.g_hi);
       continue;
     }
     const double mid = 0.5 * (iv.lo + iv.hi);

@@ -18,7 +18,7 @@
 #include <limits>
 #include <vector>
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 struct WaveComponent {
   double amplitude = 0.0;          // a_i [m]
@@ -72,7 +72,7 @@ class WaveField {
 
   // Components on whole multiples of one frequency step, ω_i = (n0 + i) Δω for i = 0 … N−1 (N ≥ 2,
   // as hydro::synthesize makes them; checked to 4 ulp), in deep water, so k_i = (n0 + i)² Δω²/g:
-  // sums over them run by recurrence (coupling/component_phasors.hpp). active = false otherwise.
+  // sums over them run by recurrence (sea/component_phasors.hpp). active = false otherwise.
   struct HarmonicGrid {
     bool active = false;
     double first_harmonic = 0.0;    // n0
@@ -108,4 +108,4 @@ class WaveField {
   HarmonicGrid harmonic_grid_;
 };
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

@@ -1,7 +1,7 @@
 // Superposed linear (Airy) wave components: dispersion relation, C¹ ramp, elevation, total incident
 // pressure (hydrostatic extension up to the crest) and particle kinematics. See wave_field.hpp and
 // docs/theory.md §6.
-#include "coupling/wave_field.hpp"
+#include "sea/wave_field.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 namespace {
 
@@ -200,4 +200,4 @@ Eigen::Vector2d WaveField::acceleration(double x, double y, double t) const {
   return ramp(t) * sum;
 }
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

@@ -18,8 +18,8 @@
 #include <utility>
 #include <vector>
 
-#include "coupling/hull_pressure.hpp"
-#include "coupling/wave_field.hpp"
+#include "sea/hull_pressure.hpp"
+#include "sea/wave_field.hpp"
 
 // Global allocation counter (this executable only; off unless a test turns it on): hull_pressure_load
 // must not allocate.
@@ -37,7 +37,7 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace hydro_test {
 
-using namespace ffrf::coupling;
+using namespace ffrf::sea;
 using Eigen::Vector2d;
 constexpr double rho = 1025.0, g = 9.81, pi = std::numbers::pi;
 const double deep = std::numeric_limits<double>::infinity();

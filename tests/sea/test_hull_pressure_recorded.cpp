@@ -9,14 +9,14 @@
 #include <limits>
 #include <random>
 
-#include "coupling/hull_pressure.hpp"
-#include "coupling/hull_pressure_recorded.hpp"
-#include "coupling/incident_wave_record.hpp"
+#include "sea/hull_pressure.hpp"
+#include "sea/hull_pressure_recorded.hpp"
+#include "sea/incident_wave_record.hpp"
 #include "jonswap_test_sea.hpp"
 
 namespace hull_pressure_recorded_test {
 
-using namespace ffrf::coupling;
+using namespace ffrf::sea;
 using Eigen::Vector2d;
 constexpr double water_density = 1025.0, gravity = 9.81;
 const BoxHullSection reference_hull{-32.0, 58.0, -6.0, 2.0, 40.0};  // the reference hull (docs/architecture.md)

@@ -1,4 +1,4 @@
-// The recorded BEM excitation (coupling/excitation_record.hpp) against BemExcitation::at, the sum taken
+// The recorded BEM excitation (sea/excitation_record.hpp) against BemExcitation::at, the sum taken
 // component by component with a sine and cosine each (independent of the FFT and the interpolation):
 // the WAMIT barge of tests/hydro/data (barge.3, Froude–Krylov + diffraction, the BEM origin 3 m forward
 // of G1 as in cases/irregular_bem_barge_crane.toml) in a 3-hour JONSWAP sea from hydro::synthesize
@@ -15,18 +15,18 @@
 #include <string>
 #include <vector>
 
-#include "coupling/bem_excitation.hpp"
-#include "coupling/excitation_record.hpp"
+#include "sea/bem_excitation.hpp"
+#include "sea/excitation_record.hpp"
 #include "hydro/wamit_reader.hpp"
 #include "jonswap_test_sea.hpp"
 
 namespace excitation_record_test {
 
 using namespace ffrf;
-using coupling::BemExcitation;
-using coupling::ExcitationRecord;
-using coupling::ExcitationRecordOptions;
-using coupling::WaveField;
+using sea::BemExcitation;
+using sea::ExcitationRecord;
+using sea::ExcitationRecordOptions;
+using sea::WaveField;
 
 constexpr double three_hours = 10800.0;
 const double deep = std::numeric_limits<double>::infinity();
@@ -40,13 +40,13 @@ const hydro::PlanarExcitation& barge_table() {
 }
 
 BemExcitation barge_excitation(const WaveField& wave) {
-  return coupling::bem_excitation(barge_table(), wave, origin_x, origin_offset);
+  return sea::bem_excitation(barge_table(), wave, origin_x, origin_offset);
 }
 
 ExcitationRecordOptions options_for(const BemExcitation& excitation, double duration) {
   ExcitationRecordOptions options;
   options.duration = duration;
-  options.tolerance = coupling::excitation_tolerance(excitation);
+  options.tolerance = sea::excitation_tolerance(excitation);
   return options;
 }
 
@@ -56,7 +56,7 @@ TEST(ExcitationRecord, IsTheExactExcitationWithinItsMeasuredBoundOverAThreeHourR
   ASSERT_EQ(wave.components().size(), 3376u);
   const BemExcitation excitation = barge_excitation(wave);
   const ExcitationRecordOptions options = options_for(excitation, three_hours);
-  const Eigen::Vector3d sigma = coupling::excitation_standard_deviation(excitation);
+  const Eigen::Vector3d sigma = sea::excitation_standard_deviation(excitation);
   ASSERT_GT(sigma.minCoeff(), 1e4);  // every channel carries force: the comparison is not of zeros
 
   const auto outcome = ExcitationRecord::build(excitation, wave, options);
@@ -124,8 +124,8 @@ TEST(ExcitationRecord, IsTheExactSumOutsideTheRecord) {
 
 TEST(ExcitationRecord, RefusesComponentsOffAHarmonicGrid) {
   const WaveField on_grid = test_support::jonswap_test_sea(1200.0, deep, 4);
-  std::vector<coupling::ComponentSpec> specs;
-  for (const coupling::WaveComponent& c : on_grid.components()) specs.push_back({c.angular_frequency, c.amplitude, c.phase});
+  std::vector<sea::ComponentSpec> specs;
+  for (const sea::WaveComponent& c : on_grid.components()) specs.push_back({c.angular_frequency, c.amplitude, c.phase});
   specs[10].angular_frequency *= 1.0 + 1e-9;  // one component off the grid
   const WaveField off_grid = WaveField::from_components(specs, 1.0, 0.0, deep, 9.81);
   ASSERT_FALSE(off_grid.harmonic_grid().active);
@@ -179,7 +179,7 @@ TEST(ExcitationRecord, RejectsBadOptions) {
   BemExcitation short_phases = excitation;
   short_phases.phase.pop_back();
   EXPECT_THROW(ExcitationRecord::build(short_phases, wave, options_for(excitation, 600.0)), std::invalid_argument);
-  EXPECT_THROW(coupling::excitation_tolerance(excitation, 0.0), std::invalid_argument);
+  EXPECT_THROW(sea::excitation_tolerance(excitation, 0.0), std::invalid_argument);
 }
 
 }  // namespace excitation_record_test

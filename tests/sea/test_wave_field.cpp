@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "coupling/wave_field.hpp"
+#include "sea/wave_field.hpp"
 
 namespace wave_field_test {
 
-using namespace ffrf::coupling;
+using namespace ffrf::sea;
 constexpr double rho = 1025.0, g = 9.81, pi = std::numbers::pi;
 const double deep = std::numeric_limits<double>::infinity();
 

@@ -6,15 +6,15 @@
 // Each monotone interval with a sign change holds exactly one root, found by Newton's method kept
 // inside the bracket (bisection when a step leaves it) until its step is below 1e-9. The surface
 // comes from the caller (`Gap`: evaluate(s, g, g', g'') and evaluate(s, g, g')): the component sums
-// of a wave field (coupling/waterline_crossings.cpp) or a record of the sea
-// (coupling/hull_pressure_recorded.cpp).
+// of a wave field (sea/waterline_crossings.cpp) or a record of the sea
+// (sea/hull_pressure_recorded.cpp).
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-namespace ffrf::coupling {
+namespace ffrf::sea {
 
 // Up to max_crossings roots in increasing s; wet_at_start tells whether r(0) is below the surface
 // (y < ζ, strictly). A tangency (g touching zero without changing sign) is no crossing.
@@ -111,4 +111,4 @@ void isolate_crossings(const Gap& gap, const CrossingInterval* first, int count,
   }
 }
 
-}  // namespace ffrf::coupling
+}  // namespace ffrf::sea

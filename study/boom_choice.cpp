@@ -1,0 +1,50 @@
+// The boom model of a run from the scene's default and a request (see boom_choice.hpp).
+#include "study/boom_choice.hpp"
+
+#include <fmt/format.h>
+
+#include "study/run_pipeline.hpp"
+#include "study/work_limits.hpp"
+
+namespace ffrf::study {
+
+scene::BoomChoice default_boom_choice(const scene::Scene& scene) {
+  scene::BoomChoice choice;
+  choice.kind = scene::BoomKind::nodal;
+  choice.elements = scene.boom.mesh.element_count;
+  choice.modes = default_modal_modes;
+  choice.static_modes = true;
+  return choice;
+}
+
+scene::BoomChoice boom_choice(const BoomRequest& request, scene::BoomChoice choice) {
+  if (!request.kind.empty()) {
+    const auto kind = scene::parse_boom_kind(request.kind);
+    if (!kind)
+      throw SettingError(Setting::boom_model, request.kind,
+                         fmt::format("unknown boom model; choose one of {}", scene::boom_kind_choices()));
+    choice.kind = *kind;
+  }
+  choice.elements = request.elements.value_or(choice.elements);
+  if (choice.elements < 1)
+    throw SettingError(Setting::elements, std::to_string(choice.elements), "not a valid element count (valid range [1, inf))");
+  choice.modes = request.modes.value_or(choice.modes);
+  choice.static_modes = request.static_modes.value_or(choice.static_modes);
+  if (!request.stiffening.empty()) {
+    choice.stiffening = scene::parse_stiffening(request.stiffening);
+    if (!choice.stiffening)
+      throw SettingError(Setting::stiffening, request.stiffening, "unknown stiffening; choose one of none, static, centrifugal, both");
+  }
+  if (choice.kind == scene::BoomKind::modal) {
+    const int dof = 3 * choice.elements;  // planar beam: (u, v, φ) per node, the root node clamped
+    if (choice.modes < 1 || choice.modes >= dof) {
+      throw SettingError(Setting::modes, std::to_string(choice.modes),
+                         fmt::format("not a valid mode count for N = {} elements ({} elastic DOFs) (valid range [1, {}])",
+                                     choice.elements, dof, dof - 1));
+    }
+  }
+  check_run_memory(choice);
+  return choice;
+}
+
+}  // namespace ffrf::study
