@@ -4,7 +4,8 @@
 #   (coupling may use sea and hydro; neither knows anything of the crane); distributed/ (the task-farm engine)
 #   knows nothing of ffrf and serves study/ and app/;
 #   CLI11 only in app/, nlohmann-json only in report/, toml++ only in scene/, netCDF only in hydro/;
-#   no printing (fmt::print, printf, std::cout/cerr, puts) in scene/, study/, report/.
+#   no printing (fmt::print, printf, std::cout/cerr, puts) in scene/, study/, report/;
+#   the test programs of tests/<layer> link no library of a layer above it.
 # Run as: cmake -DSOURCE_DIR=<repository> -P check_layers.cmake. Every violation is listed with its
 # file and line; the script fails when there is one.
 cmake_minimum_required(VERSION 3.25)
@@ -62,6 +63,31 @@ foreach(layer IN LISTS layers)
       if(layer MATCHES "^(scene|study|report)$" AND
          line MATCHES "(fmt::print|std::cout|std::cerr|std::clog|[^a-z_]printf[ \t]*\\(|[^a-z_]puts[ \t]*\\()")
         list(APPEND violations "${shown}:${number}: ${layer}/ prints (it returns results; app/ prints) (${line})")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+
+# The test programs of a layer (tests/<layer>/CMakeLists.txt) link only that layer's library and
+# the libraries below it: a library named ffrf_<layer> of another layer must be an allowed one.
+foreach(layer IN LISTS layers)
+  set(tests_file "${SOURCE_DIR}/tests/${layer}/CMakeLists.txt")
+  if(NOT EXISTS "${tests_file}")
+    continue()
+  endif()
+  math(EXPR checked "${checked} + 1")
+  file(STRINGS "${tests_file}" lines)
+  set(number 0)
+  foreach(line IN LISTS lines)
+    math(EXPR number "${number} + 1")
+    if(line MATCHES "^[ \t]*#")
+      continue()
+    endif()
+    string(REGEX MATCHALL "ffrf_[a-z]+" libraries "${line}")
+    foreach(library IN LISTS libraries)
+      string(REGEX REPLACE "^ffrf_" "" target "${library}")
+      if(NOT target STREQUAL layer AND target IN_LIST layers AND NOT target IN_LIST allowed_${layer})
+        list(APPEND violations "tests/${layer}/CMakeLists.txt:${number}: a test of ${layer}/ must not link ${library} (${line})")
       endif()
     endforeach()
   endforeach()

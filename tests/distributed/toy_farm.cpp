@@ -1,6 +1,6 @@
 // The toy farm: a program on the distributed engine for its tests and benchmark. Task i estimates
 // π by Monte Carlo from samples·(1 + 7i mod 5) points (so tasks cost 1 to 5 units, mixed), its
-// random numbers drawn from a counter-based stream seeded by the task's key. It writes table.csv
+// random numbers drawn from a Mersenne twister seeded by the task's key. It writes table.csv
 // (results only, in task order) and timing.csv (wall time and rank per task) into --out when every
 // task is done; `--merge` builds the same table from shard journals. Knobs for the tests: a task
 // that fails every k-th, a trace of which process computed what, a rank that dies, a rank that
@@ -12,6 +12,8 @@
 // engine failure.
 #include <fcntl.h>
 #include <fmt/format.h>
+
+#include <random>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -30,7 +32,6 @@
 #include "distributed/farm.hpp"
 #include "distributed/merge.hpp"
 #include "distributed/session.hpp"
-#include "hydro/random_stream.hpp"
 
 namespace {
 
@@ -56,11 +57,12 @@ std::size_t task_samples(std::size_t index, std::size_t samples) { return sample
 
 // "samples,inside,pi_estimate": the π estimate 4·inside/samples.
 std::string estimate_pi(const Task& task, std::size_t samples) {
-  const ffrf::hydro::RandomStream stream(task_seed(task), 0);
+  std::mt19937_64 stream(task_seed(task));  // the engine's task seed: the same draws on any process
+  const auto uniform = [&stream] { return static_cast<double>(stream() >> 11) * 0x1.0p-53; };  // [0, 1)
   std::size_t inside = 0;
   for (std::uint64_t k = 0; k < samples; ++k) {
-    const double x = stream.uniform(2 * k);
-    const double y = stream.uniform(2 * k + 1);
+    const double x = uniform();
+    const double y = uniform();
     inside += x * x + y * y < 1.0 ? 1 : 0;
   }
   return fmt::format("{},{},{:.17g}", samples, inside, 4.0 * static_cast<double>(inside) / static_cast<double>(samples));

@@ -1,6 +1,6 @@
 // Damping added to the hull ([hull_damping]: F = −b v − q |v| v per DOF at G1), on the crane whose
 // hull is the WAMIT fixture's barge and whose boom and cargo weigh 41 kg (the hull alone to ~1e-5;
-// tests/coupling/barge_hull_scene.hpp). Independent results:
+// tests/study/barge_hull_scene.hpp). Independent results:
 //  * linear, surge (no radiation, a mooring spring k): a 1-DOF oscillator m ẍ + b ẋ + k x = 0, whose
 //    logarithmic decrement between successive maxima is δ = 2πζ/√(1 − ζ²), ζ = b / (2√(k m));
 //  * linear, heave on a [bem] hull (constant radiation at the tabulated period 8.100003 s): the 1-DOF

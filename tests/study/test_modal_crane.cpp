@@ -11,7 +11,7 @@
 
 #include "coupling/error_metrics.hpp"
 #include "study/error_measure.hpp"
-#include "crane_test_support.hpp"
+#include "../scene/crane_test_support.hpp"
 #include "linalg/dense_solvers.hpp"
 
 namespace modal_crane_test {

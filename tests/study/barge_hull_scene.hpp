@@ -1,7 +1,7 @@
 // The scene text of a crane whose hull is the WAMIT fixture's barge (tests/hydro/data: 80 m × 10 m ×
 // 8 m, centre of gravity at the waterline origin, 5 m above the keel) and whose boom (40 m of
 // 1 kg/m) and cargo (1 kg) weigh 41 kg: the hull alone to ~1e-5, for free decays with the [bem]
-// radiation models (tests/coupling/test_bem_crane.cpp, test_cummins_crane.cpp).
+// radiation models (tests/study/test_bem_crane.cpp, test_cummins_crane.cpp).
 #pragma once
 
 #include <fmt/format.h>

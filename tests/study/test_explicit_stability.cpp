@@ -12,7 +12,7 @@
 
 #include "study/stability_theory.hpp"
 #include "coupling/explicit_stability.hpp"
-#include "crane_test_support.hpp"
+#include "../scene/crane_test_support.hpp"
 
 namespace ffrf {
 namespace explicit_stability_test {

@@ -11,7 +11,7 @@
 #include "distributed/session.hpp"
 #include "report/sweep_csv.hpp"
 #include "study/sweep.hpp"
-#include "study_test_support.hpp"
+#include "../study/study_test_support.hpp"
 
 namespace ffrf::study {
 namespace sweep_engine_test {

@@ -13,7 +13,7 @@
 #include "study/operability.hpp"
 #include "study/recommend.hpp"
 #include "study/sweep.hpp"
-#include "study_test_support.hpp"
+#include "../study/study_test_support.hpp"
 
 namespace {
 
