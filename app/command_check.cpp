@@ -33,7 +33,7 @@ std::string summary(const scene::Scene& scene) {
                      scene.wire->unstretched_length);
   if (scene.wave) {
     text += fmt::format(", wave {:g} m / {:g} s {}", scene.wave->height, scene.wave->period,
-                        scene.wave->direction == scene::WaveDirection::following ? "following" : "head");
+                        scene.wave->direction == hydro::WaveHeading::following ? "following" : "head");
   } else if (scene.sea) {
     const scene::IrregularSea& sea = *scene.sea;
     const char* heading = sea.heading == hydro::WaveHeading::following ? "following" : "head";

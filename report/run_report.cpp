@@ -25,13 +25,6 @@ const char* initial_state_name(const study::ModelRun& run) {
   return run.from_static_equilibrium ? "static-equilibrium" : "as-built";
 }
 
-// The detectors' bounds of a finished run: the scene's, with its static wire tension.
-coupling::MonitorLimits run_limits(const scene::Scene& scene, const study::ModelRun& run) {
-  coupling::MonitorLimits limits = study::monitor_limits(scene);
-  limits.static_tension = run.statics.outputs.wire_tension;
-  return limits;
-}
-
 }  // namespace
 
 Json detection_json(const coupling::Detection& d) {
@@ -213,17 +206,16 @@ Json model_json(const scene::Scene& scene, const study::ModelRun& run) {
                                                   {"displacement_from_static", series[i].about_static}};
   }
   json["outputs"] = std::move(outputs);
-  const coupling::MonitorLimits limits = run_limits(scene, run);
   Json wire{{"static_tension_N", run.statics.outputs.wire_tension},
             {"dynamic_amplification_factor", run.amplification},
             {"slack_events", run.slack_events()},
             {"taut_events", static_cast<long>(run.result.wire_events.size()) - run.slack_events()}};
   wire["slack_intervals_s"] = Json::array();
-  for (const coupling::SlackInterval& slack : coupling::slack_intervals(run.result, limits)) {
+  for (const coupling::SlackInterval& slack : run.slack_intervals) {
     wire["slack_intervals_s"].push_back(Json::array({slack.start, std::isfinite(slack.end) ? Json(slack.end) : Json(nullptr)}));
   }
   wire["snap_loads"] = Json::array();
-  for (const coupling::SnapLoad& snap : coupling::snap_loads(run.result, limits)) {
+  for (const coupling::SnapLoad& snap : run.snap_loads) {
     wire["snap_loads"].push_back(Json{{"taut_at_s", snap.time},
                                       {"peak_tension_N", snap.peak_tension},
                                       {"peak_at_s", snap.peak_time},
@@ -233,7 +225,7 @@ Json model_json(const scene::Scene& scene, const study::ModelRun& run) {
   if (run.irregular) json["irregular_sea"] = irregular_json(*run.irregular);
   if (!run.wave_kinematics.method.empty()) json["wave_kinematics"] = wave_kinematics_json(run.wave_kinematics);
   json["max_constraint_residual_m"] = run.max_constraint_residual;
-  json["max_buckling_load_ratio"] = coupling::max_buckling_load_ratio(run.result, limits);
+  json["max_buckling_load_ratio"] = run.max_buckling_load_ratio;
   json["detections"] = Json::array();
   for (const coupling::Detection& d : run.result.detections) json["detections"].push_back(detection_json(d));
   const coupling::SolverStats& st = run.result.stats;

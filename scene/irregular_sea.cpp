@@ -54,7 +54,7 @@ hydro::SynthesisOptions synthesis_options(const IrregularSea& sea, double record
 hydro::WaveComponents sea_components(const Scene& scene) {
   if (scene.wave) {
     const Wave& wave = *scene.wave;
-    const auto heading = wave.direction == WaveDirection::following ? hydro::WaveHeading::following : hydro::WaveHeading::head;
+    const hydro::WaveHeading heading = wave.direction;
     if (wave.height <= 0.0) return hydro::WaveComponents{{}, {}, {}, heading, 0.0};
     return hydro::user_components({kTwoPi / wave.period}, {0.5 * wave.height}, {0.0}, heading);
   }

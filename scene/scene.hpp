@@ -93,12 +93,11 @@ struct Environment {
   bool deep_water() const { return std::isinf(water_depth); }
 };
 
-enum class WaveDirection { following, head };  // following: travels +x
 
 struct Wave {
   double height;        // H, trough to crest [m]
   double period;        // T [s]
-  WaveDirection direction;
+  hydro::WaveHeading direction;  // following: travels +x
   double ramp_periods;  // ramp-in length in periods [-]
 };
 

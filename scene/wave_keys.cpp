@@ -71,7 +71,7 @@ void build_wave(const WrittenKeys& keys, Scene& scene) {
   const bool head = keys.text("wave.direction") == "head";
   if (spectrum == "regular") {
     scene.wave = Wave{keys.number("wave.height"), keys.number("wave.period"),
-                      head ? WaveDirection::head : WaveDirection::following, keys.number("wave.ramp_periods")};
+                      head ? hydro::WaveHeading::head : hydro::WaveHeading::following, keys.number("wave.ramp_periods")};
     return;
   }
   IrregularSea sea;

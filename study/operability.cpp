@@ -152,10 +152,7 @@ CellModel reasoned_model(const scene::Scene& scene, const SeaCell& cell, const O
                          modal::ModeCache* modes, double top) {
   scene::Scene reasoning_scene = scene;
   reasoning_scene.sea.reset();
-  reasoning_scene.wave = scene::Wave{cell.significant_height, 2.0 * std::numbers::pi / top,
-                                     cell.heading == hydro::WaveHeading::head ? scene::WaveDirection::head
-                                                                              : scene::WaveDirection::following,
-                                     2.0};
+  reasoning_scene.wave = scene::Wave{cell.significant_height, 2.0 * std::numbers::pi / top, cell.heading, 2.0};
   const RecommendReasoning reasoning = reason_about(reasoning_scene, request.tolerance, judged_outputs(reasoning_scene));
   CellModel model;
   model.relative_tolerance = reasoning.relative_tolerance;

@@ -171,8 +171,8 @@ std::vector<scene::BoomChoice> rao_models(const scene::Scene& scene) {
 
 scene::Scene with_regular_wave(const scene::Scene& scene, double height, double period, double ramp_periods) {
   scene::Scene waved = scene;
-  scene::WaveDirection direction = scene.wave ? scene.wave->direction : scene::WaveDirection::following;
-  if (scene.sea && scene.sea->heading == hydro::WaveHeading::head) direction = scene::WaveDirection::head;
+  hydro::WaveHeading direction = scene.wave ? scene.wave->direction : hydro::WaveHeading::following;
+  if (scene.sea && scene.sea->heading == hydro::WaveHeading::head) direction = hydro::WaveHeading::head;
   waved.sea.reset();  // a regular wave replaces the scene's irregular sea (the frequency domain is per component)
   waved.wave = scene::Wave{height, period, direction, ramp_periods};
   return waved;

@@ -176,6 +176,9 @@ void summarize(const scene::Scene& scene, double duration, ModelRun& run) {
   run.real_time_factor = duration / run.result.stats.wall_seconds;
   run.irregular = irregular_statistics(scene, run.result.time, run.result.samples, run.statics.outputs, run.window.first,
                                        scene.simulation.output_interval);
+  run.slack_intervals = coupling::slack_intervals(run.result, run.monitor);
+  run.snap_loads = coupling::snap_loads(run.result, run.monitor);
+  run.max_buckling_load_ratio = coupling::max_buckling_load_ratio(run.result, run.monitor);
 }
 
 ModelRun prepared_model(const PreparedRun& prepared) {
@@ -199,6 +202,7 @@ ModelRun integrate_run(const scene::Scene& scene, PreparedRun& prepared, const c
   ModelRun run = prepared_model(prepared);
   coupling::IntegratorSettings run_settings = settings;
   run_settings.monitor.static_tension = prepared.statics.outputs.wire_tension;
+  run.monitor = run_settings.monitor;
   const coupling::HullLoadCounts before = prepared.equations->hull_load_counts();
   run.result = coupling::integrate(*prepared.equations, prepared.initial_state, run_settings);
   const coupling::HullLoadCounts after = prepared.equations->hull_load_counts();

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "coupling/run_monitor.hpp"
 #include "coupling/simulation.hpp"
 #include "coupling/static_equilibrium.hpp"
 #include "modal/mode_cache.hpp"
@@ -116,6 +117,13 @@ struct ModelRun {
   double real_time_factor = 0.0;   // simulated seconds per wall second (integration)
   std::optional<IrregularStatistics> irregular;  // an irregular sea: statistics after the ramp
   WaveKinematicsUse wave_kinematics;
+  // The failure detectors' bounds the run was judged by (the scene's, its static wire tension
+  // added), and what they found over the run: the wire's slack intervals and snap loads, the largest
+  // boom compression over its Euler load.
+  coupling::MonitorLimits monitor;
+  std::vector<coupling::SlackInterval> slack_intervals;
+  std::vector<coupling::SnapLoad> snap_loads;
+  double max_buckling_load_ratio = 0.0;
 
   const coupling::CraneOutputs& static_outputs() const { return statics.outputs; }
   long slack_events() const;       // the wire went slack

@@ -30,10 +30,8 @@ WireStudy wire_study(const scene::Scene& scene, const StabilityOptions& options)
     }
     try {
       wire.run = run_model(lifted, wire.choice, study.settings);
-      coupling::MonitorLimits limits = study.settings.monitor;
-      limits.static_tension = wire.run->statics.outputs.wire_tension;
-      wire.slack = coupling::slack_intervals(wire.run->result, limits);
-      wire.snaps = coupling::snap_loads(wire.run->result, limits);
+      wire.slack = wire.run->slack_intervals;  // judged by the run's own limits (its static tension added)
+      wire.snaps = wire.run->snap_loads;
     } catch (const coupling::SolverFailure& failure) {
       wire.failure = failure.detection();
     }

@@ -105,7 +105,7 @@ TEST(SceneLoader, ReferenceSceneHasTheDesignValues) {
   ASSERT_TRUE(s.wave.has_value());
   EXPECT_EQ(s.wave->height, 1.0);
   EXPECT_EQ(s.wave->period, 10.0);
-  EXPECT_EQ(s.wave->direction, WaveDirection::following);
+  EXPECT_EQ(s.wave->direction, hydro::WaveHeading::following);
   EXPECT_EQ(s.wave->ramp_periods, 2.0);
   EXPECT_EQ(s.radiation.heave_added_mass, 1.5);
   EXPECT_EQ(s.radiation.surge_added_mass, 0.05);
