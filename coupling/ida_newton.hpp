@@ -1,4 +1,4 @@
-// IDA's Newton systems for the crane's stabilized index-2 DAE (coupling/integrate_ida.cpp) in
+// IDA's Newton systems for the crane's stabilized index-2 DAE (coupling/integrate_lagrange.cpp) in
 // y = (q, v, λ, μ), through SUNDIALS' linear-solver interface (a custom SUNMatrix holding the
 // structured blocks and a custom direct SUNLinearSolver). With the residual
 //   G1 = q̇ − v + C_qᵀμ,  G2 = M v̇ − Q + C_qᵀλ,  G3 = C,  G4 = C_q v + C_t

@@ -9,7 +9,7 @@
 //               by Gauss–Newton in the mass-weighted norm ‖Δq‖_M, then v onto C_q v = 0 (the
 //               M-orthogonal projection, which never raises the kinetic energy); CVODE's error
 //               estimate is projected with the same linear projector.
-// The Jacobian is the forward difference of integrate_cvode.cpp (increments 10⁻⁷·max(|y_j|, 1); see
+// The Jacobian is the forward difference of integrate_minimal.cpp (increments 10⁻⁷·max(|y_j|, 1); see
 // the comment there). All constraint calls are in constraint_terms(), project_positions() and
 // project_velocities().
 #include <cvode/cvode.h>

@@ -258,7 +258,7 @@ void sample_outputs(const IntegratorSettings& settings, const char* label, int r
 }
 
 // Forward-difference Jacobian of the second-order ODE y = (x, ẋ), ẏ = (ẋ, a(t, x, ẋ)), column by
-// column with increments δ_j = 10⁻⁷·max(|y_j|, 1) (integrate_cvode.cpp says why SUNDIALS' own
+// column with increments δ_j = 10⁻⁷·max(|y_j|, 1) (integrate_minimal.cpp says why SUNDIALS' own
 // difference quotient does not do here). `acceleration(t, x, ẋ, a)` returns false for a state the
 // model refuses. Returns 0, or 1 (recoverable) for a refused or non-finite column; exceptions
 // propagate to the calling SUNDIALS callback, which must catch them.

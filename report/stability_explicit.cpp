@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "report/explicit_stability_report.hpp"
+#include "report/stability_explicit_map_report.hpp"
 #include "report/stability_section.hpp"
 
 namespace ffrf::report {

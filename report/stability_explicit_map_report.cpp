@@ -1,5 +1,5 @@
-// Tables and charts of the explicit stability map (see explicit_stability_report.hpp).
-#include "report/explicit_stability_report.hpp"
+// Tables and charts of the explicit stability map (see stability_explicit_map_report.hpp).
+#include "report/stability_explicit_map_report.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

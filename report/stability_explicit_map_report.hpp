@@ -1,4 +1,4 @@
-// The explicit stability map (study/explicit_stability_map.hpp) as a CSV table (units in the
+// The explicit stability map (study/stability_explicit_map.hpp) as a CSV table (units in the
 // column names), a Markdown table and two gnuplot charts: largest stable step vs ω_max (log–log,
 // with β_I/ω) and the model × step stability map (green stable, red unstable, the theoretical
 // boundary drawn over it).
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "report/output_directory.hpp"
-#include "study/explicit_stability_map.hpp"
+#include "study/stability_explicit_map.hpp"
 
 namespace ffrf::report {
 

@@ -19,7 +19,7 @@
 #include "coupling/run_monitor.hpp"
 #include "scene/scene.hpp"
 #include "study/campbell.hpp"
-#include "study/explicit_stability_map.hpp"
+#include "study/stability_explicit_map.hpp"
 #include "study/run_pipeline.hpp"
 
 namespace ffrf::study {

@@ -1,5 +1,5 @@
 // Experiment 1 of the stability map: the largest stable explicit Runge–Kutta step per boom model,
-// measured by trial runs against the theory (study/explicit_stability_map.hpp).
+// measured by trial runs against the theory (study/stability_explicit_map.hpp).
 #include <fmt/format.h>
 
 #include <algorithm>

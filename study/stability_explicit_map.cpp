@@ -1,5 +1,5 @@
-// Measured vs theoretical explicit step limits per boom model (see explicit_stability_map.hpp).
-#include "study/explicit_stability_map.hpp"
+// Measured vs theoretical explicit step limits per boom model (see stability_explicit_map.hpp).
+#include "study/stability_explicit_map.hpp"
 
 #include <fmt/format.h>
 

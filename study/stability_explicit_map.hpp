@@ -2,7 +2,7 @@
 // largest fixed step of ARKODE's explicit Runge–Kutta measured by trial runs
 // (coupling::measure_stable_step) against the theory — the boom's own bound (β_I/ω_max undamped;
 // with its stiffness-proportional damping) and the linearized crane's Jacobian bound
-// (coupling::explicit_stable_step). Its tables and charts: report/explicit_stability_report.hpp.
+// (coupling::explicit_stable_step). Its tables and charts: report/stability_explicit_map_report.hpp.
 // The scene is analysed in calm water: the limit belongs to the linearization about the static
 // equilibrium (the 10 s wave does not move it).
 #pragma once

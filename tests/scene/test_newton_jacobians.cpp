@@ -170,7 +170,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"paper_floating_crane.toml", {.kind = scene::BoomKind::modal, .elements = 16, .modes = 2, .static_modes = true}, 31.0},
                       Case{"spin_up_beam.toml", {.kind = scene::BoomKind::nodal, .elements = 10, .stiffening = scene::Stiffening::centrifugal}, 9.0}));
 
-// IDA's residual of the stabilized index-2 DAE (as coupling/integrate_ida.cpp writes it).
+// IDA's residual of the stabilized index-2 DAE (as coupling/integrate_lagrange.cpp writes it).
 Eigen::VectorXd dae_residual(CraneEquations& eq, double t, const Eigen::VectorXd& y, const Eigen::VectorXd& y_dot) {
   const int n = eq.full_size();
   const auto q = y.head(n), v = y.segment(n, n);
