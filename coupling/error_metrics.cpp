@@ -21,28 +21,16 @@ std::string_view channel_name(OutputChannel channel) {
   return "?";
 }
 
-std::string_view channel_unit(OutputChannel channel) {
-  switch (channel) {
-    case OutputChannel::cargo_pitch:
-    case OutputChannel::crane_pitch: return "rad";
-    case OutputChannel::wire_tension: return "N";
-    case OutputChannel::joint_moment: return "N m";
-    default: return "m";
-  }
+const OutputChannelSpec& output_channel(OutputChannel channel) {
+  const std::string_view name = channel_name(channel);
+  for (const OutputChannelSpec& spec : output_channels())
+    if (spec.name == name) return spec;
+  throw std::logic_error("judged output " + std::string(name) + " is not in the output-channel table");
 }
 
-double channel_value(const CraneOutputs& s, OutputChannel channel) {
-  switch (channel) {
-    case OutputChannel::cargo_heave: return s.cargo.y();
-    case OutputChannel::cargo_pitch: return s.cargo.z();
-    case OutputChannel::crane_heave: return s.hull.y();
-    case OutputChannel::crane_pitch: return s.hull.z();
-    case OutputChannel::wire_tension: return s.wire_tension;
-    case OutputChannel::tip_deflection: return s.tip_deflection.y();
-    case OutputChannel::joint_moment: return s.joint_reaction.z();
-  }
-  return 0.0;
-}
+std::string_view channel_unit(OutputChannel channel) { return output_channel(channel).si_unit; }
+
+double channel_value(const CraneOutputs& s, OutputChannel channel) { return output_channel(channel).extract(s); }
 
 double RunErrors::worst_normalized_rms() const {
   double worst = 0.0;

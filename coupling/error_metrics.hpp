@@ -9,6 +9,7 @@
 #include <array>
 #include <string_view>
 
+#include "coupling/output_channels.hpp"
 #include "coupling/simulation.hpp"
 
 namespace ffrf::coupling {
@@ -18,9 +19,12 @@ inline constexpr std::array<OutputChannel, 7> all_channels{
     OutputChannel::cargo_heave,  OutputChannel::cargo_pitch,    OutputChannel::crane_heave, OutputChannel::crane_pitch,
     OutputChannel::wire_tension, OutputChannel::tip_deflection, OutputChannel::joint_moment};
 
+// A judged output is a row of the output-channel table (coupling/output_channels.hpp) by its name:
+// its unit and value come from the table.
 std::string_view channel_name(OutputChannel channel);  // "cargo_heave", ...
-std::string_view channel_unit(OutputChannel channel);  // "m", "rad", "N", "N m"
-double channel_value(const CraneOutputs& sample, OutputChannel channel);
+const OutputChannelSpec& output_channel(OutputChannel channel);
+std::string_view channel_unit(OutputChannel channel);  // the SI unit: "m", "rad", "N", "N m"
+double channel_value(const CraneOutputs& sample, OutputChannel channel);  // SI
 
 struct ChannelError {
   double normalized_rms = 0.0;

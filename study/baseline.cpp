@@ -44,26 +44,11 @@ const ChannelBaseline* Baseline::channel(const std::string& name) const {
   return found == channels.end() ? nullptr : &*found;
 }
 
-std::string series_column(coupling::OutputChannel channel) {
-  using coupling::OutputChannel;
-  switch (channel) {
-    case OutputChannel::cargo_heave: return "cargo_heave_m";
-    case OutputChannel::cargo_pitch: return "cargo_pitch_deg";
-    case OutputChannel::crane_heave: return "crane_heave_m";
-    case OutputChannel::crane_pitch: return "crane_pitch_deg";
-    case OutputChannel::wire_tension: return "wire_tension_N";
-    case OutputChannel::tip_deflection: return "tip_transverse_m";
-    case OutputChannel::joint_moment: return "joint_moment_Nm";
-  }
-  return "?";
-}
+std::string series_column(coupling::OutputChannel channel) { return std::string(coupling::output_channel(channel).column); }
 
 std::optional<std::string> output_column(const std::string& name) {
   for (const SeriesSpec& spec : crane_series()) {
-    if (spec.column == name) return name;
-  }
-  for (const coupling::OutputChannel channel : coupling::all_channels) {
-    if (coupling::channel_name(channel) == name) return series_column(channel);
+    if (spec.column == name || spec.name == name) return std::string(spec.column);
   }
   return std::nullopt;
 }

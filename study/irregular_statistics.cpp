@@ -62,8 +62,10 @@ ResponseStatistics response_statistics(std::string_view column, std::string_view
 }  // namespace
 
 std::vector<std::string_view> statistics_columns() {
-  return {"crane_heave_m", "crane_pitch_deg", "cargo_heave_m", "cargo_pitch_deg", "tip_transverse_m", "wire_tension_N",
-          "joint_moment_Nm"};
+  std::vector<std::string_view> columns;
+  for (const SeriesSpec& spec : crane_series())
+    if (spec.judged) columns.push_back(spec.column);
+  return columns;
 }
 
 std::optional<IrregularStatistics> irregular_statistics(const scene::Scene& scene, const std::vector<double>& time,

@@ -52,7 +52,7 @@ struct IrregularStatistics {
   std::string note;              // why extremes are missing, when they are
 };
 
-// The outputs whose statistics a report gives.
+// The outputs whose statistics a report gives: the judged rows of the output-channel table.
 std::vector<std::string_view> statistics_columns();
 
 // Nothing for a scene without an irregular sea or a window of fewer than 32 samples. The samples

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -15,35 +14,11 @@ namespace {
 
 using coupling::CraneOutputs;
 
-constexpr double degrees = 180.0 / std::numbers::pi;
-
-constexpr std::array series{
-    SeriesSpec{"crane_surge_m", "crane surge", "m", [](const CraneOutputs& o) { return o.hull.x(); }, true},
-    SeriesSpec{"crane_heave_m", "crane heave", "m", [](const CraneOutputs& o) { return o.hull.y(); }, true},
-    SeriesSpec{"crane_pitch_deg", "crane pitch", "deg", [](const CraneOutputs& o) { return o.hull.z() * degrees; }, true},
-    SeriesSpec{"cargo_surge_m", "cargo surge", "m", [](const CraneOutputs& o) { return o.cargo.x(); }, true},
-    SeriesSpec{"cargo_heave_m", "cargo heave", "m", [](const CraneOutputs& o) { return o.cargo.y(); }, true},
-    SeriesSpec{"cargo_pitch_deg", "cargo pitch", "deg", [](const CraneOutputs& o) { return o.cargo.z() * degrees; }, true},
-    SeriesSpec{"tip_axial_m", "boom tip axial deflection", "m", [](const CraneOutputs& o) { return o.tip_deflection.x(); }, false},
-    SeriesSpec{"tip_transverse_m", "boom tip transverse deflection", "m",
-               [](const CraneOutputs& o) { return o.tip_deflection.y(); }, false},
-    SeriesSpec{"wire_tension_N", "wire tension", "N", [](const CraneOutputs& o) { return o.wire_tension; }, false},
-    SeriesSpec{"joint_force_x_N", "joint force x at B", "N", [](const CraneOutputs& o) { return o.joint_reaction.x(); }, false},
-    SeriesSpec{"joint_force_y_N", "joint force y at B", "N", [](const CraneOutputs& o) { return o.joint_reaction.y(); }, false},
-    SeriesSpec{"joint_moment_Nm", "joint bending moment at B", "N m",
-               [](const CraneOutputs& o) { return o.joint_reaction.z(); }, false},
-    SeriesSpec{"constraint_residual_m", "constraint residual", "m",
-               [](const CraneOutputs& o) { return o.constraint_residual; }, false},
-    SeriesSpec{"kinetic_energy_J", "kinetic energy", "J", [](const CraneOutputs& o) { return o.kinetic_energy; }, false},
-    SeriesSpec{"gravity_energy_J", "gravity energy", "J", [](const CraneOutputs& o) { return o.gravity_energy; }, false},
-    SeriesSpec{"strain_energy_J", "strain energy", "J", [](const CraneOutputs& o) { return o.strain_energy; }, false},
-    SeriesSpec{"wire_energy_J", "wire energy", "J", [](const CraneOutputs& o) { return o.wire_energy; }, false},
-    SeriesSpec{"spring_energy_J", "spring energy", "J", [](const CraneOutputs& o) { return o.spring_energy; }, false},
-};
+const std::span<const SeriesSpec> series = coupling::output_channels();
 
 }  // namespace
 
-std::span<const SeriesSpec> crane_series() { return series; }
+std::span<const SeriesSpec> crane_series() { return coupling::output_channels(); }
 
 std::size_t series_index(std::string_view column) {
   for (std::size_t i = 0; i < series.size(); ++i) {

@@ -1,7 +1,8 @@
-// The time-series outputs of a crane run, declared once: CSV column name (unit in the name),
-// chart title, how a value is taken from coupling::CraneOutputs and whether the column is the
-// displacement from static equilibrium. The CSV, the JSON statistics, the charts and the reports
-// all iterate this table, so an output added here appears everywhere.
+// The time-series outputs of a crane run: the model's output-channel table
+// (coupling/output_channels.hpp: CSV column name with its unit, chart title, how a value is taken
+// from coupling::CraneOutputs and whether the column is the displacement from static equilibrium).
+// The CSV, the JSON statistics, the charts and the reports all iterate it, so an output added to
+// the table appears everywhere.
 #pragma once
 
 #include <span>
@@ -10,16 +11,11 @@
 
 #include "scene/scene.hpp"
 #include "coupling/crane_equations.hpp"
+#include "coupling/output_channels.hpp"
 
 namespace ffrf::study {
 
-struct SeriesSpec {
-  std::string_view column;  // CSV column, unit in the name
-  std::string_view title;   // human name
-  std::string_view unit;    // for tables and axis labels
-  double (*value)(const coupling::CraneOutputs&);
-  bool about_static;  // the CSV holds value − static value (body motions)
-};
+using SeriesSpec = coupling::OutputChannelSpec;  // value(sample): in the display unit (the CSV's)
 
 // Every column after time_s, in CSV order.
 std::span<const SeriesSpec> crane_series();
