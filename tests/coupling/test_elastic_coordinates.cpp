@@ -11,15 +11,13 @@
 
 #include "modal/modal_coordinates.hpp"
 #include "nodal/nodal_coordinates.hpp"
+#include "../modal/cantilever_test_beam.hpp"
 
 namespace elastic_coordinates_test {
 
 using namespace ffrf;
 
-std::shared_ptr<const fem::BeamModel> cantilever(int elements) {
-  return std::make_shared<const fem::BeamModel>(
-      fem::make_beam_model({10.0, elements, {2.1e11, 0.01, 8.333e-6, 78.5}}, fem::Boundary::clamped_free));
-}
+using test::cantilever;
 
 TEST(ModalCoordinates, FullBasisReproducesNodalInvariantsExactly) {
   const auto beam = cantilever(6);

@@ -9,15 +9,13 @@
 #include "fem/point_shape.hpp"
 #include "modal/modal_coordinates.hpp"
 #include "linalg/dense_solvers.hpp"
+#include "cantilever_test_beam.hpp"
 
 namespace {
 
 using namespace ffrf;
 
-std::shared_ptr<const fem::BeamModel> cantilever(int elements) {
-  return std::make_shared<const fem::BeamModel>(
-      fem::make_beam_model({10.0, elements, {2.1e11, 0.01, 8.333e-6, 78.5}}, fem::Boundary::clamped_free));
-}
+using test::cantilever;
 
 TEST(StaticModes, EqualTheStaticSolutionOfTheirUnitLoads) {
   const auto beam = cantilever(12);
