@@ -59,8 +59,8 @@ void ConstraintCurvature::evaluate(CraneEquations& equations, const Eigen::Ref<c
 
 void consistent_accelerations(CraneEquations& equations, double t, const Eigen::Ref<const Eigen::VectorXd>& q,
                               const Eigen::Ref<const Eigen::VectorXd>& v, Eigen::Ref<Eigen::VectorXd> v_dot,
-                              Eigen::Ref<Eigen::Vector3d> lambda) {
-  constexpr int constraints = CraneEquations::constraint_count;
+                              Eigen::Ref<Eigen::VectorXd> lambda) {
+  const int constraints = equations.constraint_count();
   const int n = equations.full_size();
   const BandStructure structure = equations.full_structure();
   SecondOrderJacobian blocks(structure);
@@ -77,26 +77,26 @@ void consistent_accelerations(CraneEquations& equations, double t, const Eigen::
   }
   Eigen::VectorXd forces(n), solution(n + constraints);
   equations.full_forces(t, q, v, forces);
-  Eigen::Vector3d gamma;
+  ConstraintVector gamma(constraints);
   equations.constraint_rate_terms(t, q, v, gamma);
   augmented.pack(forces, gamma, solution);
   if (!augmented.factorize()) throw MassMatrixError(0.0);
   augmented.solve(solution);
-  Eigen::Vector3d multipliers;
+  ConstraintVector multipliers(constraints);
   augmented.unpack(solution, v_dot, multipliers);
   lambda = multipliers;
 }
 
 void multipliers_from_accelerations(CraneEquations& equations, double t, const Eigen::Ref<const Eigen::VectorXd>& q,
                                     const Eigen::Ref<const Eigen::VectorXd>& v, const Eigen::Ref<const Eigen::VectorXd>& v_dot,
-                                    Eigen::Vector3d& lambda) {
+                                    Eigen::Ref<Eigen::VectorXd> lambda) {
   const int n = equations.full_size();
   Eigen::VectorXd forces(n), inertia(n);
   Eigen::MatrixXd cq;
   equations.full_forces(t, q, v, forces);
   equations.full_mass_times(q, v_dot, inertia);
   equations.constraint_jacobian(q, cq);
-  const Eigen::Matrix3d normal = cq * cq.transpose();
+  const ConstraintMatrix normal = cq * cq.transpose();
   lambda = normal.ldlt().solve(cq * (forces - inertia));
 }
 

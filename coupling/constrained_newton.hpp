@@ -51,15 +51,15 @@ class ConstrainedNewtonMatrix {
 };
 
 // C_q at q and its first derivatives over the border coordinates: slope(j) = ∂C_q/∂q_j for j < b
-// (3 × b: C_q's border columns only). Then ∂(C_qᵀ w)/∂q has the border block Σ_k w_k slope(j)(k, ·)ᵀ
+// (m × b: C_q's border columns only). Then ∂(C_qᵀ w)/∂q has the border block Σ_k w_k slope(j)(k, ·)ᵀ
 // in column j and ∂(C_q v)/∂q the column slope(j) v_border.
 struct ConstraintCurvature {
   int border = 0;
-  Eigen::MatrixXd jacobian;                       // C_q (3 × nq)
-  std::vector<Eigen::Matrix<double, 3, Eigen::Dynamic>> slope;  // b of them, 3 × b
+  Eigen::MatrixXd jacobian;           // C_q (m × nq)
+  std::vector<Eigen::MatrixXd> slope;  // b of them, m × b
   void evaluate(CraneEquations& equations, const Eigen::Ref<const Eigen::VectorXd>& q, const Eigen::VectorXd& scale);
   // (∂(C_qᵀ w)/∂q)(i, j) for border i, j.
-  double transpose_product(const Eigen::Vector3d& w, int i, int j) const { return slope[static_cast<std::size_t>(j)].col(i).dot(w); }
+  double transpose_product(const ConstraintVector& w, int i, int j) const { return slope[static_cast<std::size_t>(j)].col(i).dot(w); }
   // (∂(C_q v)/∂q)(k, j) for border j.
   double velocity_product(const Eigen::Ref<const Eigen::VectorXd>& v, int k, int j) const {
     return slope[static_cast<std::size_t>(j)].row(k).dot(v.head(border));
@@ -71,11 +71,11 @@ struct ConstraintCurvature {
 // Throws MassMatrixError when the augmented matrix is singular.
 void consistent_accelerations(CraneEquations& equations, double t, const Eigen::Ref<const Eigen::VectorXd>& q,
                               const Eigen::Ref<const Eigen::VectorXd>& v, Eigen::Ref<Eigen::VectorXd> v_dot,
-                              Eigen::Ref<Eigen::Vector3d> lambda);
+                              Eigen::Ref<Eigen::VectorXd> lambda);
 
 // λ at (t, q, v) with v̇ known (an integrator's interpolant): least squares on C_qᵀλ = Q − M v̇.
 void multipliers_from_accelerations(CraneEquations& equations, double t, const Eigen::Ref<const Eigen::VectorXd>& q,
                                     const Eigen::Ref<const Eigen::VectorXd>& v, const Eigen::Ref<const Eigen::VectorXd>& v_dot,
-                                    Eigen::Vector3d& lambda);
+                                    Eigen::Ref<Eigen::VectorXd> lambda);
 
 }  // namespace ffrf::coupling

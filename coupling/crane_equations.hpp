@@ -60,6 +60,12 @@ struct HullLoadCounts {
   long exact = 0;  // with a record: the fallbacks
 };
 
+// Constraint-sized vectors and matrices: a run-time constraint count (3 for the clamp at B) in
+// storage fixed at max_constraints, so the solvers' hot paths allocate nothing whatever the joint.
+inline constexpr int max_constraints = 6;
+using ConstraintVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, max_constraints, 1>;
+using ConstraintMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, max_constraints, max_constraints>;
+
 class CraneEquations {
  public:
   using ConstRef = Eigen::Ref<const Eigen::VectorXd>;
@@ -80,7 +86,7 @@ class CraneEquations {
 
   // --- full coordinates with the clamp as constraints (DAE) ---
   virtual int full_size() const = 0;
-  static constexpr int constraint_count = 3;
+  virtual int constraint_count() const = 0;  // m ≤ max_constraints
   virtual void full_from_minimal(double t, ConstRef z, ConstRef z_dot, Ref q, Ref v) const = 0;
   virtual void full_mass_times(ConstRef q, ConstRef a, Ref out) = 0;       // M(q) a
   virtual void full_forces(double t, ConstRef q, ConstRef v, Ref out) = 0;  // Q(q, v, t)

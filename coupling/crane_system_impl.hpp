@@ -41,6 +41,7 @@ class CraneSystem final : public CraneEquations {
   using CraneEquations::full_mass_matrix;
   void full_mass_matrix(ConstRef q, Eigen::MatrixXd& mass) override;
   CraneOutputs full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) override;
+  int constraint_count() const override { return 3; }  // the clamp at B: x, y and angle
   double wire_stretch_minimal(double t, ConstRef z) override;
   double wire_stretch_full(ConstRef q) override;
   int cargo_offset() const override { return has_cargo() ? cargo_at_ : -1; }

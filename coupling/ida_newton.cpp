@@ -7,8 +7,6 @@ namespace ffrf::coupling::sundials {
 
 namespace {
 
-constexpr int constraints = CraneEquations::constraint_count;
-
 Eigen::Map<Eigen::VectorXd> view(N_Vector v) {
   return {N_VGetArrayPointer(v), static_cast<Eigen::Index>(N_VGetLength(v))};
 }
@@ -18,8 +16,8 @@ Eigen::Map<Eigen::VectorXd> view(N_Vector v) {
 IndexTwoNewton::IndexTwoNewton(CraneEquations& equations, SUNContext context, Eigen::VectorXd coordinate_scale)
     : equations_(equations), nq_(equations.full_size()), border_(equations.full_structure().border),
       scale_(std::move(coordinate_scale)), blocks_(equations.full_structure()),
-      reduced_(equations.full_structure(), 2 * constraints), velocity_(nq_), column_(nq_),
-      reduced_rhs_(nq_ + 2 * constraints), product_(nq_), delta_q_(nq_), mu_curvature_(border_, border_),
+      reduced_(equations.full_structure(), 2 * equations.constraint_count()), velocity_(nq_), column_(nq_),
+      reduced_rhs_(nq_ + 2 * equations.constraint_count()), product_(nq_), delta_q_(nq_), mu_curvature_(border_, border_),
       linear_(context, this, setup, solve) {}
 
 int IndexTwoNewton::jacobian(double t, double cj, N_Vector y, N_Vector yp, N_Vector, SUNMatrix J, void*, N_Vector,
@@ -33,8 +31,9 @@ int IndexTwoNewton::jacobian(double t, double cj, N_Vector y, N_Vector yp, N_Vec
   self->curvature_.evaluate(self->equations_, state.head(n), self->scale_);
   self->cj_ = cj;
   self->velocity_ = state.segment(n, n);
-  self->lambda_ = state.segment<constraints>(2 * n);
-  self->mu_ = state.segment<constraints>(2 * n + constraints);
+  const int constraints = self->equations_.constraint_count();
+  self->lambda_ = state.segment(2 * n, constraints);
+  self->mu_ = state.segment(2 * n + constraints, constraints);
   return 0;
 }
 
@@ -44,7 +43,7 @@ void IndexTwoNewton::weighted_column(int i) {
 
 int IndexTwoNewton::setup(SUNLinearSolver solver, SUNMatrix) {
   auto* self = static_cast<IndexTwoNewton*>(solver->content);
-  const int b = self->border_, n = self->nq_;
+  const int b = self->border_, n = self->nq_, constraints = self->equations_.constraint_count();
   const double cj = self->cj_;
   ConstrainedNewtonMatrix& m = self->reduced_;
   const ConstraintCurvature& curvature = self->curvature_;
@@ -65,7 +64,7 @@ int IndexTwoNewton::setup(SUNLinearSolver solver, SUNMatrix) {
       for (int k = 0; k < constraints; ++k) m.at(m.reduced(r), m.reduced_extra(constraints + k)) += w * cq(k, i);
     }
   }
-  const Eigen::Matrix3d cq_cqt = cq.leftCols(b) * cq.leftCols(b).transpose();
+  const ConstraintMatrix cq_cqt = cq.leftCols(b) * cq.leftCols(b).transpose();
   for (int k = 0; k < constraints; ++k) {
     for (int j = 0; j < b; ++j) {
       m.at(m.reduced(j), m.reduced_extra(k)) = cq(k, j);  // C_qᵀ
@@ -81,29 +80,29 @@ int IndexTwoNewton::setup(SUNLinearSolver solver, SUNMatrix) {
 
 int IndexTwoNewton::solve(SUNLinearSolver solver, SUNMatrix, N_Vector x, N_Vector b_vector, double) {
   auto* self = static_cast<IndexTwoNewton*>(solver->content);
-  const int n = self->nq_, b = self->border_;
+  const int n = self->nq_, b = self->border_, constraints = self->equations_.constraint_count();
   const auto rhs = view(b_vector);
   auto out = view(x);
   const auto r1 = rhs.head(n), r2 = rhs.segment(n, n);
-  const auto r3 = rhs.segment<constraints>(2 * n), r4 = rhs.segment<constraints>(2 * n + constraints);
+  const auto r3 = rhs.segment(2 * n, constraints), r4 = rhs.segment(2 * n + constraints, constraints);
   const Eigen::MatrixXd& cq = self->curvature_.jacobian;
   // q rows: r₂ + (c_j M + D) r₁; λ rows: r₃; μ rows: r₄ + C_q r₁.
   self->blocks_.mass.multiply(r1, self->product_);
   self->delta_q_ = r2 + self->cj_ * self->product_;
   self->blocks_.damping.multiply(r1, self->product_);
   self->delta_q_ += self->product_;
-  Eigen::Matrix<double, 2 * constraints, 1> extra;
-  extra.head<constraints>() = r3;
-  extra.tail<constraints>() = r4 + cq.leftCols(b) * r1.head(b);
+  Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 2 * max_constraints, 1> extra(2 * constraints);
+  extra.head(constraints) = r3;
+  extra.tail(constraints) = r4 + cq.leftCols(b) * r1.head(b);
   self->reduced_.pack(self->delta_q_, extra, self->reduced_rhs_);
   self->reduced_.solve(self->reduced_rhs_);
   self->reduced_.unpack(self->reduced_rhs_, self->delta_q_, extra);
   auto dq = out.head(n), dv = out.segment(n, n);
   dq = self->delta_q_;
   dv = self->cj_ * self->delta_q_ - r1;
-  dv.head(b) += self->mu_curvature_ * self->delta_q_.head(b) + cq.leftCols(b).transpose() * extra.tail<constraints>();
-  out.segment<constraints>(2 * n) = extra.head<constraints>();
-  out.segment<constraints>(2 * n + constraints) = extra.tail<constraints>();
+  dv.head(b) += self->mu_curvature_ * self->delta_q_.head(b) + cq.leftCols(b).transpose() * extra.tail(constraints);
+  out.segment(2 * n, constraints) = extra.head(constraints);
+  out.segment(2 * n + constraints, constraints) = extra.tail(constraints);
   return out.allFinite() ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
 }
 

@@ -53,7 +53,7 @@ class IndexTwoNewton {
   ConstraintCurvature curvature_;
   ConstrainedNewtonMatrix reduced_;
   double cj_ = 0.0;
-  Eigen::Vector3d lambda_ = Eigen::Vector3d::Zero(), mu_ = Eigen::Vector3d::Zero();
+  ConstraintVector lambda_, mu_;  // λ, μ of the last Jacobian (m each)
   Eigen::VectorXd velocity_, column_, reduced_rhs_, product_, delta_q_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic> mu_curvature_;  // H_μ over the border (b × b)
   CustomLinearSolver linear_;  // last: built on the complete object

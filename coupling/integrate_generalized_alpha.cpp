@@ -21,7 +21,6 @@
 namespace ffrf::coupling {
 namespace {
 
-constexpr int constraints = CraneEquations::constraint_count;
 constexpr int kept_matrix_iterations = 4;   // refresh the iteration matrix beyond this
 constexpr int fresh_matrix_iterations = 12;  // give up beyond this with a fresh matrix
 constexpr double newton_tolerance = 0.1;  // WRMS norm of the correction in units of rtol|x| + atol·scale
@@ -30,7 +29,8 @@ constexpr const char* solver_name = "generalized-α";
 class GeneralizedAlpha {
  public:
   GeneralizedAlpha(CraneEquations& equations, const IntegratorSettings& settings, double h, RunResult& result)
-      : eq_(equations), n_(equations.full_size()), h_(h), settings_(settings), stats_(result.stats) {
+      : eq_(equations), n_(equations.full_size()), constraints_(equations.constraint_count()), h_(h), settings_(settings),
+        stats_(result.stats) {
     const double rho = settings.spectral_radius;
     alpha_m_ = (2.0 * rho - 1.0) / (rho + 1.0);
     alpha_f_ = rho / (rho + 1.0);
@@ -38,17 +38,18 @@ class GeneralizedAlpha {
     beta_ = 0.25 * (gamma_ + 0.5) * (gamma_ + 0.5);
     beta_prime_ = h * h * beta_ * (1.0 - alpha_f_) / (1.0 - alpha_m_);  // ∂q_{n+1}/∂q̈_{n+1}
     gamma_prime_ = h * gamma_ * (1.0 - alpha_f_) / (1.0 - alpha_m_);    // ∂v_{n+1}/∂q̈_{n+1}
-    const int m = n_ + constraints;
+    const int m = n_ + constraints_;
     for (Eigen::VectorXd* x : {&q_, &v_, &a_, &acc_, &q1_, &v1_, &a1_, &x_acc_, &mass_times_, &forces_, &scale_,
                                &weight_q_, &weight_v_, &acc_step_}) {
       x->setZero(n_);
     }
     r_.setZero(m);
     delta_.setZero(m);
-    matrix_ = ConstrainedNewtonMatrix(equations.full_structure(), constraints);
+    matrix_ = ConstrainedNewtonMatrix(equations.full_structure(), constraints_);
     blocks_ = SecondOrderJacobian(equations.full_structure());
-    jacobian_.setZero(constraints, n_);
-    lambda_.setZero();
+    jacobian_.setZero(constraints_, n_);
+    lambda_.setZero(constraints_);
+    x_lambda_.setZero(constraints_);
   }
 
   // Consistent start at rest: q̈0, λ0 from [M C_qᵀ; C_q 0][q̈; λ] = [Q; −(C_q v)_q v], a_0 = q̈0.
@@ -81,9 +82,9 @@ class GeneralizedAlpha {
         since_refresh = 0;
         previous = std::numeric_limits<double>::infinity();
       }
-      matrix_.pack(r_.head(n_), r_.tail<constraints>(), delta_);
+      matrix_.pack(r_.head(n_), r_.tail(constraints_), delta_);
       matrix_.solve(delta_);
-      Eigen::Vector3d lambda_step;
+      ConstraintVector lambda_step(constraints_);
       matrix_.unpack(delta_, acc_step_, lambda_step);
       x_acc_ -= acc_step_;
       x_lambda_ -= lambda_step;
@@ -129,16 +130,16 @@ class GeneralizedAlpha {
   }
 
   // [M q̈ − Q + C_qᵀλ ; C(q)/(βh²)] at (q_{n+1}, v_{n+1}) from the trial q̈_{n+1}.
-  void residual(double t1, const Eigen::VectorXd& acc1, const Eigen::Vector3d& lambda, Eigen::VectorXd& out) {
+  void residual(double t1, const Eigen::VectorXd& acc1, const ConstraintVector& lambda, Eigen::VectorXd& out) {
     kinematics(acc1);
     eq_.full_mass_times(q1_, acc1, mass_times_);
     eq_.full_forces(t1, q1_, v1_, forces_);
     eq_.constraint_jacobian(q1_, jacobian_);
     out.head(n_) = mass_times_ - forces_;
     out.head(n_).noalias() += jacobian_.transpose() * lambda;
-    Eigen::Vector3d c;
+    ConstraintVector c(constraints_);
     eq_.constraint(t1, q1_, c);
-    out.tail<constraints>() = c / (beta_ * h_ * h_);
+    out.tail(constraints_) = c / (beta_ * h_ * h_);
     ++stats_.function_evaluations;
   }
 
@@ -152,7 +153,7 @@ class GeneralizedAlpha {
     const double constraint_row = beta_prime_ / (beta_ * h_ * h_);
     for (int j = 0; j < b; ++j) {
       for (int i = 0; i < b; ++i) matrix_.at(matrix_.reduced(i), matrix_.reduced(j)) += beta_prime_ * curvature_.transpose_product(x_lambda_, i, j);
-      for (int k = 0; k < constraints; ++k) {
+      for (int k = 0; k < constraints_; ++k) {
         matrix_.at(matrix_.reduced(j), matrix_.reduced_extra(k)) = curvature_.jacobian(k, j);
         matrix_.at(matrix_.reduced_extra(k), matrix_.reduced(j)) = constraint_row * curvature_.jacobian(k, j);
       }
@@ -180,12 +181,13 @@ class GeneralizedAlpha {
 
   CraneEquations& eq_;
   int n_;
+  int constraints_;  // m
   double h_;
   const IntegratorSettings& settings_;
   SolverStats& stats_;
   double alpha_m_ = 0, alpha_f_ = 0, gamma_ = 0, beta_ = 0, beta_prime_ = 0, gamma_prime_ = 0;
   Eigen::VectorXd q_, v_, a_, acc_;  // state at t_n (acc_ = q̈_n, a_ the auxiliary acceleration)
-  Eigen::Vector3d lambda_, x_lambda_;
+  ConstraintVector lambda_, x_lambda_;
   Eigen::VectorXd q1_, v1_, a1_, x_acc_;  // trial values at t_{n+1}
   Eigen::VectorXd mass_times_, forces_, scale_, weight_q_, weight_v_, r_, delta_, acc_step_;
   Eigen::MatrixXd jacobian_;

@@ -27,7 +27,6 @@
 namespace ffrf::coupling {
 namespace {
 
-constexpr int constraints = CraneEquations::constraint_count;
 constexpr int max_projection_iterations = 10;
 
 // Workspace of one run (allocated once; the mass matrix itself comes by value from the model).
@@ -38,19 +37,21 @@ struct Index1Data {
   double beta;     // Baumgarte position gain [1/s]
   void* cvode = nullptr;
   N_Vector error_weights = nullptr;  // CVODE's error weights, read by the projection
-  Eigen::MatrixXd jacobian;        // C_q (3 × nq)
+  Eigen::MatrixXd jacobian;        // C_q (m × nq)
   Eigen::MatrixXd mass_matrix;     // M(q) workspace
   Eigen::LLT<Eigen::MatrixXd> mass;  // M = LLᵀ
-  Eigen::MatrixXd mass_inverse_jacobian_t;  // Y = M⁻¹C_qᵀ (nq × 3)
-  Eigen::Matrix3d schur;           // S = C_q Y
+  Eigen::MatrixXd mass_inverse_jacobian_t;  // Y = M⁻¹C_qᵀ (nq × m)
+  ConstraintMatrix schur;          // S = C_q Y
   Eigen::VectorXd forces, free_acceleration, weights, work;
-  Eigen::Vector3d c, c_t, c_dot, gamma, lambda;
+  ConstraintVector c, c_t, c_dot, gamma, lambda;
   long jacobian_rhs_evaluations = 0;
   sundials::CallbackGuard* guard;  // every callback runs inside it
 
   Index1Data(CraneEquations& e, int n, double a, double b, sundials::CallbackGuard& g)
-      : equations(&e), size(n), alpha(a), beta(b), jacobian(constraints, n), mass_matrix(n, n), mass(n), mass_inverse_jacobian_t(n, constraints),
-        forces(n), free_acceleration(n), weights(2 * n), work(n), guard(&g) {}
+      : equations(&e), size(n), alpha(a), beta(b), jacobian(e.constraint_count(), n), mass_matrix(n, n), mass(n),
+        mass_inverse_jacobian_t(n, e.constraint_count()), schur(e.constraint_count(), e.constraint_count()), forces(n),
+        free_acceleration(n), weights(2 * n), work(n), c(e.constraint_count()), c_t(e.constraint_count()),
+        c_dot(e.constraint_count()), gamma(e.constraint_count()), lambda(e.constraint_count()), guard(&g) {}
 };
 
 // C, C_q, Ċ = C_q v and γ at (q, v): the one place the constraint is evaluated for the dynamics.
@@ -80,7 +81,7 @@ bool accelerations(Index1Data& d, double t, CraneEquations::ConstRef q, CraneEqu
   if (!factorize(d, q)) return false;
   d.equations->full_forces(t, q, v, d.forces);
   d.free_acceleration = d.mass.solve(d.forces);
-  Eigen::Vector3d rhs;
+  ConstraintVector rhs(d.c.size());
   rhs.noalias() = d.jacobian * d.free_acceleration;
   rhs -= d.gamma - 2.0 * d.alpha * d.c_dot - d.beta * d.beta * d.c;
   d.lambda = d.schur.partialPivLu().solve(rhs);
@@ -115,7 +116,7 @@ int index1_jacobian(sunrealtype t, N_Vector y, N_Vector f_y, SUNMatrix jacobian,
 
 // x minus its M-orthogonal component normal to C_q x = 0: x ← x − Y S⁻¹ C_q x.
 void remove_normal_component(Index1Data& d, CraneEquations::Ref x) {
-  Eigen::Vector3d normal;
+  ConstraintVector normal(d.c.size());
   normal.noalias() = d.jacobian * x;
   d.work.noalias() = d.mass_inverse_jacobian_t * d.schur.partialPivLu().solve(normal);
   x -= d.work;

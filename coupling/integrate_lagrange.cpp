@@ -23,14 +23,14 @@
 namespace ffrf::coupling {
 namespace {
 
-constexpr int constraints = CraneEquations::constraint_count;
 const sundials::SolverCalls ida_calls{IDAGetNumSteps,  IDASetMaxNumSteps,    IDAGetCurrentStep,
                                      IDAGetRootInfo,  IDAGetReturnFlagName, {IDA_TOO_MUCH_WORK, IDA_ERR_FAIL, IDA_CONV_FAIL}};
 
 struct DaeData {
   CraneEquations* equations;
   int size;                  // nq
-  Eigen::MatrixXd jacobian;  // C_q workspace (3 × nq)
+  int constraints;           // m
+  Eigen::MatrixXd jacobian;  // C_q workspace (m × nq)
   Eigen::VectorXd forces, mass_times, c, c_t;
   sundials::CallbackGuard* guard;  // every callback runs inside it
 };
@@ -39,7 +39,7 @@ int dae_residual(sunrealtype t, N_Vector y, N_Vector y_dot, N_Vector r, void* us
   auto* d = static_cast<DaeData*>(user);
   return (*d->guard)([&] {
     if (!sundials::Vector::view(y).allFinite()) return 1;
-    const int n = d->size;
+    const int n = d->size, constraints = d->constraints;
     const auto s = sundials::Vector::view(y);
     const auto s_dot = sundials::Vector::view(y_dot);
     auto res = sundials::Vector::view(r);
@@ -77,11 +77,12 @@ int wire_root(sunrealtype, N_Vector y, N_Vector, sunrealtype* g, void* user) {
 RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z0, const IntegratorSettings& settings) {
   const auto start = std::chrono::steady_clock::now();
   const int n = equations.full_size();
+  const int constraints = equations.constraint_count();
   const int total = 2 * n + 2 * constraints;
   sundials::Context context;
   sundials::Vector y(total, context.ctx), y_dot(total, context.ctx), tolerance(total, context.ctx), id(total, context.ctx);
   sundials::CallbackGuard guard("IDA", settings.work);
-  DaeData data{&equations, n, Eigen::MatrixXd(constraints, n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(constraints), Eigen::VectorXd(constraints), &guard};
+  DaeData data{&equations, n, constraints, Eigen::MatrixXd(constraints, n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(constraints), Eigen::VectorXd(constraints), &guard};
 
   // Consistent initial values at rest.
   auto s = y.map();
@@ -89,7 +90,7 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
   s.setZero();
   s_dot.setZero();
   equations.full_from_minimal(0.0, z0, Eigen::VectorXd::Zero(z0.size()), s.head(n), s.segment(n, n));
-  consistent_accelerations(equations, 0.0, s.head(n), s.segment(n, n), s_dot.segment(n, n), s.segment<constraints>(2 * n));
+  consistent_accelerations(equations, 0.0, s.head(n), s.segment(n, n), s_dot.segment(n, n), s.segment(2 * n, constraints));
   s_dot.head(n) = s.segment(n, n);
 
   // Tolerances and the differential/algebraic split.
@@ -127,7 +128,7 @@ RunResult integrate_lagrange(CraneEquations& equations, const Eigen::VectorXd& z
 
   RunResult result;
   DivergenceWatch watch(settings.monitor, "IDA");
-  Eigen::Vector3d lambda = s.segment<constraints>(2 * n);
+  ConstraintVector lambda = s.segment(2 * n, constraints);
   sundials::Vector derivative(total, context.ctx);
   const auto record = [&](double t) {
     const auto state = y.map();

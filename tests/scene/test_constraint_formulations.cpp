@@ -139,22 +139,32 @@ TEST_F(ConstraintFormulations, AllFormulationsAgreeWithMinimalCoordinatesOnThePh
   }
 }
 
-// The drift compared is its RMS over the run, not its largest sample: the Baumgarte-damped residual
-// is the response to sporadic integration-error kicks, and its maximum over one run scatters (on
-// ddbb7c4 the max-ratio was 3.4 to 16.4 for output intervals of 0.08 to 0.12 s, the step sequences
-// differing only through CVODE's first step), while the RMS level follows the feedback gain.
+// The drift compared is its RMS over a run, not its largest sample, and over an ensemble of runs:
+// the Baumgarte-damped residual is the response to sporadic integration-error kicks, so one run's
+// level depends on its step sequence. The output interval changes only the step sequence (CVODE
+// stops at each output time); over 0.06–0.13 s a single run's RMS ratio scattered from 7.4 to 29
+// (and from 11 to 110 with the constraint arrays of fixed size 3 instead of run-time size: round-off
+// alone moves it), while the geometric mean over the eight intervals was 19 and 28. The ensemble's
+// geometric-mean RMS follows the feedback gain.
 TEST(ConstraintFormulationsBaumgarte, DriftFallsAsTheStabilizationFrequencyRises) {
   const ReferenceCrane crane;
   const Eigen::VectorXd z0 = crane.equilibrium();
   std::vector<double> drift;
   for (double frequency : {0.3, 3.0}) {
-    coupling::IntegratorSettings settings = drift_settings();
-    settings.baumgarte_frequency = frequency;
-    const auto run = coupling::compare_constraint_drift(crane.factory(), z0, settings, {Integrator::baumgarte})[0];
-    double squares = 0.0;
-    for (const double c : run.residual) squares += c * c;
-    drift.push_back(std::sqrt(squares / static_cast<double>(run.residual.size())));
-    std::printf("baumgarte omega_b = %g rad/s: RMS |C| %.3e m (max %.3e m)\n", frequency, drift.back(), run.max_residual);
+    double log_sum = 0.0;
+    int runs = 0;
+    for (double interval : {0.06, 0.07, 0.08, 0.09, 0.1, 0.11, 0.12, 0.13}) {
+      coupling::IntegratorSettings settings = drift_settings();
+      settings.output_interval = interval;
+      settings.baumgarte_frequency = frequency;
+      const auto run = coupling::compare_constraint_drift(crane.factory(), z0, settings, {Integrator::baumgarte})[0];
+      double squares = 0.0;
+      for (const double c : run.residual) squares += c * c;
+      log_sum += 0.5 * std::log(squares / static_cast<double>(run.residual.size()));
+      ++runs;
+    }
+    drift.push_back(std::exp(log_sum / runs));
+    std::printf("baumgarte omega_b = %g rad/s: RMS |C| %.3e m (geometric mean of %d runs)\n", frequency, drift.back(), runs);
   }
   EXPECT_LT(drift[1], 0.1 * drift[0]) << "ten times the frequency: at least ten times less drift";
 }

@@ -135,6 +135,7 @@ class ThrowingEquations final : public coupling::CraneEquations {
   coupling::CraneOutputs full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) override {
     return inner_.full_outputs(t, q, v, lambda);
   }
+  int constraint_count() const override { return inner_.constraint_count(); }
   double wire_stretch_minimal(double t, ConstRef z) override { return inner_.wire_stretch_minimal(t, z); }
   double wire_stretch_full(ConstRef q) override { return inner_.wire_stretch_full(q); }
   int cargo_offset() const override { return inner_.cargo_offset(); }
