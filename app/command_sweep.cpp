@@ -7,7 +7,6 @@
 // input, 3 when the reference fails; a failing configuration is a row, not an error.
 #include <fmt/format.h>
 
-#include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <memory>

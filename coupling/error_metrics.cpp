@@ -2,6 +2,7 @@
 #include "coupling/error_metrics.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -21,11 +22,26 @@ std::string_view channel_name(OutputChannel channel) {
   return "?";
 }
 
+namespace {
+
+// The table's row of each judged output, looked up by name once.
+std::array<const OutputChannelSpec*, all_channels.size()> judged_rows() {
+  std::array<const OutputChannelSpec*, all_channels.size()> rows{};
+  for (const OutputChannel channel : all_channels) {
+    const std::string_view name = channel_name(channel);
+    for (const OutputChannelSpec& spec : output_channels())
+      if (spec.name == name) rows[static_cast<std::size_t>(channel)] = &spec;
+    if (!rows[static_cast<std::size_t>(channel)])
+      throw std::logic_error("judged output " + std::string(name) + " is not in the output-channel table");
+  }
+  return rows;
+}
+
+}  // namespace
+
 const OutputChannelSpec& output_channel(OutputChannel channel) {
-  const std::string_view name = channel_name(channel);
-  for (const OutputChannelSpec& spec : output_channels())
-    if (spec.name == name) return spec;
-  throw std::logic_error("judged output " + std::string(name) + " is not in the output-channel table");
+  static const std::array<const OutputChannelSpec*, all_channels.size()> rows = judged_rows();
+  return *rows[static_cast<std::size_t>(channel)];
 }
 
 std::string_view channel_unit(OutputChannel channel) { return output_channel(channel).si_unit; }

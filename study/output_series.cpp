@@ -14,13 +14,12 @@ namespace {
 
 using coupling::CraneOutputs;
 
-const std::span<const SeriesSpec> series = coupling::output_channels();
-
 }  // namespace
 
 std::span<const SeriesSpec> crane_series() { return coupling::output_channels(); }
 
 std::size_t series_index(std::string_view column) {
+  const std::span<const SeriesSpec> series = crane_series();
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series[i].column == column) return i;
   }
@@ -50,7 +49,7 @@ StatsWindow stats_window(const scene::Scene& scene, const std::vector<double>& t
 std::vector<SeriesStats> series_stats(const std::vector<CraneOutputs>& samples, const CraneOutputs& statics,
                                       const StatsWindow& window) {
   std::vector<SeriesStats> stats;
-  for (const SeriesSpec& spec : series) {
+  for (const SeriesSpec& spec : crane_series()) {
     SeriesStats s;
     s.static_value = series_reference(spec, statics);
     s.min = INFINITY;
