@@ -8,26 +8,26 @@
 
 #include "app/commands.hpp"
 #include "app/option_checks.hpp"
-#include "coupling/integrator_table.hpp"
+#include "solve/integrator_table.hpp"
 #include "study/work_limits.hpp"
 
 namespace ffrf::app {
 
 void add_dynamics_options(CLI::App& sub, DynamicsOptions& options) {
   std::string pairs;
-  for (const coupling::IntegratorEntry& entry : coupling::integrator_table()) {
-    pairs += fmt::format("; {} = {} x {}: {}", entry.name, coupling::to_string(entry.choice.formulation),
-                         coupling::to_string(entry.choice.solver), entry.summary);
+  for (const solve::IntegratorEntry& entry : solve::integrator_table()) {
+    pairs += fmt::format("; {} = {} x {}: {}", entry.name, solve::to_string(entry.choice.formulation),
+                         solve::to_string(entry.choice.solver), entry.summary);
   }
   sub.add_option("--integrator", options.integrator,
-                 "Integrator " + coupling::integrator_choices() + " (default cvode), each a formulation x solver pair" + pairs);
+                 "Integrator " + solve::integrator_choices() + " (default cvode), each a formulation x solver pair" + pairs);
   sub.add_option("--formulation", options.formulation,
-                 "Constraint formulation " + coupling::formulation_choices() +
+                 "Constraint formulation " + solve::formulation_choices() +
                      " (with --solver; instead of --integrator; default minimal): minimal coordinates, or Lagrange "
                      "multipliers at index 3, stabilized index 2, index 1 (drifts), index 1 with Baumgarte feedback or "
                      "with projection");
   sub.add_option("--solver", options.solver,
-                 "Solver " + coupling::solver_choices() + " (with --formulation; default bdf): BDF (CVODE/IDA), explicit "
+                 "Solver " + solve::solver_choices() + " (with --formulation; default bdf): BDF (CVODE/IDA), explicit "
                  "Runge-Kutta (ARKODE), generalized-alpha (fixed step, needs --step)");
   sub.add_option("--max-steps", options.max_steps, "Work limit: steps over the whole run (then 'too much work')")
       ->capture_default_str()
@@ -138,7 +138,7 @@ std::string option_message(const study::SettingError& error) {
   return fmt::format("{} {}: {}", option_name(error.setting()), error.value(), error.problem());
 }
 
-coupling::Integrator integrator_choice(const DynamicsOptions& options) {
+solve::Integrator integrator_choice(const DynamicsOptions& options) {
   if (!options.integrator.empty() && (!options.formulation.empty() || !options.solver.empty())) {
     throw BadOption(fmt::format("--integrator {} names a formulation and a solver: give either --integrator or "
                                 "--formulation/--solver",
@@ -146,44 +146,44 @@ coupling::Integrator integrator_choice(const DynamicsOptions& options) {
   }
   if (options.formulation.empty() && options.solver.empty()) {
     const std::string name = options.integrator.empty() ? "cvode" : options.integrator;
-    const auto kind = coupling::parse_integrator(name);
+    const auto kind = solve::parse_integrator(name);
     if (!kind) {
-      throw BadOption(fmt::format("--integrator {}: unknown integrator; choose one of {}", name, coupling::integrator_choices()));
+      throw BadOption(fmt::format("--integrator {}: unknown integrator; choose one of {}", name, solve::integrator_choices()));
     }
     return *kind;
   }
-  coupling::Integrator choice = coupling::Integrator::cvode;
+  solve::Integrator choice = solve::Integrator::cvode;
   if (!options.formulation.empty()) {
-    const auto formulation = coupling::parse_formulation(options.formulation);
+    const auto formulation = solve::parse_formulation(options.formulation);
     if (!formulation) {
       throw BadOption(fmt::format("--formulation {}: unknown formulation; choose one of {}", options.formulation,
-                                  coupling::formulation_choices()));
+                                  solve::formulation_choices()));
     }
     choice.formulation = *formulation;
   }
   if (!options.solver.empty()) {
-    const auto solver = coupling::parse_solver(options.solver);
+    const auto solver = solve::parse_solver(options.solver);
     if (!solver) {
-      throw BadOption(fmt::format("--solver {}: unknown solver; choose one of {}", options.solver, coupling::solver_choices()));
+      throw BadOption(fmt::format("--solver {}: unknown solver; choose one of {}", options.solver, solve::solver_choices()));
     }
     choice.solver = *solver;
   }
-  if (!coupling::is_valid(choice)) {
+  if (!solve::is_valid(choice)) {
     throw BadOption(fmt::format("--formulation {} --solver {}: not an implemented integrator; valid pairs: {}",
-                                coupling::to_string(choice.formulation), coupling::to_string(choice.solver),
-                                coupling::valid_integrators()));
+                                solve::to_string(choice.formulation), solve::to_string(choice.solver),
+                                solve::valid_integrators()));
   }
   return choice;
 }
 
-coupling::IntegratorSettings integrator_settings(const DynamicsOptions& options, const scene::Scene& scene) {
+multibody::RunSettings integrator_settings(const DynamicsOptions& options, const scene::Scene& scene) {
   study::DynamicsRequest request{integrator_choice(options), options.rtol, options.atol, options.duration, options.step,
                                  options.max_order};
   request.work.max_steps = options.max_steps;
   if (options.max_wall_time) request.work.max_wall_seconds = *options.max_wall_time;
   request.work.min_step = options.min_step;
   try {
-    coupling::IntegratorSettings settings = study::integrator_settings(scene, request);
+    multibody::RunSettings settings = study::integrator_settings(scene, request);
     settings.progress = stderr_is_terminal();
     return settings;
   } catch (const study::SettingError& error) {
@@ -191,25 +191,25 @@ coupling::IntegratorSettings integrator_settings(const DynamicsOptions& options,
   }
 }
 
-std::string option_names(coupling::Adjustment adjustment) {
+std::string option_names(solve::Adjustment adjustment) {
   switch (adjustment) {
-    case coupling::Adjustment::tolerances: return "--rtol/--atol";
-    case coupling::Adjustment::fixed_step: return "--step";
-    case coupling::Adjustment::step_limit: return "--max-steps";
-    case coupling::Adjustment::wall_clock_limit: return "--max-wall-time";
-    case coupling::Adjustment::step_floor: return "--min-step";
-    case coupling::Adjustment::solver: return "--solver";
-    case coupling::Adjustment::formulation: return "--formulation";
-    case coupling::Adjustment::stiffening: return "--stiffening";
-    case coupling::Adjustment::model_size: return "--elements/--modes";
-    case coupling::Adjustment::scene_values: return "the scene file";
+    case solve::Adjustment::tolerances: return "--rtol/--atol";
+    case solve::Adjustment::fixed_step: return "--step";
+    case solve::Adjustment::step_limit: return "--max-steps";
+    case solve::Adjustment::wall_clock_limit: return "--max-wall-time";
+    case solve::Adjustment::step_floor: return "--min-step";
+    case solve::Adjustment::solver: return "--solver";
+    case solve::Adjustment::formulation: return "--formulation";
+    case solve::Adjustment::stiffening: return "--stiffening";
+    case solve::Adjustment::model_size: return "--elements/--modes";
+    case solve::Adjustment::scene_values: return "the scene file";
   }
   return "?";
 }
 
-std::string remedy_options(coupling::FailureKind kind) {
+std::string remedy_options(solve::FailureKind kind) {
   std::string text;
-  for (const coupling::Adjustment adjustment : coupling::adjustments(kind)) {
+  for (const solve::Adjustment adjustment : solve::adjustments(kind)) {
     text += (text.empty() ? "options: " : ", ") + option_names(adjustment);
   }
   return text;
@@ -281,7 +281,7 @@ int scene_error(const std::string& command, const std::string& path, const scene
   return bad_input(command, fmt::format("{}: the scene cannot make {}", path, what));
 }
 
-int solver_failure(const std::string& command, const std::string& what, const coupling::SolverFailure& failure,
+int solver_failure(const std::string& command, const std::string& what, const solve::SolverFailure& failure,
                    const std::string& out) {
   const std::string options = remedy_options(failure.kind());
   fmt::print(stderr, "ffrf {}: solver failure ({}): {}{}\n", command, what, failure.what(),

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "coupling/failure.hpp"
+#include "solve/failure.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_loader.hpp"
@@ -19,14 +19,14 @@
 namespace ffrf::app {
 
 // Integrator options as typed on the command line.
-// The integrator is a formulation × solver pair (coupling/integrator_choice.hpp): --integrator names a
+// The integrator is a formulation × solver pair (solve/integrator_choice.hpp): --integrator names a
 // valid pair (the names before the split: cvode, ida, ...); --formulation and --solver choose the two
 // apart (the one not given from the default cvode = minimal × bdf). The two ways exclude each other.
 struct DynamicsOptions {
   std::string integrator;   // empty: cvode
   std::string formulation;  // empty: from --integrator
   std::string solver;       // empty: from --integrator
-  long max_steps = coupling::WorkLimits{}.max_steps;  // steps over the run
+  long max_steps = solve::WorkLimits{}.max_steps;  // steps over the run
   std::optional<double> max_wall_time;                // [s]
   double min_step = 0.0;                              // step-size floor [s]; 0: none
   double rtol = 1e-6;
@@ -65,7 +65,7 @@ using study::default_boom_choice;
 scene::BoomChoice boom_choice(const ModelOptions& options, scene::BoomChoice base);
 
 // The integrator settings for a scene (progress on a terminal); throws BadOption.
-coupling::IntegratorSettings integrator_settings(const DynamicsOptions& options, const scene::Scene& scene);
+multibody::RunSettings integrator_settings(const DynamicsOptions& options, const scene::Scene& scene);
 // "1%" → 0.01, "0.01" → 0.01 (--tolerance of compare, sweep, recommend); throws BadOption when not a
 // number in (0, 1).
 double parse_tolerance(std::string text);
@@ -87,14 +87,14 @@ int bad_input(const std::string& command, const std::string& message);
 // Every problem of a scene that cannot make the crane, then the error line; returns exit_bad_input.
 int scene_error(const std::string& command, const std::string& path, const scene::SceneError& error, const std::string& what);
 // The options behind a neutral adjustment of a remedy ("--rtol/--atol" for the tolerances).
-std::string option_names(coupling::Adjustment adjustment);
+std::string option_names(solve::Adjustment adjustment);
 // "options: --rtol/--atol, --min-step, ..." for a failure kind's adjustments.
-std::string remedy_options(coupling::FailureKind kind);
+std::string remedy_options(solve::FailureKind kind);
 // The pair the options name; throws BadOption naming the option and the valid choices or pairs.
-coupling::Integrator integrator_choice(const DynamicsOptions& options);
+solve::Integrator integrator_choice(const DynamicsOptions& options);
 // "ffrf CMD: solver failure (WHAT): ... Try: remedy (options: --rtol/--atol, ...)" (and "nothing written
 // to OUT"); returns exit_solver_failure.
-int solver_failure(const std::string& command, const std::string& what, const coupling::SolverFailure& failure,
+int solver_failure(const std::string& command, const std::string& what, const solve::SolverFailure& failure,
                    const std::string& out);
 
 // True when stderr is a terminal (progress lines are printed there only).

@@ -132,8 +132,8 @@ int record(const RecordOptions& options) {
     progress("baseline record", "");
   } catch (const scene::SceneError& error) {
     return scene_error("baseline record", options.scene, error, "this crane");
-  } catch (const coupling::SolverFailure& failure) {
-    return solver_failure("baseline record", std::string(coupling::to_string(failure.kind())), failure, options.out);
+  } catch (const solve::SolverFailure& failure) {
+    return solver_failure("baseline record", std::string(solve::to_string(failure.kind())), failure, options.out);
   }
   try {
     report::write_baseline(options.out, report::baseline_json(file));
@@ -151,7 +151,7 @@ int check(const CheckOptions& options) {
   report::BaselineFile baseline;
   study::BaselineTolerances limits;
   scene::BoomChoice choice;
-  coupling::IntegratorSettings settings;
+  multibody::RunSettings settings;
   std::string scene_hash;
   try {
     baseline = report::read_baseline(options.baseline);
@@ -161,7 +161,7 @@ int check(const CheckOptions& options) {
     const study::BaselineModel& model = baseline.baseline.model;
     choice = boom_choice(options.model, model.choice);
     DynamicsOptions dynamics;
-    dynamics.integrator = options.integrator.empty() ? std::string(coupling::to_string(model.integrator)) : options.integrator;
+    dynamics.integrator = options.integrator.empty() ? std::string(solve::to_string(model.integrator)) : options.integrator;
     dynamics.rtol = integrator_tolerance("--integrator-rtol", options.integrator_rtol).value_or(model.relative_tolerance);
     dynamics.atol = integrator_tolerance("--integrator-atol", options.integrator_atol).value_or(model.absolute_tolerance);
     dynamics.duration = options.duration.value_or(model.duration);
@@ -183,8 +183,8 @@ int check(const CheckOptions& options) {
     progress("baseline check", "");
   } catch (const scene::SceneError& error) {
     return scene_error("baseline check", options.scene, error, "this crane");
-  } catch (const coupling::SolverFailure& failure) {
-    return solver_failure("baseline check", std::string(coupling::to_string(failure.kind())), failure, "");
+  } catch (const solve::SolverFailure& failure) {
+    return solver_failure("baseline check", std::string(solve::to_string(failure.kind())), failure, "");
   }
   const report::BaselineCheckContext context{options.baseline, &baseline, options.scene, scene_hash};
   fmt::print("{}", options.json ? report::baseline_check_json(context, result) : report::baseline_check_text(context, result));
@@ -221,7 +221,7 @@ Command add_baseline_command(CLI::App& parent) {
   chk->add_option("baseline", check_options->baseline, "Baseline file written by `ffrf baseline record`")->required();
   add_model_options(*chk, check_options->model);
   chk->add_option("--integrator", check_options->integrator,
-                  "Integrator " + coupling::integrator_choices() + " (default: the baseline's)");
+                  "Integrator " + solve::integrator_choices() + " (default: the baseline's)");
   chk->add_option("--duration", check_options->duration, "Simulated time [s] (default: the baseline's)");
   chk->add_option("--step", check_options->step, "Fixed step [s] (default: the baseline's)");
   chk->add_option("--max-order", check_options->max_order, "Largest BDF order, 1-5 (default: the baseline's)");

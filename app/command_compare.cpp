@@ -48,7 +48,7 @@ void write_outputs(report::StagedDirectory& out, const report::RunContext& conte
   charts.sources.push_back({report::reference_timeseries_name, report::reference_label(comparison.reference), true, true});
   charts.names = report::crane_chart_names(scene);
   charts.subtitle = fmt::format("{}, {} (rtol {:g})", scene.name.empty() ? context.scene_file : scene.name,
-                                coupling::to_string(context.settings.kind), context.settings.relative_tolerance);
+                                solve::to_string(context.settings.kind), context.settings.relative_tolerance);
   charts.command = "ffrf compare --out";
   charts.window_start = comparison.window_start;
   charts.differences_csv = "differences.csv";
@@ -91,7 +91,7 @@ int run_compare(const CompareOptions& options) {
     });
   } catch (const scene::SceneError& error) {
     return scene_error("compare", options.scene, error, "the " + running + " crane");
-  } catch (const coupling::SolverFailure& failure) {
+  } catch (const solve::SolverFailure& failure) {
     return solver_failure("compare", running, failure, options.out);
   }
   scene->boom.stiffening = comparison.stiffening;  // what every model ran with
@@ -108,7 +108,7 @@ int run_compare(const CompareOptions& options) {
       radiation = study::compare_radiation(*scene, comparison.runs[boom].choice, request.settings, request.tolerance);
     } catch (const scene::SceneError& error) {
       return scene_error("compare", options.scene, error, "the radiation-model crane");
-    } catch (const coupling::SolverFailure& failure) {
+    } catch (const solve::SolverFailure& failure) {
       return solver_failure("compare", running, failure, options.out);
     }
   }

@@ -194,7 +194,7 @@ int run_rao(const RaoOptions& options) {
     progress("rao", "");
   } catch (const scene::SceneError& error) {
     return scene_error("rao", options.scene, error, "the " + running + " crane");
-  } catch (const coupling::SolverFailure& failure) {
+  } catch (const solve::SolverFailure& failure) {
     return solver_failure("rao", running, failure, options.out);
   } catch (const study::SettingError& error) {
     return bad_input(option_message(error));

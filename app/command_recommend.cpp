@@ -35,15 +35,15 @@ struct RecommendOptions {
 };
 
 // "cargo_heave,wire_tension" → the channels; throws BadOption naming an unknown one.
-std::vector<coupling::OutputChannel> parse_outputs(const std::string& text) {
+std::vector<multibody::OutputChannel> parse_outputs(const std::string& text) {
   std::string names;
-  for (const auto channel : coupling::all_channels) names += (names.empty() ? "" : ",") + std::string(coupling::channel_name(channel));
-  std::vector<coupling::OutputChannel> outputs;
+  for (const auto channel : multibody::all_channels) names += (names.empty() ? "" : ",") + std::string(multibody::channel_name(channel));
+  std::vector<multibody::OutputChannel> outputs;
   std::stringstream stream(text);
   for (std::string item; std::getline(stream, item, ',');) {
-    const auto found = std::find_if(coupling::all_channels.begin(), coupling::all_channels.end(),
-                                    [&](coupling::OutputChannel c) { return coupling::channel_name(c) == item; });
-    if (found == coupling::all_channels.end()) {
+    const auto found = std::find_if(multibody::all_channels.begin(), multibody::all_channels.end(),
+                                    [&](multibody::OutputChannel c) { return multibody::channel_name(c) == item; });
+    if (found == multibody::all_channels.end()) {
       throw BadOption(fmt::format("--outputs {}: unknown output '{}'; choose from {}", text, item, names));
     }
     outputs.push_back(*found);
@@ -56,7 +56,7 @@ int run_recommend(const RecommendOptions& options) {
   std::optional<scene::Scene> scene = load_scene(options.scene, "recommend", true);
   if (!scene) return exit_bad_input;
   study::RecommendRequest request;
-  coupling::IntegratorSettings radiation_settings;
+  multibody::RunSettings radiation_settings;
   try {
     apply_radiation_option(*scene, options.radiation);
     request.tolerance = parse_tolerance(options.tolerance);
@@ -80,8 +80,8 @@ int run_recommend(const RecommendOptions& options) {
     progress("recommend", "");
   } catch (const scene::SceneError& error) {
     return scene_error("recommend", options.scene, error, "the reference crane");
-  } catch (const coupling::SolverFailure& failure) {
-    return solver_failure("recommend", "reference, " + std::string(coupling::to_string(failure.kind())), failure, options.out);
+  } catch (const solve::SolverFailure& failure) {
+    return solver_failure("recommend", "reference, " + std::string(solve::to_string(failure.kind())), failure, options.out);
   }
   // A scene with BEM coefficients: the cheapest radiation model within the tolerance, verified against
   // the Cummins convolution on the chosen boom model.
@@ -93,7 +93,7 @@ int run_recommend(const RecommendOptions& options) {
       progress("recommend", "");
     } catch (const scene::SceneError& error) {
       return scene_error("recommend", options.scene, error, "the radiation-model crane");
-    } catch (const coupling::SolverFailure& failure) {
+    } catch (const solve::SolverFailure& failure) {
       return solver_failure("recommend", "radiation models", failure, options.out);
     }
   }

@@ -43,7 +43,7 @@ void write_outputs(report::StagedDirectory& out, const report::RunContext& conte
   charts.sources = {{"timeseries.csv", run.choice.label(), run.choice.kind != scene::BoomKind::rigid, false}};
   charts.names = report::crane_chart_names(*context.scene);
   charts.subtitle = fmt::format("{}, {}, {} (rtol {:g})", context.scene->name.empty() ? context.scene_file : context.scene->name,
-                                run.choice.label(), coupling::to_string(context.settings.kind), context.settings.relative_tolerance);
+                                run.choice.label(), solve::to_string(context.settings.kind), context.settings.relative_tolerance);
   charts.command = "ffrf run --out";
   report::draw_crane_charts(out, charts);
   out.write("summary.json", report::with_charts_json(report::run_json(context, run), out));
@@ -55,7 +55,7 @@ int run_crane(const RunOptions& options) {
   std::optional<scene::Scene> scene = load_scene(options.scene, "run", true);
   if (!scene) return exit_bad_input;
   scene::BoomChoice choice;
-  coupling::IntegratorSettings settings;
+  multibody::RunSettings settings;
   try {
     if (options.spin_rate) {
       if (!scene->hub) throw BadOption(fmt::format("--spin-rate {}: the scene has no [hub] to spin", *options.spin_rate));
@@ -92,9 +92,9 @@ int run_crane(const RunOptions& options) {
     });
   } catch (const scene::SceneError& error) {
     return scene_error("run", options.scene, error, "this crane");
-  } catch (const coupling::SolverFailure& failure) {
+  } catch (const solve::SolverFailure& failure) {
     if (options.json) fmt::print("{}", report::failure_json(context, choice.label(), failure));
-    return solver_failure("run", std::string(coupling::to_string(failure.kind())), failure, options.out);
+    return solver_failure("run", std::string(solve::to_string(failure.kind())), failure, options.out);
   }
   if (out) write_outputs(*out, context, run);
   fmt::print("{}", options.json ? report::run_json(context, run) : report::dynamics_text(run));

@@ -46,9 +46,9 @@ int run_statics(const StaticsOptions& options) {
     result = study::solve_statics(*scene, choice);
   } catch (const scene::SceneError& error) {
     return scene_error("statics", options.scene, error, "this crane");
-  } catch (const coupling::SolverFailure& failure) {
+  } catch (const solve::SolverFailure& failure) {
     if (options.json) fmt::print("{}", report::statics_failure_json(options.scene, *scene, choice.label(), failure));
-    return solver_failure("statics", std::string(coupling::to_string(failure.kind())), failure, options.out);
+    return solver_failure("statics", std::string(solve::to_string(failure.kind())), failure, options.out);
   }
   const std::string json = report::statics_json(options.scene, *scene, result);
   if (out) {

@@ -150,7 +150,7 @@ int run_sweep(const SweepOptions& options) {
                                     [](const study::SweepResult& r) { return report::sweep_csv_line(r); });
   } catch (const scene::SceneError& error) {
     return scene_error("sweep", options.scene, error, "the reference crane");
-  } catch (const coupling::SolverFailure& failure) {
+  } catch (const solve::SolverFailure& failure) {
     return solver_failure("sweep", "reference", failure, options.out);
   } catch (const distributed::JournalError& error) {
     return bad_input("sweep", error.what());
@@ -183,7 +183,7 @@ int run_sweep(const SweepOptions& options) {
       fmt::print("{}", study::radiation_comparison_text(radiation));
     } catch (const scene::SceneError& error) {
       return scene_error("sweep", options.scene, error, "the radiation-model crane");
-    } catch (const coupling::SolverFailure& failure) {
+    } catch (const solve::SolverFailure& failure) {
       return solver_failure("sweep", "radiation models", failure, options.out);
     }
   }

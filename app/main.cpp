@@ -16,7 +16,7 @@
 #include "app/commands.hpp"
 #include "app/stop_signals.hpp"
 #include "app/version.hpp"
-#include "coupling/stop_request.hpp"
+#include "solve/stop_request.hpp"
 #include "report/output_directory.hpp"
 
 namespace {
@@ -33,12 +33,12 @@ int run_command(const Command& command) {
   const std::string name = command.subcommand->get_name();
   try {
     const int code = command.run();
-    return ffrf::coupling::stop_requested() ? interrupted(name, ffrf::coupling::stop_signal()) : code;
-  } catch (const ffrf::coupling::Interrupted& stop) {
+    return ffrf::solve::stop_requested() ? interrupted(name, ffrf::solve::stop_signal()) : code;
+  } catch (const ffrf::solve::Interrupted& stop) {
     return interrupted(name, stop.signal);
   } catch (const std::exception& error) {
     // Whatever failed after a stop request (a gnuplot killed by the same Ctrl-C) is the interrupt.
-    if (ffrf::coupling::stop_requested()) return interrupted(name, ffrf::coupling::stop_signal());
+    if (ffrf::solve::stop_requested()) return interrupted(name, ffrf::solve::stop_signal());
     if (const auto* output = dynamic_cast<const ffrf::report::OutputError*>(&error)) return bad_input(name, output->what());
     if (const auto* setting = dynamic_cast<const ffrf::study::SettingError*>(&error)) {
       return bad_input(name, option_message(*setting));

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <thread>
 
-#include "coupling/stop_request.hpp"
+#include "solve/stop_request.hpp"
 #include "report/output_directory.hpp"
 
 namespace ffrf::app {
@@ -20,7 +20,7 @@ int wake_pipe[2] = {-1, -1};
 
 extern "C" void on_stop_signal(int signal) {
   const int saved = errno;
-  coupling::request_stop(signal);
+  solve::request_stop(signal);
   const char byte = static_cast<char>(signal);
   [[maybe_unused]] const ssize_t ignored = ::write(wake_pipe[1], &byte, 1);
   errno = saved;
@@ -33,7 +33,7 @@ void watch() {
   }
   pollfd wake{wake_pipe[0], POLLIN, 0};
   const int waited = ::poll(&wake, 1, static_cast<int>(stop_grace_seconds * 1000.0));
-  const int signal = coupling::stop_signal();
+  const int signal = solve::stop_signal();
   std::fprintf(stderr, "ffrf: %s: %s; stopping at once, uncommitted output removed\n", signal_name(signal),
                waited > 0 ? "second signal" : "the computation did not reach a stopping point in time");
   report::remove_uncommitted_outputs();

@@ -1,6 +1,6 @@
-// SIGINT and SIGTERM, so that Ctrl-C leaves no partial output: the handler records the request (coupling::request_stop) and wakes
+// SIGINT and SIGTERM, so that Ctrl-C leaves no partial output: the handler records the request (solve::request_stop) and wakes
 // a watcher thread through a pipe — both async-signal-safe. The computation stops at its next output
-// time (coupling::Interrupted unwinds: staging directories are removed on the way) and main returns
+// time (solve::Interrupted unwinds: staging directories are removed on the way) and main returns
 // 128 + the signal (130, 143). When it has not stopped within stop_grace_seconds, or a second
 // signal comes, the watcher removes the uncommitted outputs itself and exits at once with that code.
 #pragma once

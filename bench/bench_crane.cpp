@@ -7,7 +7,7 @@
 // N = 10, centrifugal stiffening, 30 s, outputs every 0.02 s, BDF order ≤ 2 as `ffrf run` chooses for
 // an undamped boom). rtol = 1e-6, atol = 1e-6 (× each coordinate's typical size). Model construction
 // and the KINSOL static equilibrium are outside the timed region; the timed call is
-// `coupling::integrate`, including the output samples.
+// `multibody::simulate`, including the output samples.
 // After Google Benchmark's own output it prints a Markdown table (crane_bench_table.hpp): wall,
 // steps, RHS evaluations (those of the Jacobians included), Jacobian evaluations, µs per step,
 // real-time factor and the local cost exponent in N, and checks the real-time-factor targets (crane_bench_table.hpp); for a missed
@@ -42,11 +42,11 @@ namespace scene_library = ffrf::scene;
 #include "cases/scene_loader.hpp"
 namespace scene_library = ffrf::cases;
 #endif
-#include "coupling/simulation.hpp"
-#include "coupling/static_equilibrium.hpp"
+#include "multibody/crane_run.hpp"
+#include "multibody/crane_statics.hpp"
 #include "crane_bench_table.hpp"
-#if __has_include("coupling/second_order_newton.hpp")
-#include "coupling/bordered_band_matrix.hpp"
+#if __has_include("solve/second_order_newton.hpp")
+#include "solve/bordered_band_matrix.hpp"
 #include "sea/hull_pressure.hpp"
 #define FFRF_BENCH_BREAKDOWN 1
 #endif
@@ -56,7 +56,7 @@ namespace {
 using ffrf::bench::CraneRow;
 using scene_library::BoomChoice;
 using scene_library::BoomKind;
-using ffrf::coupling::Integrator;
+using ffrf::solve::Integrator;
 
 constexpr double kTolerance = 1e-6;  // rtol and atol
 constexpr double kFullDuration = 120.0, kQuickDuration = 20.0;
@@ -95,8 +95,8 @@ std::vector<Case> cases() {
   return list;
 }
 
-ffrf::coupling::IntegratorSettings settings_for(const Context& context, const Case& c, const scene_library::Scene& scene) {
-  ffrf::coupling::IntegratorSettings s;
+ffrf::multibody::RunSettings settings_for(const Context& context, const Case& c, const scene_library::Scene& scene) {
+  ffrf::multibody::RunSettings s;
   s.kind = c.integrator;
   s.relative_tolerance = s.absolute_tolerance = kTolerance;
   s.duration = c.spin_up ? std::min(context.duration, scene.simulation.duration) : context.duration;
@@ -108,8 +108,8 @@ ffrf::coupling::IntegratorSettings settings_for(const Context& context, const Ca
 
 #ifdef FFRF_BENCH_BREAKDOWN
 // What the parts of one step cost for this model, and the run's wall time split by the counts.
-void print_breakdown(ffrf::coupling::CraneEquations& eq, const Eigen::VectorXd& z0, const ffrf::coupling::IntegratorSettings& s,
-                     const ffrf::coupling::SolverStats& stats, double wall_ms) {
+void print_breakdown(ffrf::multibody::CraneEquations& eq, const Eigen::VectorXd& z0, const ffrf::multibody::RunSettings& s,
+                     const ffrf::solve::SolverStats& stats, double wall_ms) {
   using clock = std::chrono::steady_clock;
   const int n = eq.minimal_size();
   Eigen::VectorXd z = z0, z_dot = Eigen::VectorXd::Constant(n, 1e-3), z_ddot(n);
@@ -120,10 +120,10 @@ void print_breakdown(ffrf::coupling::CraneEquations& eq, const Eigen::VectorXd& 
     return std::chrono::duration<double, std::micro>(clock::now() - start).count() / repeats;
   };
   const double rhs = time_us(2000, [&] { eq.minimal_accelerations(t, z, z_dot, z_ddot); });
-  ffrf::coupling::SecondOrderJacobian blocks(eq.minimal_structure());
+  ffrf::solve::SecondOrderJacobian blocks(eq.minimal_structure());
   const double jacobian = time_us(100, [&] { eq.minimal_jacobian(t, z, z_dot, z_ddot, blocks); });
-  ffrf::coupling::BorderedBandMatrix effective(eq.minimal_structure());
-  ffrf::coupling::BorderedBandLU lu(eq.minimal_structure());
+  ffrf::solve::BorderedBandMatrix effective(eq.minimal_structure());
+  ffrf::solve::BorderedBandLU lu(eq.minimal_structure());
   const double gamma = 0.01;
   const double factor = time_us(200, [&] {
     effective.assign_combination(1.0, blocks.mass, gamma, blocks.damping, gamma * gamma, blocks.stiffness);
@@ -164,11 +164,11 @@ void run_case(benchmark::State& state, Context* context, Case c) {
   const std::string key = key_of(c);
   state.SetLabel(key);
   const scene_library::Scene& scene = context->scenes.at(c.scene);
-  std::unique_ptr<ffrf::coupling::CraneEquations> equations;
+  std::unique_ptr<ffrf::multibody::CraneEquations> equations;
   Eigen::VectorXd z0;
   try {
     equations = scene_library::build_crane(scene, c.choice);
-    const auto statics = ffrf::coupling::solve_static_equilibrium(*equations, equations->initial_guess());
+    const auto statics = ffrf::multibody::solve_static_equilibrium(*equations, equations->initial_guess());
     z0 = scene.simulation.initial_state == scene_library::InitialState::static_equilibrium ? statics.z : equations->initial_guess();
   } catch (const std::exception& error) {
     context->errors[key] = error.what();
@@ -176,10 +176,10 @@ void run_case(benchmark::State& state, Context* context, Case c) {
     return;
   }
   const auto settings = settings_for(*context, c, scene);
-  ffrf::coupling::SolverStats stats;
+  ffrf::solve::SolverStats stats;
   for (auto _ : state) {
     try {
-      const auto result = ffrf::coupling::integrate(*equations, z0, settings);
+      const auto result = ffrf::multibody::simulate(*equations, z0, settings);
       benchmark::DoNotOptimize(result.samples.data());
       stats = result.stats;
     } catch (const std::exception& error) {
@@ -333,9 +333,9 @@ int main(int argc, char** argv) {
       if (key_of(c) != target.key) continue;
       const auto& scene = context.scenes.at(c.scene);
       auto eq = scene_library::build_crane(scene, c.choice);
-      const Eigen::VectorXd z0 = ffrf::coupling::solve_static_equilibrium(*eq, eq->initial_guess()).z;
+      const Eigen::VectorXd z0 = ffrf::multibody::solve_static_equilibrium(*eq, eq->initial_guess()).z;
       const auto settings = settings_for(context, c, scene);
-      const auto result = ffrf::coupling::integrate(*eq, z0, settings);
+      const auto result = ffrf::multibody::simulate(*eq, z0, settings);
       print_breakdown(*eq, z0, settings, result.stats, r->wall_ms);
     }
   }

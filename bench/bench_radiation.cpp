@@ -75,7 +75,7 @@ void crane_run(benchmark::State& state, const std::string& kind) {
   RadiationKind radiation = RadiationKind::constant;
   parse_radiation_kind(kind == "constant" || kind == "convolution" ? kind : "state-space", radiation);
   const ffrf::scene::Scene modelled = ffrf::study::with_radiation(scene, radiation);
-  ffrf::coupling::IntegratorSettings settings;
+  ffrf::multibody::RunSettings settings;
   settings.duration = 30.0;
   settings.output_interval = 0.05;
   long steps = 0;
@@ -83,7 +83,7 @@ void crane_run(benchmark::State& state, const std::string& kind) {
     state.PauseTiming();
     auto prepared = ffrf::study::prepare_run(modelled, {ffrf::scene::BoomKind::nodal, 12});  // fit cached, outside the timing
     state.ResumeTiming();
-    const auto result = ffrf::coupling::integrate(*prepared.equations, prepared.initial_state, settings);
+    const auto result = ffrf::multibody::simulate(*prepared.equations, prepared.initial_state, settings);
     steps = result.stats.steps;
     benchmark::DoNotOptimize(result.time.data());
   }

@@ -27,7 +27,7 @@ using namespace ffrf;
 struct Model {
   std::string name;
   scene::BoomChoice choice;
-  coupling::IntegratorSettings settings;
+  multibody::RunSettings settings;
 };
 
 struct Measured {
@@ -124,7 +124,7 @@ int main(int argc, char** argv) {
     fmt::print("\nreference scene, {:g} s simulated: reference {} at rtol {:g}: {:.1f} ms ({} steps); recommended {}, {} at "
                "rtol {:g}: {:.1f} ms ({} steps)\nwall-time ratio {:.1f}x, solver-work ratio {:.1f}x (RHS evaluations x state size)\n",
                rec.duration, rec.reference.choice.label(), rec.reference.settings.relative_tolerance, reference.milliseconds,
-               reference.steps, chosen.choice.label(), coupling::to_string(chosen.integrator), rec.reasoning.relative_tolerance,
+               reference.steps, chosen.choice.label(), solve::to_string(chosen.integrator), rec.reasoning.relative_tolerance,
                recommended.milliseconds, recommended.steps, reference.milliseconds / recommended.milliseconds,
                reference.work / recommended.work);
   }

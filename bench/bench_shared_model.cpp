@@ -5,7 +5,7 @@
 // stiffening (as the sweep models it), the medium grid's largest models. docs/performance.md.
 #include <benchmark/benchmark.h>
 
-#include "coupling/static_equilibrium.hpp"
+#include "multibody/crane_statics.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -49,7 +49,7 @@ void BM_StaticEquilibrium(benchmark::State& state) {
   const scene::Scene scene = bench_scene();
   const scene::BoomChoice choice = choice_of(state.range(0));
   auto equations = scene::build_crane(scene, choice);
-  for (auto _ : state) benchmark::DoNotOptimize(coupling::solve_static_equilibrium(*equations, equations->initial_guess()));
+  for (auto _ : state) benchmark::DoNotOptimize(multibody::solve_static_equilibrium(*equations, equations->initial_guess()));
   state.SetLabel(choice.label());
 }
 

@@ -91,7 +91,7 @@ Json model_json(const study::BaselineModel& m) {
               {"modes", m.choice.modes},
               {"static_modes", m.choice.static_modes},
               {"stiffening", scene::to_string(m.choice.stiffening.value_or(scene::Stiffening::none))},
-              {"integrator", coupling::to_string(m.integrator)},
+              {"integrator", solve::to_string(m.integrator)},
               {"rtol", m.relative_tolerance},
               {"atol", m.absolute_tolerance},
               {"max_bdf_order", m.max_order},
@@ -113,8 +113,8 @@ study::BaselineModel read_model(const Node& n) {
   m.choice.stiffening = scene::parse_stiffening(stiffening.text());
   if (!m.choice.stiffening) stiffening.fail("unknown stiffening (valid: none, static, centrifugal, both)");
   const Node integrator = n.at("integrator");
-  const auto parsed = coupling::parse_integrator(integrator.text());
-  if (!parsed) integrator.fail("unknown integrator (valid: " + coupling::integrator_choices() + ")");
+  const auto parsed = solve::parse_integrator(integrator.text());
+  if (!parsed) integrator.fail("unknown integrator (valid: " + solve::integrator_choices() + ")");
   m.integrator = *parsed;
   m.relative_tolerance = n.at("rtol").number(0.0, 1.0, true);
   m.absolute_tolerance = n.at("atol").number(0.0, 1.0, true);
@@ -125,7 +125,7 @@ study::BaselineModel read_model(const Node& n) {
   return m;
 }
 
-Json cost_json(const coupling::SolverStats& s) {
+Json cost_json(const solve::SolverStats& s) {
   return Json{{"wall_time_s", s.wall_seconds},
               {"steps", s.steps},
               {"function_evaluations", s.function_evaluations},
@@ -135,8 +135,8 @@ Json cost_json(const coupling::SolverStats& s) {
               {"convergence_failures", s.convergence_failures}};
 }
 
-coupling::SolverStats read_cost(const Node& n) {
-  coupling::SolverStats s;
+solve::SolverStats read_cost(const Node& n) {
+  solve::SolverStats s;
   s.wall_seconds = n.at("wall_time_s").number(0.0, INFINITY, false, "s");
   s.steps = n.at("steps").count();
   s.function_evaluations = n.at("function_evaluations").count();

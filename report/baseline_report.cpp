@@ -16,12 +16,12 @@ namespace {
 std::string model_line(const study::BaselineModel& m) {
   std::string text = fmt::format("{}, geometric stiffening {}; {} rtol {:g} atol {:g}, largest BDF order {}", m.choice.label(),
                                  scene::to_string(m.choice.stiffening.value_or(scene::Stiffening::none)),
-                                 coupling::to_string(m.integrator), m.relative_tolerance, m.absolute_tolerance, m.max_order);
+                                 solve::to_string(m.integrator), m.relative_tolerance, m.absolute_tolerance, m.max_order);
   if (m.fixed_step > 0.0) text += fmt::format(", fixed step {:g} s", m.fixed_step);
   return text + fmt::format(", {:g} s, output every {:g} s", m.duration, m.output_interval);
 }
 
-std::string cost_line(const coupling::SolverStats& s) {
+std::string cost_line(const solve::SolverStats& s) {
   return fmt::format("{} steps, {} function and {} Jacobian evaluations, {} Newton iterations, {:.3g} s", s.steps,
                      s.function_evaluations, s.jacobian_evaluations, s.newton_iterations, s.wall_seconds);
 }

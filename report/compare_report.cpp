@@ -17,10 +17,10 @@
 namespace ffrf::report {
 namespace {
 
-using coupling::all_channels;
+using multibody::all_channels;
 using study::Comparison;
 using study::ModelRun;
-using coupling::channel_name;
+using multibody::channel_name;
 
 std::string sci(double value) { return std::isfinite(value) ? fmt::format("{:.2e}", value) : "-"; }
 
@@ -30,7 +30,7 @@ std::string window_text(double start) {
 }
 
 std::string settings_text(const RunContext& c) {
-  return fmt::format("integrator {}, rtol {:g}, atol {:g}, {:g} s simulated, output every {:g} s", coupling::to_string(c.settings.kind),
+  return fmt::format("integrator {}, rtol {:g}, atol {:g}, {:g} s simulated, output every {:g} s", solve::to_string(c.settings.kind),
                      c.settings.relative_tolerance, c.settings.absolute_tolerance, c.settings.duration,
                      c.settings.output_interval);
 }
@@ -41,7 +41,7 @@ std::string verdict_sentence(const Comparison& c) {
   const std::string failed = failed_list(c.verdict, measured);
   const double rtol = c.settings.relative_tolerance, choice_rtol = study::model_choice_rtol(c.verdict.tolerance);
   std::string s = verdict_headline(c.verdict, measured, reference_label(c.reference), "models",
-                                   fmt::format(" (all at {} rtol {:g})", coupling::to_string(c.settings.kind), rtol)) +
+                                   fmt::format(" (all at {} rtol {:g})", solve::to_string(c.settings.kind), rtol)) +
                   (failed.empty() ? "" : " " + failed);
   // recommend and sweep name their cheapest model from runs at the model-choice rtol: say when these are not.
   if (rtol != choice_rtol) {
@@ -201,7 +201,7 @@ std::string compare_json(const RunContext& ctx, const Comparison& c) {
     model["work"] = c.runs[m].work();
     Json errors = Json::object();
     for (const auto channel : all_channels) {
-      const coupling::ChannelError& e = c.errors[m][channel];
+      const multibody::ChannelError& e = c.errors[m][channel];
       const study::SplitError& s = c.split[m][static_cast<std::size_t>(channel)];
       const double unit = display_scale(channel);
       errors[std::string(channel_name(channel))] = Json{{"normalized_rms", e.normalized_rms},

@@ -13,8 +13,8 @@
 namespace ffrf::report {
 namespace {
 
-using coupling::all_channels;
-using coupling::channel_name;
+using multibody::all_channels;
+using multibody::channel_name;
 using study::Comparison;
 using study::ModelRun;
 
@@ -30,7 +30,7 @@ std::vector<std::pair<const ModelRun*, std::string>> all_runs(const Comparison& 
   return rows;
 }
 
-std::size_t channel_index(coupling::OutputChannel channel) { return static_cast<std::size_t>(channel); }
+std::size_t channel_index(multibody::OutputChannel channel) { return static_cast<std::size_t>(channel); }
 
 }  // namespace
 
@@ -69,7 +69,7 @@ std::string error_table(const Comparison& c, ErrorKind kind) {
   for (std::size_t m = 0; m < c.runs.size(); ++m) {
     t += fmt::format("| {} |", c.runs[m].choice.label());
     for (const auto channel : all_channels) {
-      const coupling::ChannelError& total = c.errors[m][channel];
+      const multibody::ChannelError& total = c.errors[m][channel];
       const study::SplitError& split = c.split[m][channel_index(channel)];
       const double unit = display_scale(channel);
       double value = 0.0;
@@ -94,7 +94,7 @@ std::string static_table(const scene::Scene& scene, const Comparison& c) {
       "| model | elastic DOFs | draft at mid-length [m] | trim [deg] | tip transverse [m] | tip axial [m] | wire stretch [m] | "
       "wire tension [N] | joint moment at B [N m] |\n|---|--:|--:|--:|--:|--:|--:|--:|--:|\n";
   for (const auto& [run, label] : all_runs(c)) {
-    const coupling::CraneOutputs& o = run->static_outputs();
+    const multibody::CraneOutputs& o = run->static_outputs();
     const double draft = study::draft_at_mid_length(scene, o);  // NaN without a hull (a hub): shown as "-"
     t += fmt::format("| {} | {} | {} | {:+.4f} | {:+.5f} | {:+.5f} | {:.5f} | {} | {} |\n", label, run->elastic_dof,
                      std::isfinite(draft) ? fmt::format("{:.4f}", draft) : std::string("-"), o.hull.z() * degrees, o.tip_deflection.y(), o.tip_deflection.x(),
@@ -122,7 +122,7 @@ std::string cost_table(const Comparison& c) {
                   "evaluations | Jacobian evaluations | Newton iterations | error-test failures | max constraint residual [m] |\n"
                   "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
   for (const auto& [run, label] : all_runs(c)) {
-    const coupling::SolverStats& s = run->result.stats;
+    const solve::SolverStats& s = run->result.stats;
     t += fmt::format("| {} | {:.3g} | {:.4g} | {} | {} | {:.4g} | {} | {} | {} | {} | {:.2g} |\n", label, s.wall_seconds,
                      run->real_time_factor, s.steps, run->state_size, run->work(), s.function_evaluations,
                      s.jacobian_evaluations, s.newton_iterations, s.error_test_failures, run->max_constraint_residual);

@@ -159,7 +159,7 @@ std::vector<double> difference_floors(const study::Comparison& c, const std::vec
     const study::SeriesSpec& spec = study::crane_series()[study::series_index(chart_.column)];
     const double at_rest = spec.value(reference.static_outputs());
     double largest = 0.0;
-    for (const coupling::CraneOutputs& sample : reference.result.samples) {
+    for (const multibody::CraneOutputs& sample : reference.result.samples) {
       largest = std::max(largest, std::abs(spec.value(sample) - at_rest) * chart_.scale);
     }
     floors.push_back(std::max(0.01 * c.settings.relative_tolerance * largest, std::numeric_limits<double>::min()));

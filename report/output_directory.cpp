@@ -11,7 +11,7 @@
 #include <system_error>
 #include <utility>
 
-#include "coupling/stop_request.hpp"
+#include "solve/stop_request.hpp"
 
 namespace ffrf::report {
 
@@ -115,7 +115,7 @@ void StagedDirectory::write(std::string_view name, std::string_view content) con
 }
 
 void StagedDirectory::commit() {
-  coupling::throw_if_stop_requested();  // an interrupted run never poses as complete
+  solve::throw_if_stop_requested();  // an interrupted run never poses as complete
   std::error_code error;
   if (!fs::exists(target_, error)) {
     fs::rename(staging_, target_, error);  // atomic: the whole directory appears at once

@@ -3,7 +3,7 @@
 // a StagedDirectory removes the target's old marker (its files are about to be replaced); without
 // commit() — an error, an exception, an interrupt — the staging directory is removed, and so are
 // the parent directories it had to create: nothing is left beside the target. A stop request
-// (SIGINT/SIGTERM, coupling/stop_request.hpp) makes commit() throw coupling::Interrupted instead of
+// (SIGINT/SIGTERM, solve/stop_request.hpp) makes commit() throw solve::Interrupted instead of
 // committing. Every failure is an OutputError naming the user's path (never the staging path) and
 // the operating system's reason ("Permission denied", "No space left on device").
 #pragma once
@@ -46,7 +46,7 @@ class StagedDirectory {
   // Writes a file into the staging directory; throws OutputError on failure.
   void write(std::string_view name, std::string_view content) const;
   // Moves everything into the target (created if needed), the marker last; throws OutputError, or
-  // coupling::Interrupted when a stop was requested (nothing is committed then).
+  // solve::Interrupted when a stop was requested (nothing is committed then).
   void commit();
   // The charts drawn (or not) into this directory, in order (report/gnuplot.hpp's draw_chart and
   // leave_out_chart record them; the commands name the ones not drawn in their reports).

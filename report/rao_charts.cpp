@@ -16,7 +16,7 @@
 namespace ffrf::report {
 namespace {
 
-using coupling::LinearOutput;
+using multibody::LinearOutput;
 
 struct Chart {
   const char* name;
@@ -135,10 +135,10 @@ std::string rao_chart_script(const std::string& name, const study::RaoResult& re
         curves.push_back(fmt::format("'sea_spectrum.csv' skip 1 using 1:3 axes x1y2 with lines dt 3 lw 2 lc 'gray40' title {}",
                                      gnuplot_quoted(spectrum_label(result.sea->spectrum))));
       }
-      const std::string name_text(coupling::to_string(output));
+      const std::string name_text(multibody::to_string(output));
       script += fmt::format("set title {} noenhanced\nset xlabel 'wave period [s]'\n",
                             gnuplot_quoted(name_text + (amplitude ? " amplitude" : " phase")));
-      script += amplitude ? fmt::format("set logscale y\nset format y '%g'\nset ylabel '[{}]'\nset yrange [*:*]\n", coupling::unit_per_amplitude(output))
+      script += amplitude ? fmt::format("set logscale y\nset format y '%g'\nset ylabel '[{}]'\nset yrange [*:*]\n", multibody::unit_per_amplitude(output))
                           : "unset logscale y\nset format y '%g'\nset ylabel 'phase vs elevation at x = 0 [deg]'\nset yrange [-180:180]\n";
       script += sea ? "set ytics nomirror\nset y2tics\nset y2range [0:*]\nset y2label 'sea S(ω) [m² s/rad]'\n"
                     : "set ytics mirror\nunset y2tics\nunset y2label\n";

@@ -20,7 +20,7 @@ std::string rao_chart_script(const std::string& name, const study::RaoResult& re
 
 // Whether an output is drawn for a model: the tip outputs are the boom's elastic deflection,
 // identically zero for the rigid boom.
-bool rao_drawn(const study::ModelRao& model, coupling::LinearOutput output);
+bool rao_drawn(const study::ModelRao& model, multibody::LinearOutput output);
 
 // "JONSWAP Hs 1.5 m, Tp 9 s, γ 3.3", "Pierson–Moskowitz Hs 2 m, Tp 8 s", "tabulated".
 std::string spectrum_label(const hydro::WaveSpectrum& spectrum);

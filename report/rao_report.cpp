@@ -17,14 +17,14 @@
 namespace ffrf::report {
 namespace {
 
-using coupling::LinearOutput;
+using multibody::LinearOutput;
 
 constexpr int shown_modes = 8;  // natural modes in the tables (the lowest)
 
 LinearOutput output_at(int k) { return static_cast<LinearOutput>(k); }
-std::string name_of(LinearOutput output) { return std::string(coupling::to_string(output)); }
+std::string name_of(LinearOutput output) { return std::string(multibody::to_string(output)); }
 std::string unit_slug(LinearOutput output) {  // "m/m" → "m_per_m"
-  std::string unit(coupling::unit_per_amplitude(output));
+  std::string unit(multibody::unit_per_amplitude(output));
   return unit.replace(unit.find('/'), 1, "_per_");
 }
 double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
@@ -59,14 +59,14 @@ std::string model_slug(const scene::BoomChoice& choice) {
 std::string rao_csv(const study::RaoResult& result, std::size_t model) {
   const study::ModelRao& m = result.models.at(model);
   std::string out = "period_s,angular_frequency_rad_per_s";
-  for (int k = 0; k < coupling::linear_output_count; ++k) {
+  for (int k = 0; k < multibody::linear_output_count; ++k) {
     out += fmt::format(",{0}_amplitude_{1},{0}_phase_deg", name_of(output_at(k)), unit_slug(output_at(k)));
   }
   out += '\n';
   for (std::size_t f = 0; f < m.angular_frequencies.size(); ++f) {
     const double omega = m.angular_frequencies[f];
     out += fmt::format("{:.10g},{:.10g}", period_of(omega), omega);
-    for (int k = 0; k < coupling::linear_output_count; ++k) {
+    for (int k = 0; k < multibody::linear_output_count; ++k) {
       const std::complex<double> value = m.response[static_cast<std::size_t>(k)][f];
       out += fmt::format(",{:.10g},{:.6f}", std::abs(value), degrees(std::arg(value)));
     }
@@ -187,8 +187,8 @@ std::string rao_markdown(const study::RaoResult& result, const std::vector<study
   out += "\n|---|";
   for (std::size_t m = 0; m < result.models.size(); ++m) out += "---|";
   out += '\n';
-  for (int k = 0; k < coupling::linear_output_count; ++k) {
-    out += fmt::format("| {} [{}] |", name_of(output_at(k)), coupling::unit_per_amplitude(output_at(k)));
+  for (int k = 0; k < multibody::linear_output_count; ++k) {
+    out += fmt::format("| {} [{}] |", name_of(output_at(k)), multibody::unit_per_amplitude(output_at(k)));
     for (const study::ModelRao& m : result.models) {
       const auto& values = m.response[static_cast<std::size_t>(k)];
       const auto peak = std::max_element(values.begin(), values.end(),
@@ -279,13 +279,13 @@ std::string rao_json(const study::RaoResult& result, const std::vector<study::Ti
       if (!mode.unrefined.empty()) model["natural_modes"].back()["not_refined"] = mode.unrefined;
     }
     Json raos = Json::object();
-    for (int k = 0; k < coupling::linear_output_count; ++k) {
+    for (int k = 0; k < multibody::linear_output_count; ++k) {
       Json amplitude = Json::array(), phase = Json::array();
       for (const auto& value : m.response[static_cast<std::size_t>(k)]) {
         amplitude.push_back(std::abs(value));
         phase.push_back(degrees(std::arg(value)));
       }
-      raos[name_of(output_at(k))] = {{"unit", coupling::unit_per_amplitude(output_at(k))}, {"amplitude", amplitude}, {"phase_deg", phase}};
+      raos[name_of(output_at(k))] = {{"unit", multibody::unit_per_amplitude(output_at(k))}, {"amplitude", amplitude}, {"phase_deg", phase}};
     }
     model["rao"] = std::move(raos);
     add_resonance_json(model, m, result);

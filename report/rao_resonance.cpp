@@ -13,10 +13,10 @@
 namespace ffrf::report {
 namespace {
 
-using coupling::LinearOutput;
+using multibody::LinearOutput;
 
-std::string name_of(int output) { return std::string(coupling::to_string(static_cast<LinearOutput>(output))); }
-std::string unit_of(int output) { return std::string(coupling::unit_per_amplitude(static_cast<LinearOutput>(output))); }
+std::string name_of(int output) { return std::string(multibody::to_string(static_cast<LinearOutput>(output))); }
+std::string unit_of(int output) { return std::string(multibody::unit_per_amplitude(static_cast<LinearOutput>(output))); }
 // The unit of a response in a sea: "m/m" per metre of wave → "m".
 std::string response_unit(int output) { return unit_of(output).substr(0, unit_of(output).find('/')); }
 double period_of(double omega) { return 2.0 * std::numbers::pi / omega; }
@@ -80,7 +80,7 @@ std::string resonance_markdown(const study::RaoResult& result) {
     out += "\n|---|";
     for (std::size_t m = 0; m < result.models.size(); ++m) out += "---:|";
     out += '\n';
-    for (int k = 0; k < coupling::linear_output_count; ++k) {
+    for (int k = 0; k < multibody::linear_output_count; ++k) {
       out += fmt::format("| {} [{}] |", name_of(k), response_unit(k));
       for (const study::ModelRao& m : result.models) {
         out += rao_drawn(m, static_cast<LinearOutput>(k)) ? fmt::format(" {:.4g} |", m.significant_response[static_cast<std::size_t>(k)])
@@ -107,7 +107,7 @@ std::string resonance_text(const study::RaoResult& result) {
   if (result.sea) {
     out += fmt::format("\nsignificant responses in {} ({:.1f} % of m0 in the band):\n", spectrum_label(result.sea->spectrum),
                        100.0 * result.sea->band_share());
-    for (int k = 0; k < coupling::linear_output_count; ++k) {
+    for (int k = 0; k < multibody::linear_output_count; ++k) {
       out += fmt::format("  {:<15}", name_of(k));
       for (const study::ModelRao& m : result.models) {
         if (rao_drawn(m, static_cast<LinearOutput>(k))) {
@@ -161,7 +161,7 @@ void add_resonance_json(Json& model_json, const study::ModelRao& model, const st
   }
   if (result.sea) {
     Json significant = Json::object();
-    for (int k = 0; k < coupling::linear_output_count; ++k) {
+    for (int k = 0; k < multibody::linear_output_count; ++k) {
       significant[name_of(k)] = {{"value", model.significant_response[static_cast<std::size_t>(k)]}, {"unit", response_unit(k)}};
     }
     model_json["significant_response"] = std::move(significant);

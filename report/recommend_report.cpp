@@ -139,7 +139,7 @@ std::string recommend_json(const RecommendContext& ctx, const Recommendation& re
   json["tolerance"] = ctx.tolerance;
   json["duration_s"] = rec.duration;
   json["outputs"] = Json::array();
-  for (const auto channel : rec.outputs) json["outputs"].push_back(coupling::channel_name(channel));
+  for (const auto channel : rec.outputs) json["outputs"].push_back(multibody::channel_name(channel));
   const study::RecommendReasoning& r = rec.reasoning;
   Json reasoning;
   reasoning["boom_angular_frequencies_rad_s"] = Json::array();
@@ -176,7 +176,7 @@ std::string recommend_json(const RecommendContext& ctx, const Recommendation& re
              {"modes", c.choice.modes},
              {"static_modes", c.choice.static_modes},
              {"stiffening", scene::to_string(c.choice.stiffening.value_or(rec.reference_scene.boom.stiffening))},
-             {"integrator", coupling::to_string(c.integrator)},
+             {"integrator", solve::to_string(c.integrator)},
              {"elastic_dof", c.elastic_dof},
              {"estimated_error", c.estimated_error},
              {"expected_work", c.expected_work},
@@ -209,7 +209,7 @@ std::string run_command_line(const std::string& scene_file, const Candidate& c, 
   }
   const scene::Stiffening stiffening = c.choice.stiffening.value_or(scene.boom.stiffening);
   if (c.choice.kind != scene::BoomKind::rigid) line += fmt::format(" --stiffening {}", scene::to_string(stiffening));
-  line += fmt::format(" --integrator {} --rtol {:g} --atol {:g}", coupling::to_string(c.integrator), rtol, rtol);
+  line += fmt::format(" --integrator {} --rtol {:g} --atol {:g}", solve::to_string(c.integrator), rtol, rtol);
   return line + fmt::format(" --duration {:g}", duration);
 }
 

@@ -27,12 +27,12 @@ const char* initial_state_name(const study::ModelRun& run) {
 
 }  // namespace
 
-Json detection_json(const coupling::Detection& d) {
-  return Json{{"kind", coupling::to_string(d.kind)}, {"time_s", d.time},     {"fatal", d.fatal},
+Json detection_json(const solve::Detection& d) {
+  return Json{{"kind", solve::to_string(d.kind)}, {"time_s", d.time},     {"fatal", d.fatal},
               {"cause", d.cause},                    {"remedy", d.remedy},   {"value", d.value}};
 }
 
-std::string failure_json(const RunContext& context, const std::string& model, const coupling::SolverFailure& failure) {
+std::string failure_json(const RunContext& context, const std::string& model, const solve::SolverFailure& failure) {
   Json json;
   json["command"] = "run";
   json["status"] = "failed";
@@ -61,7 +61,7 @@ std::string utc_date() {
 }
 
 RunContext make_context(const std::string& scene_file, const scene::Scene& scene,
-                        const coupling::IntegratorSettings& settings) {
+                        const multibody::RunSettings& settings) {
   return {scene_file, &scene, settings, utc_date(), {}};
 }
 
@@ -69,8 +69,8 @@ std::string static_report(const scene::Scene& scene, const study::ModelRun& run)
   return static_report(scene, run.choice, run.statics);
 }
 
-std::string static_report(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::StaticEquilibrium& s) {
-  const coupling::CraneOutputs& o = s.outputs;
+std::string static_report(const scene::Scene& scene, const scene::BoomChoice& choice, const multibody::StaticEquilibrium& s) {
+  const multibody::CraneOutputs& o = s.outputs;
   std::string text = fmt::format("static equilibrium ({}; KINSOL: {} Newton iterations, scaled residual {:.2g}, {:.3g} s)\n",
                                  choice.label(), s.newton_iterations, s.scaled_residual, s.wall_seconds);
   if (scene.hull) {
@@ -103,7 +103,7 @@ std::string static_report(const scene::Scene& scene, const scene::BoomChoice& ch
 Json settings_json(const RunContext& c) {
   Json json{{"scene", c.scene_file},
               {"scene_name", c.scene->name},
-              {"integrator", coupling::to_string(c.settings.kind)},
+              {"integrator", solve::to_string(c.settings.kind)},
               {"max_bdf_order", c.settings.max_order},
               {"rtol", c.settings.relative_tolerance},
               {"atol", c.settings.absolute_tolerance},
@@ -124,8 +124,8 @@ Json settings_json(const RunContext& c) {
   return json;
 }
 
-Json static_equilibrium_json(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::StaticEquilibrium& s) {
-  const coupling::CraneOutputs& o = s.outputs;
+Json static_equilibrium_json(const scene::Scene& scene, const scene::BoomChoice& choice, const multibody::StaticEquilibrium& s) {
+  const multibody::CraneOutputs& o = s.outputs;
   return Json{
       {"hull_draft_mid_length_m", study::draft_at_mid_length(scene, o)},
       {"hull_trim_deg", o.hull.z() * degrees},
@@ -211,11 +211,11 @@ Json model_json(const scene::Scene& scene, const study::ModelRun& run) {
             {"slack_events", run.slack_events()},
             {"taut_events", static_cast<long>(run.result.wire_events.size()) - run.slack_events()}};
   wire["slack_intervals_s"] = Json::array();
-  for (const coupling::SlackInterval& slack : run.slack_intervals) {
+  for (const multibody::SlackInterval& slack : run.slack_intervals) {
     wire["slack_intervals_s"].push_back(Json::array({slack.start, std::isfinite(slack.end) ? Json(slack.end) : Json(nullptr)}));
   }
   wire["snap_loads"] = Json::array();
-  for (const coupling::SnapLoad& snap : run.snap_loads) {
+  for (const multibody::SnapLoad& snap : run.snap_loads) {
     wire["snap_loads"].push_back(Json{{"taut_at_s", snap.time},
                                       {"peak_tension_N", snap.peak_tension},
                                       {"peak_at_s", snap.peak_time},
@@ -227,8 +227,8 @@ Json model_json(const scene::Scene& scene, const study::ModelRun& run) {
   json["max_constraint_residual_m"] = run.max_constraint_residual;
   json["max_buckling_load_ratio"] = run.max_buckling_load_ratio;
   json["detections"] = Json::array();
-  for (const coupling::Detection& d : run.result.detections) json["detections"].push_back(detection_json(d));
-  const coupling::SolverStats& st = run.result.stats;
+  for (const solve::Detection& d : run.result.detections) json["detections"].push_back(detection_json(d));
+  const solve::SolverStats& st = run.result.stats;
   Json solver{{"steps", st.steps},
               {"function_evaluations", st.function_evaluations},
               {"jacobian_evaluations", st.jacobian_evaluations},
@@ -260,9 +260,9 @@ std::string run_header_text(const RunContext& c, const study::ModelRun& run) {
   text += fmt::format("model       {} ({} elastic DOFs), start from {}\n", run.choice.label(), run.elastic_dof,
                       initial_state_name(run));
   text += fmt::format("integrator  {}, rtol {:g}, atol {:g}, {:g} s, output every {:g} s{}\n\n",
-                      coupling::to_string(c.settings.kind), c.settings.relative_tolerance, c.settings.absolute_tolerance,
+                      solve::to_string(c.settings.kind), c.settings.relative_tolerance, c.settings.absolute_tolerance,
                       c.settings.duration, c.settings.output_interval,
-                      c.settings.kind == coupling::Integrator::cvode || c.settings.kind == coupling::Integrator::ida
+                      c.settings.kind == solve::Integrator::cvode || c.settings.kind == solve::Integrator::ida
                           ? fmt::format(", BDF order <= {}", c.settings.max_order)
                           : std::string());
   text.insert(text.size() - 1, wave_kinematics_text(run.wave_kinematics));
@@ -301,12 +301,12 @@ std::string dynamics_text(const study::ModelRun& run) {
   if (run.irregular) text += irregular_text(*run.irregular);
   if (!run.result.detections.empty()) {
     text += "\ndetected\n";
-    for (const coupling::Detection& d : run.result.detections) {
-      text += fmt::format("  {:<20} t = {:<9.4g} {}\n  {:<20} {:<13} remedy: {}\n", coupling::to_string(d.kind), d.time,
+    for (const solve::Detection& d : run.result.detections) {
+      text += fmt::format("  {:<20} t = {:<9.4g} {}\n  {:<20} {:<13} remedy: {}\n", solve::to_string(d.kind), d.time,
                           d.cause, "", "", d.remedy);
     }
   }
-  const coupling::SolverStats& st = run.result.stats;
+  const solve::SolverStats& st = run.result.stats;
   text += fmt::format("\nsolver      {} steps, {} function and {} Jacobian evaluations, {} Newton iterations,\n"
                       "            {} error-test and {} convergence failures\n",
                       st.steps, st.function_evaluations, st.jacobian_evaluations, st.newton_iterations,

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "coupling/failure.hpp"
+#include "solve/failure.hpp"
 #include "report/json.hpp"
 #include "study/model_warnings.hpp"
 #include "study/run_pipeline.hpp"
@@ -16,32 +16,32 @@ namespace ffrf::report {
 struct RunContext {
   std::string scene_file;
   const scene::Scene* scene = nullptr;
-  coupling::IntegratorSettings settings;
+  multibody::RunSettings settings;
   std::string date;  // ISO 8601, UTC
   study::ModelWarnings warnings;  // `ffrf run`: the model against what the scene needs
 };
 RunContext make_context(const std::string& scene_file, const scene::Scene& scene,
-                        const coupling::IntegratorSettings& settings);
+                        const multibody::RunSettings& settings);
 std::string ffrf_version();
 // Now, ISO 8601 in UTC ("2025-01-31T12:00:00Z").
 std::string utc_date();
 
 // The static equilibrium in a few lines (draft and trim, tip deflection, wire, joint reaction).
 std::string static_report(const scene::Scene& scene, const study::ModelRun& run);
-std::string static_report(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::StaticEquilibrium& statics);
+std::string static_report(const scene::Scene& scene, const scene::BoomChoice& choice, const multibody::StaticEquilibrium& statics);
 
 // The settings' keys (scene, integrator, tolerances, duration, version, date).
 Json settings_json(const RunContext& context);
 // The static equilibrium's keys (summary.json's "static_equilibrium"; `ffrf statics --json`).
-Json static_equilibrium_json(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::StaticEquilibrium& statics);
+Json static_equilibrium_json(const scene::Scene& scene, const scene::BoomChoice& choice, const multibody::StaticEquilibrium& statics);
 // One model's keys (model, static_equilibrium, outputs, wire, solver, ...).
 Json model_json(const scene::Scene& scene, const study::ModelRun& run);
 // One detection {kind, time_s, fatal, cause, remedy, value}.
-Json detection_json(const coupling::Detection& detection);
+Json detection_json(const solve::Detection& detection);
 
 std::string run_json(const RunContext& context, const study::ModelRun& run);
 // A failed run: {"command": "run", "status": "failed", "model", "provenance", "failure": {...}}.
-std::string failure_json(const RunContext& context, const std::string& model, const coupling::SolverFailure& failure);
+std::string failure_json(const RunContext& context, const std::string& model, const solve::SolverFailure& failure);
 // The human summary: the header (scene, model, integrator), then static_report(), then the
 // dynamics (statistics table, wire, solver costs).
 std::string run_header_text(const RunContext& context, const study::ModelRun& run);

@@ -25,7 +25,7 @@ StabilitySection bdf_order_section(const scene::Scene& scene, const study::BdfOr
     }
     const bool collapsed = run.order > 2 && study.collapsed();
     StabilityCell cell{label, "steps", !collapsed,
-                       collapsed ? std::string(coupling::to_string(coupling::FailureKind::step_size_collapse)) : "ok", NAN,
+                       collapsed ? std::string(solve::to_string(solve::FailureKind::step_size_collapse)) : "ok", NAN,
                        static_cast<double>(run.stats->steps), "steps",
                        collapsed ? fmt::format("{} × the steps of BDF ≤ 2 (step size held to the undamped top modes)",
                                                shown(study.step_ratio, 3))

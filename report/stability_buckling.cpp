@@ -26,14 +26,14 @@ StabilitySection buckling_section(const scene::Scene& scene, const study::Buckli
       "prestressed beam.",
       choice.label(), shown(mesh.section.bending_rigidity()), shown(mesh.length), elements);
   StabilityCell margin{"boom root", "compression / Euler load", ratio < warning,
-                       ratio < warning ? "ok" : std::string(coupling::to_string(coupling::FailureKind::buckling)), NAN,
+                       ratio < warning ? "ok" : std::string(solve::to_string(solve::FailureKind::buckling)), NAN,
                        ratio, "", fmt::format("root axial force {} N (tension > 0), Euler load {} N, warning from {}",
                                               shown(axial, 6), shown(euler, 6), warning),
                        {{"root_axial_force_N", axial}, {"euler_load_N", euler}}};
   if (!study.modes_failure.empty()) margin.detail += fmt::format("; prestressed modes not computed: {}", study.modes_failure);
   const double drop = 1.0 - prestressed / plain;
   StabilityCell softening{"first bending frequency", "with the root compression", std::isfinite(prestressed) && prestressed > 0.0,
-                          prestressed > 0.0 ? "ok" : std::string(coupling::to_string(coupling::FailureKind::buckling)), NAN,
+                          prestressed > 0.0 ? "ok" : std::string(solve::to_string(solve::FailureKind::buckling)), NAN,
                           prestressed, "rad/s",
                           fmt::format("without prestress {} rad/s, power series {} rad/s: {} % lower", shown(plain),
                                       shown(series), shown(100.0 * drop, 3)),

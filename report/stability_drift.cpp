@@ -30,7 +30,7 @@ std::string chart_script(const study::DriftStudy& study, const std::string& titl
   int column = 2;
   for (const study::DriftRun& run : study.runs) {
     gp += fmt::format("'constraint_drift.csv' using 1:(floored(${})) with lines lw 2 title {}, ", column++,
-                      gnuplot_quoted(std::string(coupling::to_string(run.formulation))));
+                      gnuplot_quoted(std::string(solve::to_string(run.formulation))));
   }
   gp += fmt::format("{} with lines dt 2 lw 2 lc rgb 'red' title 'drift bound {} m'\n", study.limit, shown(study.limit));
   return gp;
@@ -39,9 +39,9 @@ std::string chart_script(const study::DriftStudy& study, const std::string& titl
 // time_s, then |C| per formulation (empty where exactly 0 or after a failure: log axis).
 std::string drift_csv(const study::DriftStudy& study) {
   std::string csv = "time_s";
-  const coupling::RunResult* longest = nullptr;
+  const multibody::RunResult* longest = nullptr;
   for (const study::DriftRun& run : study.runs) {
-    csv += fmt::format(",{}_drift_m", coupling::to_string(run.formulation));
+    csv += fmt::format(",{}_drift_m", solve::to_string(run.formulation));
     if (run.run && (!longest || run.run->result.time.size() > longest->time.size())) longest = &run.run->result;
   }
   csv += '\n';
@@ -61,7 +61,7 @@ std::string drift_csv(const study::DriftStudy& study) {
 
 StabilitySection constraint_drift_section(const scene::Scene& scene, const study::DriftStudy& study,
                                           const StagedDirectory& out) {
-  const coupling::IntegratorSettings& s = study.settings;
+  const multibody::RunSettings& s = study.settings;
   StabilitySection section;
   section.key = "drift";
   section.title = "Constraint formulations: drift of the clamp at B";
@@ -74,19 +74,19 @@ StabilitySection constraint_drift_section(const scene::Scene& scene, const study
       s.baumgarte_frequency, shown(study.limit));
   std::vector<std::vector<std::string>> rows;
   for (const study::DriftRun& run : study.runs) {
-    const std::string name(coupling::to_string(run.formulation));
+    const std::string name(solve::to_string(run.formulation));
     if (run.failure) {
       StabilityCell cell = failure_cell(name, "max drift", *run.failure, "");
       rows.push_back({name, cell_markdown(cell), "-", "-", "-", "-"});
       section.cells.push_back(std::move(cell));
       continue;
     }
-    const coupling::Detection* fired = run.drift_detection();
+    const solve::Detection* fired = run.drift_detection();
     StabilityCell cell = fired != nullptr ? failure_cell(name, "max drift", *fired, "m")
                                           : StabilityCell{name, "max drift", true, "ok", NAN, run.max_residual, "m",
                                                           fmt::format("below the bound {} m", shown(study.limit)), {}};
     cell.value = run.max_residual;
-    const coupling::SolverStats& stats = run.run->result.stats;
+    const solve::SolverStats& stats = run.run->result.stats;
     rows.push_back({name, cell_markdown(cell), shown(run.final_residual), fmt::format("{}", stats.steps),
                     fmt::format("{}", stats.function_evaluations), shown(stats.wall_seconds, 3)});
     section.cells.push_back(std::move(cell));
@@ -98,7 +98,7 @@ StabilitySection constraint_drift_section(const scene::Scene& scene, const study
              chart_script(study, fmt::format("{}: |C(t)| of the clamp, {}", scene.name, study.choice.label()),
                           scene.boom.mesh.length));
   section.charts = {"constraint_drift.png"};
-  using coupling::Integrator;
+  using solve::Integrator;
   section.finding = fmt::format(
       "Minimal coordinates (cvode) have no constraint to violate. The index-1 ODE integrates only C̈ = 0, so the "
       "integration error accumulates in C and Ċ unchecked: its drift reaches {} m (bound {} m). Baumgarte feedback "

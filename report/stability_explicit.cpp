@@ -12,7 +12,7 @@ namespace ffrf::report {
 
 StabilitySection explicit_step_section(const study::ExplicitStepStudy& study, const StagedDirectory& out) {
   const study::ExplicitStabilityMap& map = study.map;
-  const coupling::StableStepSearch& search = study.search;
+  const solve::StableStepSearch& search = study.search;
   const std::size_t model_count = map.rows.size();
   write_explicit_stability_map(out, map);
 
@@ -35,7 +35,7 @@ StabilitySection explicit_step_section(const study::ExplicitStepStudy& study, co
       cell.row = row.label;
       cell.column = "largest stable step";
       cell.ok = false;
-      cell.status = std::string(coupling::to_string(coupling::FailureKind::unstable_explicit));
+      cell.status = std::string(solve::to_string(solve::FailureKind::unstable_explicit));
       cell.detail = row.failure;
       section.cells.push_back(cell);
       continue;
@@ -45,7 +45,7 @@ StabilitySection explicit_step_section(const study::ExplicitStepStudy& study, co
                                      row.measured.stable_step / row.jacobian_step, row.limiting_part()),
                          {}};
     StabilityCell unstable{row.label, "smallest unstable step", false,
-                           std::string(coupling::to_string(coupling::FailureKind::unstable_explicit)), NAN,
+                           std::string(solve::to_string(solve::FailureKind::unstable_explicit)), NAN,
                            row.measured.unstable_step, "s", row.measured.failure, {}};
     section.cells.push_back(stable);
     section.cells.push_back(unstable);
@@ -68,7 +68,7 @@ StabilitySection explicit_step_section(const study::ExplicitStepStudy& study, co
       "here is {} s, set by ω_max = {} rad/s (the static correction modes are stiff). A step above a red cell blows "
       "up (named: {}); remedy: an implicit method (cvode, ida) for elastic booms, or fewer, softer coordinates.",
       shown(largest), largest_label, shown(smallest), smallest_label, shown(modal_step), shown(modal_frequency),
-      coupling::to_string(coupling::FailureKind::unstable_explicit));
+      solve::to_string(solve::FailureKind::unstable_explicit));
   return section;
 }
 

@@ -93,7 +93,7 @@ std::string map_chart(const ExplicitStabilityMap& map, const std::string& termin
         cells += fmt::format("{},{:.6g},{}\n", i, h, h <= row.measured.stable_step ? 1 : 0);
       }
     }
-    for (const coupling::StabilityTrial& trial : row.measured.trial_log) {
+    for (const solve::StabilityTrial& trial : row.measured.trial_log) {
       trials += fmt::format("{},{:.8g},{}\n", i, trial.step, trial.stable ? 1 : 0);
     }
     theory += fmt::format("{},{:.8g},{}\n", i, row.jacobian_step, cell(row.boom_damped_step, "{:.8g}"));

@@ -6,12 +6,12 @@
 
 namespace ffrf::report {
 
-StabilityCell failure_cell(std::string row, std::string column, const coupling::Detection& detection, std::string unit) {
+StabilityCell failure_cell(std::string row, std::string column, const solve::Detection& detection, std::string unit) {
   StabilityCell cell;
   cell.row = std::move(row);
   cell.column = std::move(column);
   cell.ok = false;
-  cell.status = std::string(coupling::to_string(detection.kind));
+  cell.status = std::string(solve::to_string(detection.kind));
   cell.time = detection.time;
   cell.value = detection.value;
   cell.unit = std::move(unit);

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "coupling/failure.hpp"
+#include "solve/failure.hpp"
 #include "report/json.hpp"
 #include "report/gnuplot.hpp"
 #include "report/output_directory.hpp"
@@ -22,7 +22,7 @@ struct StabilityCell {
   std::string row;     // the method or model ("nodal N=10, no stiffening")
   std::string column;  // the condition ("Ωs = 4 rad/s", "max drift")
   bool ok = true;      // green
-  std::string status;  // "ok", or the failure kind (coupling::to_string), or what the cell measured
+  std::string status;  // "ok", or the failure kind (solve::to_string), or what the cell measured
   double time = NAN;   // when the failure was detected [s] (NaN: none)
   double value = NAN;  // the number behind the cell
   std::string unit;    // of value
@@ -31,7 +31,7 @@ struct StabilityCell {
 };
 
 // A red cell from a detection or a solver failure (its kind, time, value and cause).
-StabilityCell failure_cell(std::string row, std::string column, const coupling::Detection& detection, std::string unit);
+StabilityCell failure_cell(std::string row, std::string column, const solve::Detection& detection, std::string unit);
 // "✅ 0.123 m" or "❌ divergence at t = 9.87 s (0.81 1/s)": the Markdown text of a cell.
 std::string cell_markdown(const StabilityCell& cell);
 

@@ -50,7 +50,7 @@ std::string history_csv(const std::vector<const SpinRun*>& runs) {
 
 StabilitySection spin_section(const scene::Scene& scene, const study::SpinStudy& study, const StagedDirectory& out) {
   const scene::Hub& hub = *scene.hub;
-  const coupling::IntegratorSettings& settings = study.settings;
+  const multibody::RunSettings& settings = study.settings;
   StabilitySection section;
   section.key = "spin";
   section.title = "Spin: the linear floating frame with and without centrifugal stiffening";
@@ -75,7 +75,7 @@ StabilitySection spin_section(const scene::Scene& scene, const study::SpinStudy&
       StabilityCell cell;
       if (run.failure) {
         cell = failure_cell(run.label(), column, *run.failure,
-                            run.failure->kind == coupling::FailureKind::divergence ? "1/s" : "");
+                            run.failure->kind == solve::FailureKind::divergence ? "1/s" : "");
         const double rate = run.spin_rate_at_failure;
         cell.extra = {{"spin_rad_per_s", run.spin},
                       {"spin_rate_at_detection_rad_per_s", rate},

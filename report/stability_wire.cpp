@@ -24,7 +24,7 @@ std::string tension_script(const std::vector<study::WireRun>& runs, const std::s
       png_terminal(), gnuplot_quoted(title));
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const char* colour = run_colours[i % 4];
-    for (const coupling::SlackInterval& slack : runs[i].slack) {
+    for (const multibody::SlackInterval& slack : runs[i].slack) {
       const double end = std::isfinite(slack.end) ? slack.end : runs[i].run->result.time.back();
       gp += fmt::format("set object rect from {}, graph {:.3f} to {}, graph {:.3f} fc rgb '{}' fs solid 0.8 noborder front\n",
                         slack.start, 0.01 + 0.045 * static_cast<double>(i), end, 0.045 + 0.045 * static_cast<double>(i),
@@ -63,7 +63,7 @@ std::string tension_csv(const std::vector<study::WireRun>& runs) {
 
 StabilitySection wire_section(const scene::Scene& scene, const study::WireStudy& study, const StagedDirectory& out) {
   const std::vector<study::WireRun>& runs = study.runs;
-  const coupling::IntegratorSettings& settings = study.settings;
+  const multibody::RunSettings& settings = study.settings;
   const double lift = study.lift, m = study.mass, k = study.stiffness, g = study.gravity;
   const double s = study.static_stretch, omega = study.omega, amplitude = study.amplitude, hand_peak = study.hand_peak;
   StabilitySection section;
@@ -87,21 +87,21 @@ StabilitySection wire_section(const scene::Scene& scene, const study::WireStudy&
     const double static_tension = wire.run->statics.outputs.wire_tension;
     constexpr std::size_t listed = 3;  // in the table; summary.json has every one
     std::string intervals;
-    for (const coupling::SlackInterval& slack : wire.slack) {
+    for (const multibody::SlackInterval& slack : wire.slack) {
       if (&slack - wire.slack.data() == listed) intervals += fmt::format(", … ({} in all)", wire.slack.size());
       if (&slack - wire.slack.data() < static_cast<std::ptrdiff_t>(listed)) intervals += fmt::format("{}{}–{} s", intervals.empty() ? "" : ", ", shown(slack.start),
                                std::isfinite(slack.end) ? shown(slack.end) : "end");
-      StabilityCell cell{label, "slack", false, std::string(coupling::to_string(coupling::FailureKind::wire_slack)),
+      StabilityCell cell{label, "slack", false, std::string(solve::to_string(solve::FailureKind::wire_slack)),
                          slack.start, std::isfinite(slack.end) ? slack.end - slack.start : NAN, "s",
                          "the wire went slack (duration in value)", {}};
       section.cells.push_back(std::move(cell));
     }
     std::string peaks;
-    for (const coupling::SnapLoad& snap : wire.snaps) {
+    for (const multibody::SnapLoad& snap : wire.snaps) {
       if (&snap - wire.snaps.data() == listed) peaks += fmt::format(", … ({} in all)", wire.snaps.size());
       if (&snap - wire.snaps.data() < static_cast<std::ptrdiff_t>(listed)) peaks += fmt::format("{}{} MN at {} s (× {})", peaks.empty() ? "" : ", ", shown(snap.peak_tension / 1e6),
                            shown(snap.peak_time), shown(snap.ratio, 3));
-      StabilityCell cell{label, "snap", false, std::string(coupling::to_string(coupling::FailureKind::snap_load)),
+      StabilityCell cell{label, "snap", false, std::string(solve::to_string(solve::FailureKind::snap_load)),
                          snap.time, snap.peak_tension, "N",
                          fmt::format("peak {} N at {} s, {} × the static tension", shown(snap.peak_tension, 6),
                                      shown(snap.peak_time), shown(snap.ratio, 3)),

@@ -18,8 +18,8 @@ constexpr double degrees = 180.0 / std::numbers::pi;
 }  // namespace
 
 std::string statics_text(const std::string& scene_file, const scene::Scene& scene, const study::StaticsResult& result) {
-  const coupling::StaticEquilibrium& s = result.statics;
-  const coupling::CraneOutputs& o = s.outputs;
+  const multibody::StaticEquilibrium& s = result.statics;
+  const multibody::CraneOutputs& o = s.outputs;
   std::string text = fmt::format("scene       {}{}\nmodel       {} ({} elastic DOFs), calm water\n\n", scene_file,
                                  scene.name.empty() ? "" : " (" + scene.name + ")", result.choice.label(), result.elastic_dof);
   text += static_report(scene, result.choice, s);
@@ -35,7 +35,7 @@ std::string statics_text(const std::string& scene_file, const scene::Scene& scen
   }
   text += fmt::format("  boom      root moment {:.6g} N m, tip deflection {:.3f} % of the boom length\n", o.joint_reaction.z(),
                       100.0 * o.tip_deflection.norm() / scene.boom.mesh.length);
-  const coupling::StaticSolvePath& path = result.path;
+  const multibody::StaticSolvePath& path = result.path;
   text += fmt::format("  balance   largest out-of-balance force {:.3g} N, moment {:.3g} N m (hull and cargo); scaled residual {:.2g}\n",
                       path.max_force_residual, path.max_moment_residual, s.scaled_residual);
   text += fmt::format("  solver    {}, {} residual evaluations\n",
@@ -43,8 +43,8 @@ std::string statics_text(const std::string& scene_file, const scene::Scene& scen
                                                            "({} steps)", path.continuation_steps)
                                              : std::string("Newton from the rest pose"),
                       s.function_evaluations);
-  for (const coupling::Detection& note : result.notes) {
-    text += fmt::format("  note      {}: {} ({})\n", coupling::to_string(note.kind), note.cause, note.remedy);
+  for (const solve::Detection& note : result.notes) {
+    text += fmt::format("  note      {}: {} ({})\n", solve::to_string(note.kind), note.cause, note.remedy);
   }
   return text;
 }
@@ -70,14 +70,14 @@ std::string statics_json(const std::string& scene_file, const scene::Scene& scen
   json["cargo_weight_N"] = result.cargo_weight;
   json["buckling_load_ratio"] = result.buckling_ratio;
   json["notes"] = Json::array();
-  for (const coupling::Detection& note : result.notes) json["notes"].push_back(detection_json(note));
+  for (const solve::Detection& note : result.notes) json["notes"].push_back(detection_json(note));
   json["ffrf_version"] = ffrf_version();
   json["date"] = utc_date();
   return json_text(json);
 }
 
 std::string statics_failure_json(const std::string& scene_file, const scene::Scene& scene, const std::string& model,
-                                 const coupling::SolverFailure& failure) {
+                                 const solve::SolverFailure& failure) {
   Json json;
   json["command"] = "statics";
   json["status"] = "failed";

@@ -14,6 +14,6 @@ std::string statics_text(const std::string& scene_file, const scene::Scene& scen
 std::string statics_json(const std::string& scene_file, const scene::Scene& scene, const study::StaticsResult& result);
 // {"command": "statics", "status": "failed", "model", "scene", "failure": {...}, "solver"}.
 std::string statics_failure_json(const std::string& scene_file, const scene::Scene& scene, const std::string& model,
-                                 const coupling::SolverFailure& failure);
+                                 const solve::SolverFailure& failure);
 
 }  // namespace ffrf::report

@@ -36,9 +36,9 @@ std::optional<double> optional_number(const std::string& field) {
 
 std::string sweep_csv_header() {
   std::string h = "id,model,family,elements,modes,static_modes,integrator,rtol,step,erk_stable_step";
-  for (const auto channel : coupling::all_channels) h += fmt::format(",{}_nrms", coupling::channel_name(channel));
-  for (const auto channel : coupling::all_channels) {
-    h += fmt::format(",{}_max_{}", coupling::channel_name(channel), unit_slug(display_unit(channel)));
+  for (const auto channel : multibody::all_channels) h += fmt::format(",{}_nrms", multibody::channel_name(channel));
+  for (const auto channel : multibody::all_channels) {
+    h += fmt::format(",{}_max_{}", multibody::channel_name(channel), unit_slug(display_unit(channel)));
   }
   return h + ",daf_error,worst_nrms,steps,state_size,work,rhs_evaluations,jacobian_evaluations,newton_iterations,status,reason,wall_s,radiation\n";
 }
@@ -50,12 +50,12 @@ std::string sweep_csv_line(const study::SweepResult& r) {
       "{},{},{},{},{},{},{},{},{},{}", c.id, c.choice.label(), study::model_family(c.choice),
       c.choice.kind == scene::BoomKind::rigid ? std::string() : std::to_string(c.choice.elements),
       modal ? std::to_string(c.choice.modes) : std::string(), modal ? (c.choice.static_modes ? "1" : "0") : "",
-      coupling::to_string(c.integrator), c.rtol > 0.0 ? number(c.rtol) : std::string(), r.step > 0.0 ? number(r.step) : "",
+      solve::to_string(c.integrator), c.rtol > 0.0 ? number(c.rtol) : std::string(), r.step > 0.0 ? number(r.step) : "",
       r.stable_step > 0.0 ? number(r.stable_step) : "");
   const bool ok = r.status == study::RunStatus::ok;
   for (const auto& e : r.errors.channels) line += "," + (ok ? number(e.normalized_rms) : std::string());
-  for (std::size_t channel = 0; channel < coupling::all_channels.size(); ++channel) {
-    const double unit = display_scale(coupling::all_channels[channel]);
+  for (std::size_t channel = 0; channel < multibody::all_channels.size(); ++channel) {
+    const double unit = display_scale(multibody::all_channels[channel]);
     line += "," + (ok ? number(r.errors.channels[channel].max_abs * unit) : std::string());
   }
   line += "," + (ok ? number(r.errors.daf_error) : std::string());

@@ -9,13 +9,13 @@
 
 namespace ffrf::report {
 
-std::string_view display_unit(coupling::OutputChannel channel) {
-  return channel == coupling::OutputChannel::cargo_pitch || channel == coupling::OutputChannel::crane_pitch
+std::string_view display_unit(multibody::OutputChannel channel) {
+  return channel == multibody::OutputChannel::cargo_pitch || channel == multibody::OutputChannel::crane_pitch
              ? "deg"
-             : coupling::channel_unit(channel);
+             : multibody::channel_unit(channel);
 }
 
-double display_scale(coupling::OutputChannel channel) { return display_unit(channel) == "deg" ? 180.0 / std::numbers::pi : 1.0; }
+double display_scale(multibody::OutputChannel channel) { return display_unit(channel) == "deg" ? 180.0 / std::numbers::pi : 1.0; }
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "coupling/error_metrics.hpp"
+#include "multibody/error_metrics.hpp"
 #include "report/json.hpp"
 #include "study/verdict.hpp"
 
@@ -13,8 +13,8 @@ namespace ffrf::report {
 
 // The unit a report shows a channel's absolute errors in ("deg" for pitch, else the SI unit) and
 // the factor from the SI value.
-std::string_view display_unit(coupling::OutputChannel channel);
-double display_scale(coupling::OutputChannel channel);
+std::string_view display_unit(multibody::OutputChannel channel);
+double display_scale(multibody::OutputChannel channel);
 
 // "5.3× less" / "1.2× more" (of a speed-up ratio reference / model); "-" when not finite.
 std::string speedup_words(double ratio);

@@ -92,7 +92,7 @@ std::shared_ptr<const hydro::RadiationMemoryModel> bem_radiation_model(const Sce
   return cache.emplace(key, std::move(model)).first->second;
 }
 
-void apply_bem_hydrodynamics(const Scene& scene, coupling::HullModel& hull, const std::optional<sea::WaveField>& wave) {
+void apply_bem_hydrodynamics(const Scene& scene, multibody::HullModel& hull, const std::optional<sea::WaveField>& wave) {
   if (!scene.bem) return;
   hull.added_mass.setZero();
   hull.radiation_damping.setZero();

@@ -1,4 +1,4 @@
-// The hull's BEM hydrodynamics for the crane (coupling::HullModel): the radiation model chosen by
+// The hull's BEM hydrodynamics for the crane (multibody::HullModel): the radiation model chosen by
 // bem.radiation_model (or `--radiation`) and the BEM excitation for the wave field's components,
 // both moved from the BEM body origin O to G1 by the rigid transfer T (sea/bem_excitation.hpp):
 // A_G = TᵀAT, B_G = TᵀBT, K_G = TᵀKT, X_G = TᵀX. docs/hydrodynamics.md §6.
@@ -14,7 +14,7 @@
 
 #include <optional>
 
-#include "coupling/crane_model.hpp"
+#include "multibody/crane_model.hpp"
 #include "scene/scene.hpp"
 
 namespace ffrf::scene {
@@ -29,6 +29,6 @@ Scene with_radiation(const Scene& scene, hydro::RadiationKind kind);
 std::shared_ptr<const hydro::RadiationMemoryModel> bem_radiation_model(const Scene& scene);
 // Fills hull.radiation_memory and, with bem.excitation = "bem" and a wave, hull.bem_excitation
 // (the hull's diagonal constants are zeroed: [bem] replaces [radiation]).
-void apply_bem_hydrodynamics(const Scene& scene, coupling::HullModel& hull, const std::optional<sea::WaveField>& wave);
+void apply_bem_hydrodynamics(const Scene& scene, multibody::HullModel& hull, const std::optional<sea::WaveField>& wave);
 
 }  // namespace ffrf::scene

@@ -74,7 +74,7 @@ const fem::BeamModel& coords_beam(const modal::ModalCoordinates& coords) { retur
 
 // The floating hull of a crane scene: box section, hydrostatic stiffness for the radiation damping,
 // added mass, mooring, the even-keel pose at the mean draft.
-coupling::HullModel floating_hull(const Scene& scene) {
+multibody::HullModel floating_hull(const Scene& scene) {
   const Hull& hull = *scene.hull;
   const Cargo& cargo = *scene.cargo;
   const Wire& wire = *scene.wire;
@@ -89,7 +89,7 @@ coupling::HullModel floating_hull(const Scene& scene) {
                       " t exceeds the buoyancy of the whole box ρ·L·B·D = " + std::to_string(capacity / 1e3) +
                       " t; reduce the masses or enlarge hull.length/width/depth");
   }
-  coupling::HullModel h;
+  multibody::HullModel h;
   h.mass = hull.mass;
   h.pitch_inertia = hull.pitch_inertia();
   const double mid_x = hull.g1_aft_of_mid_length;  // mid-length lies forward of G1
@@ -118,16 +118,16 @@ coupling::HullModel floating_hull(const Scene& scene) {
 }
 
 // The hub of a hub scene: held, or turned by its prescribed rotation; no water.
-coupling::HullModel driven_hub(const Hub& hub) {
-  coupling::HullModel h;
+multibody::HullModel driven_hub(const Hub& hub) {
+  multibody::HullModel h;
   h.hydrostatics = false;
   h.fixed = true;
   h.support_pose = Eigen::Vector3d(0.0, 0.0, hub.angle);
-  coupling::PrescribedMotion motion;
+  multibody::PrescribedMotion motion;
   motion.pose0 = h.support_pose;
-  motion.profile = hub.motion == HubMotion::spin_up         ? coupling::RotationProfile::spin_up
-                   : hub.motion == HubMotion::constant_spin ? coupling::RotationProfile::constant_spin
-                                                            : coupling::RotationProfile::fixed;
+  motion.profile = hub.motion == HubMotion::spin_up         ? multibody::RotationProfile::spin_up
+                   : hub.motion == HubMotion::constant_spin ? multibody::RotationProfile::constant_spin
+                                                            : multibody::RotationProfile::fixed;
   motion.spin_rate = hub.spin_rate;
   motion.spin_up_time = hub.spin_up_time;
   h.prescribed = motion;
@@ -167,13 +167,13 @@ SceneWaters scene_waters(const Scene& scene) {
   return waters;
 }
 
-std::shared_ptr<const coupling::SharedCraneModel> with_waters(const coupling::SharedCraneModel& model, const Scene& scene) {
+std::shared_ptr<const multibody::SharedCraneModel> with_waters(const multibody::SharedCraneModel& model, const Scene& scene) {
   const SceneWaters waters = scene_waters(scene);
   return model.in_waters(waters.hull, waters.wave);
 }
 
 template <fem::ElasticCoordinates Coords>
-coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords, Stiffening stiffening) {
+multibody::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords, Stiffening stiffening) {
   if (!scene.has_base() || !scene.boom.mount || (scene.is_crane() && (!scene.cargo || !scene.wire))) {
     scene_problem(scene, "hull", "", "a crane run needs [hull] (with [cargo], [wire] and boom.angle/root_x/root_y) or [hub]");
   }
@@ -189,13 +189,13 @@ coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords
     centrifugal = coords.project(fem::assemble_geometric_stiffness(
         beam.mesh, beam.dofs, fem::centrifugal_axial_force(beam.mesh, centrifugal_hub_radius(scene))));
   }
-  coupling::FloatingFrameBody<Coords> boom(std::move(coords), beta);
+  multibody::FloatingFrameBody<Coords> boom(std::move(coords), beta);
   if (prestress.size() > 0) boom.set_prestress_stiffness(std::move(prestress));
   if (centrifugal.size() > 0) boom.set_centrifugal_stiffness(std::move(centrifugal));
-  coupling::BodyPoint tip = boom.point(scene.boom.mesh.length);
+  multibody::BodyPoint tip = boom.point(scene.boom.mesh.length);
   const BoomMount& mount = *scene.boom.mount;
   SceneWaters waters = scene_waters(scene);
-  coupling::CraneModel<Coords> model{std::move(waters.hull),
+  multibody::CraneModel<Coords> model{std::move(waters.hull),
                                      {Eigen::Vector2d(mount.root_x, mount.root_y), mount.angle},
                                      std::move(boom), std::move(tip), {}, {}, env.gravity, env.water_density,
                                      std::move(waters.wave)};
@@ -210,8 +210,8 @@ coupling::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords
   return model;
 }
 
-template coupling::CraneModel<nodal::NodalCoordinates> build_crane_model(const Scene&, nodal::NodalCoordinates, Stiffening);
-template coupling::CraneModel<modal::ModalCoordinates> build_crane_model(const Scene&, modal::ModalCoordinates, Stiffening);
+template multibody::CraneModel<nodal::NodalCoordinates> build_crane_model(const Scene&, nodal::NodalCoordinates, Stiffening);
+template multibody::CraneModel<modal::ModalCoordinates> build_crane_model(const Scene&, modal::ModalCoordinates, Stiffening);
 
 modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {
   auto beam = boom_beam(scene, choice.kind == BoomKind::rigid ? 1 : choice.elements);
@@ -233,17 +233,17 @@ modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& 
   return modal::ModalCoordinates(beam, std::move(basis));
 }
 
-std::shared_ptr<const coupling::SharedCraneModel> build_shared_crane(const Scene& scene, const BoomChoice& choice,
+std::shared_ptr<const multibody::SharedCraneModel> build_shared_crane(const Scene& scene, const BoomChoice& choice,
                                                                      modal::ModeCache* cache) {
   const Stiffening stiffening = choice.stiffening.value_or(scene.boom.stiffening);
   if (choice.kind == BoomKind::nodal) {
-    return coupling::make_shared_crane_model(
+    return multibody::make_shared_crane_model(
         build_crane_model(scene, nodal::NodalCoordinates(boom_beam(scene, choice.elements)), stiffening));
   }
-  return coupling::make_shared_crane_model(build_crane_model(scene, modal_coordinates(scene, choice, cache), stiffening));
+  return multibody::make_shared_crane_model(build_crane_model(scene, modal_coordinates(scene, choice, cache), stiffening));
 }
 
-std::unique_ptr<coupling::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {
+std::unique_ptr<multibody::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {
   return build_shared_crane(scene, choice, cache)->equations();
 }
 

@@ -54,19 +54,19 @@ CraneModelCache::Entry& CraneModelCache::built_entry(const BoomChoice& choice, s
   return *entry;
 }
 
-std::shared_ptr<const coupling::SharedCraneModel> CraneModelCache::model(const BoomChoice& choice,
+std::shared_ptr<const multibody::SharedCraneModel> CraneModelCache::model(const BoomChoice& choice,
                                                                          std::optional<hydro::RadiationKind> radiation) {
   std::unique_lock<std::mutex> lock;
   return built_entry(choice, radiation, lock).model;
 }
 
-coupling::StaticEquilibrium CraneModelCache::static_equilibrium(const BoomChoice& choice,
+multibody::StaticEquilibrium CraneModelCache::static_equilibrium(const BoomChoice& choice,
                                                                 std::optional<hydro::RadiationKind> radiation) {
   std::unique_lock<std::mutex> lock;
   Entry& entry = built_entry(choice, radiation, lock);
   if (!entry.statics) {
-    const std::unique_ptr<coupling::CraneEquations> equations = entry.model->equations();
-    entry.statics = coupling::solve_static_equilibrium(*equations, equations->initial_guess());
+    const std::unique_ptr<multibody::CraneEquations> equations = entry.model->equations();
+    entry.statics = multibody::solve_static_equilibrium(*equations, equations->initial_guess());
     ++solved_;
   }
   return *entry.statics;

@@ -1,9 +1,9 @@
 // The shared crane models of one scene, built once and shared by threads: each distinct model — boom kind × mesh ×
 // coordinates × mode set × solver × stiffening × the [bem] hull's radiation model — is built once,
 // on its first request, and handed to every run and thread that asks for it; each run makes its own
-// CraneEquations from it (workspace and run state, coupling/crane_system.hpp). The vibration modes
+// CraneEquations from it (workspace and run state, multibody/crane_system.hpp). The vibration modes
 // come from a modal::ModeCache (one eigen solve per mesh). A model's static equilibrium in calm water
-// (coupling/static_equilibrium.hpp) depends on the model alone — KINSOL from the rest-pose guess at
+// (multibody/crane_statics.hpp) depends on the model alone — KINSOL from the rest-pose guess at
 // its fixed tolerance, a deterministic solve — so it is solved once per model too and handed out as
 // a copy. Thread-safe: concurrent requests for one model wait for the one build (or solve); requests
 // for different models build in parallel. A build or solve that throws is not cached (the next
@@ -17,8 +17,8 @@
 #include <optional>
 #include <tuple>
 
-#include "coupling/crane_system.hpp"
-#include "coupling/static_equilibrium.hpp"
+#include "multibody/crane_system.hpp"
+#include "multibody/crane_statics.hpp"
 #include "modal/mode_cache.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
@@ -43,11 +43,11 @@ class CraneModelCache {
 
   // The model of `choice` on scene(radiation) (build_shared_crane), built on the first request.
   // Throws what build_shared_crane throws (SceneError, EigenSolverError, std::runtime_error).
-  std::shared_ptr<const coupling::SharedCraneModel> model(const BoomChoice& choice,
+  std::shared_ptr<const multibody::SharedCraneModel> model(const BoomChoice& choice,
                                                           std::optional<hydro::RadiationKind> radiation = std::nullopt);
   // The static equilibrium of that model (solve_static_equilibrium from its initial guess), solved on
-  // the first request. Throws what model() throws and coupling::SolverFailure.
-  coupling::StaticEquilibrium static_equilibrium(const BoomChoice& choice,
+  // the first request. Throws what model() throws and solve::SolverFailure.
+  multibody::StaticEquilibrium static_equilibrium(const BoomChoice& choice,
                                                  std::optional<hydro::RadiationKind> radiation = std::nullopt);
   int models_built() const { return built_.load(); }          // successful builds so far
   int equilibria_solved() const { return solved_.load(); }   // successful static solves so far
@@ -58,8 +58,8 @@ class CraneModelCache {
   using Key = std::tuple<int, int, int, bool, int, int, int>;
   struct Entry {
     std::mutex building;
-    std::shared_ptr<const coupling::SharedCraneModel> model;
-    std::optional<coupling::StaticEquilibrium> statics;
+    std::shared_ptr<const multibody::SharedCraneModel> model;
+    std::optional<multibody::StaticEquilibrium> statics;
   };
   std::optional<hydro::RadiationKind> effective(std::optional<hydro::RadiationKind> radiation) const;
   Key key_of(const BoomChoice& choice, std::optional<hydro::RadiationKind> radiation) const;

@@ -59,7 +59,7 @@ WaveKinematicsChoice wave_kinematics_choice(const Scene& scene) {
   return choice;
 }
 
-std::shared_ptr<const sea::IncidentWaveRecord> recorded_sea(const Scene& scene, const coupling::HullModel& hull,
+std::shared_ptr<const sea::IncidentWaveRecord> recorded_sea(const Scene& scene, const multibody::HullModel& hull,
                                                                  const sea::WaveField& wave, WaveKinematicsChoice* choice) {
   WaveKinematicsChoice chosen = wave_kinematics_choice(scene);
   const auto give = [&](std::shared_ptr<const sea::IncidentWaveRecord> record) {

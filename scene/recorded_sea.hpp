@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "coupling/crane_model.hpp"
+#include "multibody/crane_model.hpp"
 #include "scene/scene.hpp"
 
 namespace ffrf::scene {
@@ -23,7 +23,7 @@ struct WaveKinematicsChoice {
 // The record for `hull` (its section, and its floating pose in support_pose) in `wave`, or nullptr
 // with `choice` saying why not. Throws SceneError naming wave.kinematics when the record would not
 // fit in memory (the size and the way out in the message).
-std::shared_ptr<const sea::IncidentWaveRecord> recorded_sea(const Scene& scene, const coupling::HullModel& hull,
+std::shared_ptr<const sea::IncidentWaveRecord> recorded_sea(const Scene& scene, const multibody::HullModel& hull,
                                                                  const sea::WaveField& wave,
                                                                  WaveKinematicsChoice* choice = nullptr);
 

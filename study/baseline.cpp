@@ -9,7 +9,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "coupling/error_metrics.hpp"
+#include "multibody/error_metrics.hpp"
 #include "fem/boundary.hpp"
 #include "scene/irregular_sea.hpp"
 #include "study/error_measure.hpp"
@@ -20,7 +20,7 @@
 namespace ffrf::study {
 
 BaselineModel baseline_model(const scene::Scene& scene, const scene::BoomChoice& choice,
-                             const coupling::IntegratorSettings& settings) {
+                             const multibody::RunSettings& settings) {
   BaselineModel model;
   model.choice = choice;
   model.choice.stiffening = choice.stiffening.value_or(scene.boom.stiffening);
@@ -44,7 +44,7 @@ const ChannelBaseline* Baseline::channel(const std::string& name) const {
   return found == channels.end() ? nullptr : &*found;
 }
 
-std::string series_column(coupling::OutputChannel channel) { return std::string(coupling::output_channel(channel).column); }
+std::string series_column(multibody::OutputChannel channel) { return std::string(multibody::output_channel(channel).column); }
 
 std::optional<std::string> output_column(const std::string& name) {
   for (const SeriesSpec& spec : crane_series()) {
@@ -102,7 +102,7 @@ namespace {
 std::vector<std::string> chosen_columns(const scene::Scene& scene, const std::vector<std::string>& outputs) {
   std::vector<std::string> columns;
   if (outputs.empty()) {
-    for (const coupling::OutputChannel channel : judged_outputs(scene)) columns.push_back(series_column(channel));
+    for (const multibody::OutputChannel channel : judged_outputs(scene)) columns.push_back(series_column(channel));
     return columns;
   }
   for (const std::string& name : outputs) {

@@ -28,8 +28,8 @@
 #include <string>
 #include <vector>
 
-#include "coupling/error_metrics.hpp"
-#include "coupling/simulation.hpp"
+#include "multibody/error_metrics.hpp"
+#include "multibody/crane_run.hpp"
 #include "modal/mode_cache.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
@@ -41,7 +41,7 @@ namespace ffrf::study {
 // (the scene's defaults written out, so that a later change of the scene does not change the model).
 struct BaselineModel {
   scene::BoomChoice choice;  // stiffening always set
-  coupling::Integrator integrator = coupling::Integrator::cvode;
+  solve::Integrator integrator = solve::Integrator::cvode;
   double relative_tolerance = 1e-6;
   double absolute_tolerance = 1e-6;
   double duration = 0.0;         // [s]
@@ -51,7 +51,7 @@ struct BaselineModel {
 };
 // The model of a choice run with `settings` on `scene` (stiffening: the choice's or the scene's).
 BaselineModel baseline_model(const scene::Scene& scene, const scene::BoomChoice& choice,
-                             const coupling::IntegratorSettings& settings);
+                             const multibody::RunSettings& settings);
 // The integrator request that reproduces the model's settings on a scene (integrator_settings()
 // adds the scene's output interval and detector bounds).
 DynamicsRequest dynamics_request(const BaselineModel& model);
@@ -94,7 +94,7 @@ struct IntegrationError {
 
 struct Baseline {
   BaselineModel model;
-  coupling::SolverStats cost;  // steps, evaluations, wall time of the recorded run
+  solve::SolverStats cost;  // steps, evaluations, wall time of the recorded run
   int boom_elements = 0;       // the mesh of the frequencies
   std::vector<BoomFrequency> boom_frequencies;
   // Lowest natural modes of the coupled crane, lowest first; empty for a hub scene and in a
@@ -113,7 +113,7 @@ struct Baseline {
 
 struct BaselineRequest {
   scene::BoomChoice choice;
-  coupling::IntegratorSettings settings;
+  multibody::RunSettings settings;
   std::vector<std::string> outputs;  // crane_series() columns; empty: the scene's judged outputs
   std::optional<int> decimation;     // of the histories; default: history_decimation() (a check
                                      // uses its baseline's, so that both sample the same times)
@@ -127,7 +127,7 @@ inline constexpr int baseline_coupled_modes = 8;
 inline constexpr int history_points_per_period = 20;
 
 // The crane_series() column of a judged output channel ("wire_tension" → "wire_tension_N").
-std::string series_column(coupling::OutputChannel channel);
+std::string series_column(multibody::OutputChannel channel);
 // The column for a name: a column itself ("wire_tension_N") or a channel ("wire_tension");
 // nothing when neither.
 std::optional<std::string> output_column(const std::string& name);
@@ -149,7 +149,7 @@ std::vector<CoupledFrequency> coupled_frequencies(const scene::Scene& scene, con
 
 // Runs the model once (study::run_model) and keeps what a baseline holds, without the integration
 // error. Throws std::invalid_argument for an unknown output, scene::SceneError,
-// coupling::SolverFailure and modal::EigenSolverError.
+// solve::SolverFailure and modal::EigenSolverError.
 Baseline record_run(const scene::Scene& scene, const BaselineRequest& request, modal::ModeCache* modes = nullptr);
 
 // record_run(), then the same run with tighter settings (1/100 of the tolerances; a fixed-step

@@ -215,7 +215,7 @@ std::vector<SettingDifference> model_differences(const BaselineModel& b, const B
     return c.stiffening ? std::string(scene::to_string(*c.stiffening)) : std::string("the scene's");
   };
   differ("geometric stiffening", stiffening(b.choice), stiffening(r.choice));
-  differ("integrator", std::string(coupling::to_string(b.integrator)), std::string(coupling::to_string(r.integrator)));
+  differ("integrator", std::string(solve::to_string(b.integrator)), std::string(solve::to_string(r.integrator)));
   differ("relative tolerance", fmt::format("{:g}", b.relative_tolerance), fmt::format("{:g}", r.relative_tolerance));
   differ("absolute tolerance", fmt::format("{:g}", b.absolute_tolerance), fmt::format("{:g}", r.absolute_tolerance));
   differ("duration", fmt::format("{:g} s", b.duration), fmt::format("{:g} s", r.duration));
@@ -257,7 +257,7 @@ BaselineCheck compare_baseline(const Baseline& baseline, const Baseline& run, co
 }
 
 BaselineCheck check_baseline(const scene::Scene& scene, const Baseline& baseline, const scene::BoomChoice& choice,
-                             const coupling::IntegratorSettings& settings, const BaselineTolerances& tolerances,
+                             const multibody::RunSettings& settings, const BaselineTolerances& tolerances,
                              modal::ModeCache* modes) {
   validate(tolerances, baseline);
   BaselineRequest request;

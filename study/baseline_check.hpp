@@ -123,7 +123,7 @@ BaselineCheck compare_baseline(const Baseline& baseline, const Baseline& run, co
 // Runs `choice` with `settings` on `scene` (recording the baseline's channels at its decimation) and
 // judges it. Throws as record_run() and validate().
 BaselineCheck check_baseline(const scene::Scene& scene, const Baseline& baseline, const scene::BoomChoice& choice,
-                             const coupling::IntegratorSettings& settings, const BaselineTolerances& tolerances,
+                             const multibody::RunSettings& settings, const BaselineTolerances& tolerances,
                              modal::ModeCache* modes = nullptr);
 
 }  // namespace ffrf::study

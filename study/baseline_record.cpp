@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <array>
 
-#include "coupling/failure.hpp"
+#include "solve/failure.hpp"
 #include "study/baseline.hpp"
 #include "study/baseline_check.hpp"
 
@@ -59,7 +59,7 @@ Baseline record_baseline(const scene::Scene& scene, const BaselineRequest& reque
     try {
       baseline.integration_error = largest_deviation(baseline, record_run(scene, tighter, modes));
       return baseline;
-    } catch (const coupling::SolverFailure& failure) {
+    } catch (const solve::SolverFailure& failure) {
       failures += fmt::format("{}at 1/{:g} of the {}: {}", failures.empty() ? "" : "; ", factor,
                               fixed_step ? "step" : "tolerances", failure.what());
     }

@@ -44,7 +44,7 @@ Comparison compare(const scene::Scene& scene, const CompareRequest& request,
     PreparedRun prepared = prepare_run(models, model.choice);
     c.runs.push_back(integrate_run(modelled, prepared, request.settings));
     c.plotted.push_back(model.plotted);
-    c.errors.push_back(coupling::compare_runs(c.runs.back().result, c.reference.run.result, c.window_start));
+    c.errors.push_back(multibody::compare_runs(c.runs.back().result, c.reference.run.result, c.window_start));
     c.split.push_back(split_errors(c.runs.back(), c.reference.run, c.window_start));
     c.worst.push_back(worst_error(c.errors.back(), c.judged));
     const ModelRun& done = c.runs.back();
@@ -64,7 +64,7 @@ std::vector<MeasuredModel> measured_models(const Comparison& c) {
     MeasuredModel model;
     model.label = c.runs[m].choice.label();
     model.error = c.worst[m].error;
-    model.worst_output = std::string(coupling::channel_name(c.worst[m].channel));
+    model.worst_output = std::string(multibody::channel_name(c.worst[m].channel));
     model.wall_seconds = c.runs[m].result.stats.wall_seconds;
     model.work = c.runs[m].work();
     models.push_back(std::move(model));

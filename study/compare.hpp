@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "coupling/error_metrics.hpp"
+#include "multibody/error_metrics.hpp"
 #include "study/error_measure.hpp"
 #include "study/error_split.hpp"
 #include "study/reference.hpp"
@@ -30,7 +30,7 @@ struct ComparedModel {
 std::vector<ComparedModel> compared_models();
 
 struct CompareRequest {
-  coupling::IntegratorSettings settings;  // of every compared model (study::integrator_settings)
+  multibody::RunSettings settings;  // of every compared model (study::integrator_settings)
   ReferenceOptions reference;
   // Geometric stiffening of every model and the reference; empty: what the physics needs at
   // `tolerance` together with the scene's (physics_stiffening: the same as recommend's reference).
@@ -39,15 +39,15 @@ struct CompareRequest {
 };
 
 struct Comparison {
-  coupling::IntegratorSettings settings;
+  multibody::RunSettings settings;
   scene::Stiffening stiffening = scene::Stiffening::none;  // of every model and the reference
   bool stiffening_from_physics = false;                    // decided by physics_stiffening (not given)
   ConvergedReference reference;
   double window_start = 0.0;                    // errors are measured for t >= window_start
-  std::vector<coupling::OutputChannel> judged;  // the outputs the worst error is taken over
+  std::vector<multibody::OutputChannel> judged;  // the outputs the worst error is taken over
   std::vector<ModelRun> runs;                   // in compared_models() order
   std::vector<bool> plotted;                    // per run
-  std::vector<coupling::RunErrors> errors;      // per run, against the reference (total errors)
+  std::vector<multibody::RunErrors> errors;      // per run, against the reference (total errors)
   std::vector<SplitErrors> split;               // per run: the static and dynamic parts per channel
   std::vector<WorstError> worst;                // per run, over `judged`
   // Per run, an irregular sea: its statistics and spectra against the reference's (study/irregular_statistics.hpp).
@@ -58,7 +58,7 @@ struct Comparison {
 // The verdict's view of the compared runs (label, worst error, wall time, work).
 std::vector<MeasuredModel> measured_models(const Comparison& comparison);
 
-// Throws scene::SceneError, coupling::SolverFailure, SettingError (the tolerance); `progress` is told what runs next
+// Throws scene::SceneError, solve::SolverFailure, SettingError (the tolerance); `progress` is told what runs next
 // ("reference", or a model's label) — the name of what failed when one of them throws.
 Comparison compare(const scene::Scene& scene, const CompareRequest& request,
                    const std::function<void(const std::string&)>& progress = {}, modal::ModeCache* modes = nullptr);

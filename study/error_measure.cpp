@@ -14,22 +14,22 @@ double error_window(const scene::Scene& scene, double duration) {
   return duration > ramp + 1e-9 ? ramp : 0.0;
 }
 
-std::vector<coupling::OutputChannel> judged_outputs(const scene::Scene& scene) {
-  using coupling::OutputChannel;
+std::vector<multibody::OutputChannel> judged_outputs(const scene::Scene& scene) {
+  using multibody::OutputChannel;
   if (!scene.is_crane()) return {OutputChannel::tip_deflection};
   return {OutputChannel::cargo_heave, OutputChannel::cargo_pitch,  OutputChannel::crane_heave,
           OutputChannel::crane_pitch, OutputChannel::wire_tension, OutputChannel::joint_moment};
 }
 
-std::string output_list(const std::vector<coupling::OutputChannel>& outputs) {
+std::string output_list(const std::vector<multibody::OutputChannel>& outputs) {
   std::string s;
-  for (const auto channel : outputs) s += (s.empty() ? "" : ",") + std::string(coupling::channel_name(channel));
+  for (const auto channel : outputs) s += (s.empty() ? "" : ",") + std::string(multibody::channel_name(channel));
   return s;
 }
 
-WorstError worst_error(const coupling::RunErrors& errors, const std::vector<coupling::OutputChannel>& outputs) {
+WorstError worst_error(const multibody::RunErrors& errors, const std::vector<multibody::OutputChannel>& outputs) {
   WorstError worst;
-  for (const coupling::OutputChannel channel : outputs) {
+  for (const multibody::OutputChannel channel : outputs) {
     const double e = errors[channel].normalized_rms;
     if (e >= worst.error || !std::isfinite(e)) {
       worst = {e, channel};

@@ -8,13 +8,13 @@
 //    deflection of a crane is left out: it is the boom model's own coordinate (a rigid boom has
 //    none, so its error would be 100 % by construction), and what it does to the lift shows in
 //    the cargo motion, the wire tension and the root moment. Every channel's error is still reported.
-//  * Worst error: the largest normalized RMS error (coupling/error_metrics.hpp) over the judged outputs.
+//  * Worst error: the largest normalized RMS error (multibody/error_metrics.hpp) over the judged outputs.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "coupling/error_metrics.hpp"
+#include "multibody/error_metrics.hpp"
 #include "scene/scene.hpp"
 
 namespace ffrf::study {
@@ -25,15 +25,15 @@ double ramp_end(const scene::Scene& scene);
 double error_window(const scene::Scene& scene, double duration);
 
 // The judged outputs of a scene (see above), in report order.
-std::vector<coupling::OutputChannel> judged_outputs(const scene::Scene& scene);
+std::vector<multibody::OutputChannel> judged_outputs(const scene::Scene& scene);
 // "cargo_heave,wire_tension"
-std::string output_list(const std::vector<coupling::OutputChannel>& outputs);
+std::string output_list(const std::vector<multibody::OutputChannel>& outputs);
 
 struct WorstError {
   double error = 0.0;  // largest normalized RMS error; NaN or inf when a judged channel is
-  coupling::OutputChannel channel = coupling::OutputChannel::cargo_heave;
+  multibody::OutputChannel channel = multibody::OutputChannel::cargo_heave;
 };
 // The worst judged channel; a non-finite error wins (it is a failure, not a small number).
-WorstError worst_error(const coupling::RunErrors& errors, const std::vector<coupling::OutputChannel>& outputs);
+WorstError worst_error(const multibody::RunErrors& errors, const std::vector<multibody::OutputChannel>& outputs);
 
 }  // namespace ffrf::study

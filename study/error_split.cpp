@@ -44,10 +44,10 @@ SplitError split_error(const std::vector<double>& time, const std::vector<double
 namespace {
 
 template <class Value>
-std::vector<double> sampled(const coupling::RunResult& run, Value value) {
+std::vector<double> sampled(const multibody::RunResult& run, Value value) {
   std::vector<double> series;
   series.reserve(run.samples.size());
-  for (const coupling::CraneOutputs& sample : run.samples) series.push_back(value(sample));
+  for (const multibody::CraneOutputs& sample : run.samples) series.push_back(value(sample));
   return series;
 }
 
@@ -55,9 +55,9 @@ std::vector<double> sampled(const coupling::RunResult& run, Value value) {
 
 SplitErrors split_errors(const ModelRun& run, const ModelRun& reference, double window_start) {
   SplitErrors errors;
-  for (std::size_t c = 0; c < coupling::all_channels.size(); ++c) {
-    const coupling::OutputChannel channel = coupling::all_channels[c];
-    const auto value = [channel](const coupling::CraneOutputs& o) { return coupling::channel_value(o, channel); };
+  for (std::size_t c = 0; c < multibody::all_channels.size(); ++c) {
+    const multibody::OutputChannel channel = multibody::all_channels[c];
+    const auto value = [channel](const multibody::CraneOutputs& o) { return multibody::channel_value(o, channel); };
     errors[c] = split_error(reference.result.time, sampled(run.result, value), value(run.static_outputs()),
                             sampled(reference.result, value), value(reference.static_outputs()), window_start);
   }

@@ -2,11 +2,11 @@
 // An output of a run is x(t) = x_s + d(t): the value at the model's own static equilibrium x_s and
 // the displacement d(t) from it; the reference's is x_ref(t) = x_ref_s + d_ref(t). With the scale
 // S = RMS(x_ref − mean x_ref) over the error window (the reference's dynamic amplitude, the
-// normalization of coupling/error_metrics.hpp):
+// normalization of multibody/error_metrics.hpp):
 //  * static error  = |x_s − x_ref_s| / S: how far the model's equilibrium is off (the static table);
 //  * dynamic error = RMS(d − d_ref) / S over the window: how far its motion about its own
 //    equilibrium is off — the difference the charts' difference panels draw (dynamic_difference);
-//  * total error   = RMS(x − x_ref) / S (coupling::compare_runs): the two together, which the
+//  * total error   = RMS(x − x_ref) / S (multibody::compare_runs): the two together, which the
 //    verdict judges — a design reads absolute positions and loads, so an equilibrium that is off
 //    counts as much as a motion that is off. With e = d − d_ref and Δ = x_s − x_ref_s,
 //    total² = (Δ² + 2 Δ mean(e) + RMS(e)²) / S², so total ≤ static + dynamic.
@@ -17,7 +17,7 @@
 #include <array>
 #include <vector>
 
-#include "coupling/error_metrics.hpp"
+#include "multibody/error_metrics.hpp"
 #include "study/output_series.hpp"
 #include "study/run_pipeline.hpp"
 
@@ -36,9 +36,9 @@ struct SplitError {
 SplitError split_error(const std::vector<double>& time, const std::vector<double>& x, double x_static,
                        const std::vector<double>& reference, double reference_static, double window_start);
 
-// Every error channel of coupling/error_metrics.hpp (in all_channels order; pitch in rad), x_s from
+// Every error channel of multibody/error_metrics.hpp (in all_channels order; pitch in rad), x_s from
 // each run's static equilibrium.
-using SplitErrors = std::array<SplitError, coupling::all_channels.size()>;
+using SplitErrors = std::array<SplitError, multibody::all_channels.size()>;
 SplitErrors split_errors(const ModelRun& run, const ModelRun& reference, double window_start);
 
 // d(t) − d_ref(t) of one time-series column (output_series.hpp; its unit, pitch in degrees) at

@@ -32,10 +32,10 @@ WorkForecast work_forecast(const scene::Scene& scene, const RecommendReasoning& 
   return f;
 }
 
-double expected_solver_work(const WorkForecast& f, int elastic_dof, coupling::Integrator integrator,
+double expected_solver_work(const WorkForecast& f, int elastic_dof, solve::Integrator integrator,
                             double explicit_step_limit) {
   const double state_size = 2.0 * (f.rigid_coordinates + elastic_dof);
-  if (integrator == coupling::Integrator::arkode) {
+  if (integrator == solve::Integrator::arkode) {
     const double stability_steps = explicit_step_limit > 0.0 ? f.duration / explicit_step_limit : 0.0;
     return state_size * erk_evaluations_per_step * std::max(erk_accuracy_step_ratio * f.accuracy_steps, stability_steps);
   }

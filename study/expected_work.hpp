@@ -14,7 +14,7 @@
 //    count here.
 #pragma once
 
-#include "coupling/simulation.hpp"
+#include "multibody/crane_run.hpp"
 #include "scene/scene.hpp"
 #include "study/recommend_reasoning.hpp"
 
@@ -34,7 +34,7 @@ WorkForecast work_forecast(const scene::Scene& scene, const RecommendReasoning& 
 
 // Expected RHS evaluations × state size of a model with `elastic_dof` coordinates under `integrator`
 // (ARKODE: `explicit_step_limit` [s], its stability limit).
-double expected_solver_work(const WorkForecast& forecast, int elastic_dof, coupling::Integrator integrator,
+double expected_solver_work(const WorkForecast& forecast, int elastic_dof, solve::Integrator integrator,
                             double explicit_step_limit);
 
 }  // namespace ffrf::study

@@ -18,8 +18,8 @@ namespace {
 
 constexpr std::size_t kMinimumSamples = 32;
 
-std::vector<double> column_record(std::string_view column, const std::vector<coupling::CraneOutputs>& samples,
-                                  const coupling::CraneOutputs& statics, std::size_t first) {
+std::vector<double> column_record(std::string_view column, const std::vector<multibody::CraneOutputs>& samples,
+                                  const multibody::CraneOutputs& statics, std::size_t first) {
   const SeriesSpec& spec = crane_series()[series_index(column)];
   std::vector<double> record;
   record.reserve(samples.size() - first);
@@ -69,8 +69,8 @@ std::vector<std::string_view> statistics_columns() {
 }
 
 std::optional<IrregularStatistics> irregular_statistics(const scene::Scene& scene, const std::vector<double>& time,
-                                                        const std::vector<coupling::CraneOutputs>& samples,
-                                                        const coupling::CraneOutputs& statics, std::size_t first,
+                                                        const std::vector<multibody::CraneOutputs>& samples,
+                                                        const multibody::CraneOutputs& statics, std::size_t first,
                                                         double dt) {
   if (!scene.sea || !scene.is_crane() || samples.size() < first + kMinimumSamples || !(dt > 0.0)) return std::nullopt;
   IrregularStatistics out;
@@ -104,10 +104,10 @@ std::optional<IrregularStatistics> irregular_statistics(const scene::Scene& scen
   return out;
 }
 
-std::optional<IrregularErrors> irregular_errors(const scene::Scene& scene, const std::vector<coupling::CraneOutputs>& run,
-                                                const coupling::CraneOutputs& run_statics,
-                                                const std::vector<coupling::CraneOutputs>& reference,
-                                                const coupling::CraneOutputs& reference_statics, std::size_t first,
+std::optional<IrregularErrors> irregular_errors(const scene::Scene& scene, const std::vector<multibody::CraneOutputs>& run,
+                                                const multibody::CraneOutputs& run_statics,
+                                                const std::vector<multibody::CraneOutputs>& reference,
+                                                const multibody::CraneOutputs& reference_statics, std::size_t first,
                                                 double dt) {
   const std::size_t count = std::min(run.size(), reference.size());
   if (!scene.sea || !scene.is_crane() || count < first + kMinimumSamples || !(dt > 0.0)) return std::nullopt;

@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-#include "coupling/crane_equations.hpp"
+#include "multibody/crane_equations.hpp"
 #include "hydro/extreme_values.hpp"
 #include "hydro/irregular_comparison.hpp"
 #include "hydro/spectral_estimate.hpp"
@@ -58,8 +58,8 @@ std::vector<std::string_view> statistics_columns();
 // Nothing for a scene without an irregular sea or a window of fewer than 32 samples. The samples
 // must be uniform at `sample_interval` from time[first] on.
 std::optional<IrregularStatistics> irregular_statistics(const scene::Scene& scene, const std::vector<double>& time,
-                                                        const std::vector<coupling::CraneOutputs>& samples,
-                                                        const coupling::CraneOutputs& statics, std::size_t first,
+                                                        const std::vector<multibody::CraneOutputs>& samples,
+                                                        const multibody::CraneOutputs& statics, std::size_t first,
                                                         double sample_interval);
 
 // Statistics and spectra of a run against the reference, per statistics_columns() entry.
@@ -67,10 +67,10 @@ struct IrregularErrors {
   std::vector<hydro::IrregularComparison> responses;
   double worst_statistic = 0.0;  // the largest over the responses
 };
-std::optional<IrregularErrors> irregular_errors(const scene::Scene& scene, const std::vector<coupling::CraneOutputs>& run,
-                                                const coupling::CraneOutputs& run_statics,
-                                                const std::vector<coupling::CraneOutputs>& reference,
-                                                const coupling::CraneOutputs& reference_statics, std::size_t first,
+std::optional<IrregularErrors> irregular_errors(const scene::Scene& scene, const std::vector<multibody::CraneOutputs>& run,
+                                                const multibody::CraneOutputs& run_statics,
+                                                const std::vector<multibody::CraneOutputs>& reference,
+                                                const multibody::CraneOutputs& reference_statics, std::size_t first,
                                                 double sample_interval);
 
 }  // namespace ffrf::study

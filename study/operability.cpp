@@ -9,7 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "coupling/time_reached.hpp"
+#include "solve/time_reached.hpp"
 #include "distributed/stable_hash.hpp"
 #include "hydro/wave_spectrum.hpp"
 #include "scene/irregular_sea.hpp"
@@ -43,7 +43,7 @@ std::string_view to_string(CellStatus status) {
 }
 
 std::string CellModel::label() const {
-  return fmt::format("{}, {} rtol {:.0e}", choice.label(), coupling::to_string(integrator), relative_tolerance);
+  return fmt::format("{}, {} rtol {:.0e}", choice.label(), solve::to_string(integrator), relative_tolerance);
 }
 
 void validate(const OperabilityRequest& r) {
@@ -160,7 +160,7 @@ CellModel reasoned_model(const scene::Scene& scene, const SeaCell& cell, const O
   model.dynamic_modes = reasoning.dynamic_modes;
   model.euler_load = reasoning.euler_load;
   for (const Candidate& candidate : candidate_ladder(reasoning_scene, reasoning, modes)) {
-    if (candidate.prune_reason.empty() && candidate.integrator != coupling::Integrator::arkode) {
+    if (candidate.prune_reason.empty() && candidate.integrator != solve::Integrator::arkode) {
       model.choice = candidate.choice;
       model.integrator = candidate.integrator;
       return model;
@@ -191,7 +191,7 @@ CellModel recommended_model(const scene::Scene& scene, const SeaCell& cell, cons
   std::optional<Recommendation> rec;
   try {
     rec = recommend(probe, recommend_request, {}, modes);
-  } catch (const coupling::SolverFailure&) {
+  } catch (const solve::SolverFailure&) {
     return reasoned_model(scene, cell, request, modes, top);  // the probe's reference failed: no verification
   }
   CellModel model;
@@ -219,7 +219,7 @@ CellModel converged_model(const scene::Scene& scene, const OperabilityRequest& r
   model.choice.kind = scene::BoomKind::nodal;
   model.choice.elements = request.converged_elements;
   model.choice.stiffening = physics_stiffening(scene, request.tolerance);
-  model.integrator = coupling::Integrator::cvode;
+  model.integrator = solve::Integrator::cvode;
   model.relative_tolerance = request.tolerance / 1000.0;
   return model;
 }
@@ -227,23 +227,23 @@ CellModel converged_model(const scene::Scene& scene, const OperabilityRequest& r
 SeedExtremes run_record(const scene::Scene& scene, const SeaCell& cell, int seed_index, const CellModel& model,
                         const OperabilityRequest& request, modal::ModeCache* modes, std::atomic<double>* time_reached) {
   const scene::Scene record = record_scene(scene, cell, record_seed(cell, seed_index), request);
-  const coupling::TimeReachedSink progress(time_reached);
+  const solve::TimeReachedSink progress(time_reached);
   DynamicsRequest dynamics;
   dynamics.integrator = model.integrator;
   dynamics.relative_tolerance = dynamics.absolute_tolerance = model.relative_tolerance;
   dynamics.duration = request.duration;
-  const coupling::IntegratorSettings settings = integrator_settings(record, dynamics);
+  const multibody::RunSettings settings = integrator_settings(record, dynamics);
   const ModelRun run = run_model(record, model.choice, settings, modes);
   const std::size_t n = run.result.time.size();
   std::vector<double> tension(n), heave(n), moment(n), axial(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const coupling::CraneOutputs& o = run.result.samples[i];
+    const multibody::CraneOutputs& o = run.result.samples[i];
     tension[i] = o.wire_tension;
     heave[i] = o.cargo.y();
     moment[i] = o.joint_reaction.z();
     axial[i] = o.root_axial_force;
   }
-  const coupling::CraneOutputs& at_rest = run.static_outputs();
+  const multibody::CraneOutputs& at_rest = run.static_outputs();
   SeedExtremes extremes = seed_extremes(run.result.time, tension, heave, moment, axial, scene::wave_ramp_duration(record),
                                         at_rest.wire_tension, at_rest.joint_reaction.z());
   extremes.work = run.work();

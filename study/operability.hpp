@@ -19,7 +19,7 @@
 #include <string_view>
 #include <vector>
 
-#include "coupling/simulation.hpp"
+#include "multibody/crane_run.hpp"
 #include "distributed/farm.hpp"
 #include "hydro/wave_synthesis.hpp"
 #include "modal/mode_cache.hpp"
@@ -66,7 +66,7 @@ double probe_duration(const SeaCell& cell, const OperabilityRequest& request);
 // kept candidate, unverified), and why.
 struct CellModel {
   scene::BoomChoice choice;
-  coupling::Integrator integrator = coupling::Integrator::cvode;
+  solve::Integrator integrator = solve::Integrator::cvode;
   double relative_tolerance = 1e-4;
   double excitation_top = 0.0;  // [rad/s] the upper edge of the sea's energy band
   int dynamic_modes = 0;

@@ -18,7 +18,7 @@
 #include <string_view>
 #include <vector>
 
-#include "coupling/simulation.hpp"
+#include "multibody/crane_run.hpp"
 
 namespace ffrf::study {
 

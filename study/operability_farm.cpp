@@ -1,7 +1,7 @@
 // The operability table on the distributed engine (see operability.hpp): one task per (physical
 // cell, seed) and per verified (cell, seed) with the converged model; each task's record is its
 // SeedExtremes (operability_criteria.hpp) as text, so the journal holds finished records and a rerun
-// resumes. Each task's simulated time is followed (coupling/time_reached.hpp), so that the progress
+// resumes. Each task's simulated time is followed (solve/time_reached.hpp), so that the progress
 // line's ETA moves inside the first records.
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 #include <atomic>
 #include <stdexcept>
 
-#include "coupling/stop_request.hpp"
+#include "solve/stop_request.hpp"
 #include "distributed/atomic_file.hpp"
 #include "distributed/errors.hpp"
 #include "study/operability.hpp"
@@ -105,7 +105,7 @@ OperabilityStudy run_operability(distributed::Session& session, const scene::Sce
     const CellModel& model = r.converged ? converged[r.cell] : recommended[r.cell];
     try {
       return encode(run_record(scene, cells[r.cell], r.seed, model, request, &modes, &time_reached[task.index]));
-    } catch (const coupling::Interrupted& stop) {  // not a result: the rerun computes it again
+    } catch (const solve::Interrupted& stop) {  // not a result: the rerun computes it again
       throw distributed::TaskAbandoned(fmt::format("{}: interrupted by signal {}", task.key, stop.signal));
     }
   };

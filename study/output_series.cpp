@@ -12,11 +12,11 @@
 namespace ffrf::study {
 namespace {
 
-using coupling::CraneOutputs;
+using multibody::CraneOutputs;
 
 }  // namespace
 
-std::span<const SeriesSpec> crane_series() { return coupling::output_channels(); }
+std::span<const SeriesSpec> crane_series() { return multibody::output_channels(); }
 
 std::size_t series_index(std::string_view column) {
   const std::span<const SeriesSpec> series = crane_series();

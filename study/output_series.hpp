@@ -1,6 +1,6 @@
 // The time-series outputs of a crane run: the model's output-channel table
-// (coupling/output_channels.hpp: CSV column name with its unit, chart title, how a value is taken
-// from coupling::CraneOutputs and whether the column is the displacement from static equilibrium).
+// (multibody/output_channels.hpp: CSV column name with its unit, chart title, how a value is taken
+// from multibody::CraneOutputs and whether the column is the displacement from static equilibrium).
 // The CSV, the JSON statistics, the charts and the reports all iterate it, so an output added to
 // the table appears everywhere.
 #pragma once
@@ -10,12 +10,12 @@
 #include <vector>
 
 #include "scene/scene.hpp"
-#include "coupling/crane_equations.hpp"
-#include "coupling/output_channels.hpp"
+#include "multibody/crane_equations.hpp"
+#include "multibody/output_channels.hpp"
 
 namespace ffrf::study {
 
-using SeriesSpec = coupling::OutputChannelSpec;  // value(sample): in the display unit (the CSV's)
+using SeriesSpec = multibody::OutputChannelSpec;  // value(sample): in the display unit (the CSV's)
 
 // Every column after time_s, in CSV order.
 std::span<const SeriesSpec> crane_series();
@@ -23,9 +23,9 @@ std::span<const SeriesSpec> crane_series();
 std::size_t series_index(std::string_view column);
 
 // The CSV value of one output at one sample.
-double series_value(const SeriesSpec& spec, const coupling::CraneOutputs& sample, const coupling::CraneOutputs& statics);
+double series_value(const SeriesSpec& spec, const multibody::CraneOutputs& sample, const multibody::CraneOutputs& statics);
 // The value the statistics measure RMS about: 0 for displacements from static, else the static value.
-double series_reference(const SeriesSpec& spec, const coupling::CraneOutputs& statics);
+double series_reference(const SeriesSpec& spec, const multibody::CraneOutputs& statics);
 
 // The samples the statistics use: t > ramp end when the scene has a wave (all samples when the
 // run ends before the ramp does, or in calm water).
@@ -45,7 +45,7 @@ struct SeriesStats {
   double standard_deviation = 0.0;  // about the mean (population: divided by the count)
 };
 // Statistics of every series over the window.
-std::vector<SeriesStats> series_stats(const std::vector<coupling::CraneOutputs>& samples,
-                                      const coupling::CraneOutputs& statics, const StatsWindow& window);
+std::vector<SeriesStats> series_stats(const std::vector<multibody::CraneOutputs>& samples,
+                                      const multibody::CraneOutputs& statics, const StatsWindow& window);
 
 }  // namespace ffrf::study

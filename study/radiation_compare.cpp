@@ -27,7 +27,7 @@ std::string radiation_label(const scene::Scene& scene) {
 }
 
 RadiationComparison compare_radiation(const scene::Scene& scene, const scene::BoomChoice& choice,
-                                      const coupling::IntegratorSettings& settings, double tolerance) {
+                                      const multibody::RunSettings& settings, double tolerance) {
   judge({}, 0.0, 0.0, tolerance);  // the tolerance is valid before anything runs
   RadiationComparison c;
   c.choice = choice;
@@ -42,11 +42,11 @@ RadiationComparison compare_radiation(const scene::Scene& scene, const scene::Bo
     c.kinds.push_back(kind);
     c.labels.push_back(radiation_label(modelled));
     c.runs.push_back(run_model(modelled, choice, settings));
-    c.worst.push_back(worst_error(coupling::compare_runs(c.runs.back().result, c.reference.result, c.window_start), judged));
+    c.worst.push_back(worst_error(multibody::compare_runs(c.runs.back().result, c.reference.result, c.window_start), judged));
     MeasuredModel m;
     m.label = c.labels.back();
     m.error = c.worst.back().error;
-    m.worst_output = std::string(coupling::channel_name(c.worst.back().channel));
+    m.worst_output = std::string(multibody::channel_name(c.worst.back().channel));
     m.wall_seconds = c.runs.back().result.stats.wall_seconds;
     // The radiation model changes the cost of a right-hand side, not the state size: its cost is
     // the integration's wall time.
@@ -66,7 +66,7 @@ std::string radiation_comparison_text(const RadiationComparison& c) {
   for (std::size_t m = 0; m < c.runs.size(); ++m) {
     const ModelVerdict& v = c.verdict.models[m];
     text += fmt::format("  {:<38} {:>9.3g}% {:>16} {:>9.3f} {:>8} {:>7.2f}x  {}\n", c.labels[m], 100.0 * c.worst[m].error,
-                        coupling::channel_name(c.worst[m].channel), c.runs[m].result.stats.wall_seconds,
+                        multibody::channel_name(c.worst[m].channel), c.runs[m].result.stats.wall_seconds,
                         c.runs[m].result.stats.steps, v.wall_speedup, v.passed ? "pass" : "FAIL");
   }
   text += fmt::format("  {:<38} {:>10} {:>16} {:>9.3f} {:>8} {:>8}  {}\n", c.reference_label, "reference", "-",

@@ -32,9 +32,9 @@ using scene::with_radiation;  // scene/bem_hull_model.hpp
 // The label of the scene's radiation model ("convolution T_c = 34.9 s (698 samples)").
 std::string radiation_label(const scene::Scene& scene);
 
-// Throws scene::SceneError, coupling::SolverFailure, SettingError (the tolerance).
+// Throws scene::SceneError, solve::SolverFailure, SettingError (the tolerance).
 RadiationComparison compare_radiation(const scene::Scene& scene, const scene::BoomChoice& choice,
-                                      const coupling::IntegratorSettings& settings, double tolerance);
+                                      const multibody::RunSettings& settings, double tolerance);
 
 // The text table of the comparison (error, wall time, steps, the verdict).
 std::string radiation_comparison_text(const RadiationComparison& comparison);

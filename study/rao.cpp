@@ -12,7 +12,7 @@
 
 #include <fmt/format.h>
 
-#include "coupling/crane_equations.hpp"
+#include "multibody/crane_equations.hpp"
 #include "scene/crane_model_cache.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/run_pipeline.hpp"
@@ -21,7 +21,7 @@
 namespace ffrf::study {
 namespace {
 
-using coupling::LinearisedCrane;
+using multibody::LinearisedCrane;
 
 // The name of minimal coordinate j (the elastic ones are "boom").
 std::string coordinate_name(const LinearisedCrane& linear, int j) {
@@ -182,10 +182,10 @@ namespace {
 
 // The outputs whose resonance peaks are refined: all but the rigid boom's tip deflection (zero).
 std::vector<bool> searched_outputs(const scene::BoomChoice& choice) {
-  std::vector<bool> searched(coupling::linear_output_count, true);
+  std::vector<bool> searched(multibody::linear_output_count, true);
   if (choice.kind == scene::BoomKind::rigid) {
-    searched[static_cast<std::size_t>(coupling::LinearOutput::tip_axial)] = false;
-    searched[static_cast<std::size_t>(coupling::LinearOutput::tip_transverse)] = false;
+    searched[static_cast<std::size_t>(multibody::LinearOutput::tip_axial)] = false;
+    searched[static_cast<std::size_t>(multibody::LinearOutput::tip_transverse)] = false;
   }
   return searched;
 }
@@ -206,7 +206,7 @@ std::vector<NaturalMode> coupled_natural_modes(const scene::Scene& scene, const 
   calm.wave.reset();
   calm.sea.reset();
   PreparedRun prepared = prepare_run(calm, choice, modes);
-  return natural_modes(coupling::linearise_crane(*prepared.equations, prepared.statics.z));
+  return natural_modes(multibody::linearise_crane(*prepared.equations, prepared.statics.z));
 }
 
 RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoRequest& request,
@@ -255,9 +255,9 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
     if (progress) progress(choice.label());
     const auto start = std::chrono::steady_clock::now();
     PreparedRun prepared = prepare_run(models, choice);
-    const std::shared_ptr<const coupling::SharedCraneModel> calm_model = models.model(choice);
-    const LinearisedCrane linear = coupling::linearise_crane(*prepared.equations, prepared.statics.z);
-    const coupling::OutputMap outputs = coupling::linear_outputs(*prepared.equations, linear);
+    const std::shared_ptr<const multibody::SharedCraneModel> calm_model = models.model(choice);
+    const LinearisedCrane linear = multibody::linearise_crane(*prepared.equations, prepared.statics.z);
+    const multibody::OutputMap outputs = multibody::linear_outputs(*prepared.equations, linear);
     ModelRao model;
     model.choice = choice;
     model.coordinates = linear.size();
@@ -265,7 +265,7 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
     // The outputs Y = (G + iωH) X at ω.
     const OutputResponse response_at = [&](double omega) -> Eigen::VectorXcd {
       const auto waved = scene::with_waters(*calm_model, with_regular_wave(scene, 2.0 * a, 2.0 * std::numbers::pi / omega, 0.0))->equations();
-      Eigen::VectorXcd force = coupling::wave_excitation(*waved, linear, omega, a);
+      Eigen::VectorXcd force = multibody::wave_excitation(*waved, linear, omega, a);
       Eigen::MatrixXd mass = linear.mass, damping = linear.damping;
       if (request.hydrodynamics && linear.hull_at >= 0) {
         const HullFrequencyTerms terms = request.hydrodynamics(omega);
@@ -297,10 +297,10 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
       model.added_frequencies = refined.added;
     }
     for (const Eigen::VectorXcd& response : responses) {
-      for (int k = 0; k < coupling::linear_output_count; ++k) model.response[static_cast<std::size_t>(k)].push_back(response(k));
+      for (int k = 0; k < multibody::linear_output_count; ++k) model.response[static_cast<std::size_t>(k)].push_back(response(k));
     }
     if (request.sea_spectrum) {
-      for (int k = 0; k < coupling::linear_output_count; ++k) {
+      for (int k = 0; k < multibody::linear_output_count; ++k) {
         model.significant_response[static_cast<std::size_t>(k)] =
             significant_response(model.angular_frequencies, model.response[static_cast<std::size_t>(k)], *request.sea_spectrum);
       }

@@ -1,5 +1,5 @@
 // The frequency domain (`ffrf rao`, docs/theory.md §12): response amplitude operators of the crane
-// linearised about its static equilibrium (coupling/linearisation.hpp) — the linearised time
+// linearised about its static equilibrium (multibody/linearisation.hpp) — the linearised time
 // domain, the cheap second method that checks it. At each angular frequency ω
 //   X(ω) = (−ω² (M + A'(ω)) + iω (C + B'(ω)) + K)⁻¹ F̂(ω),    Y(ω) = (G + iω H) X(ω),
 // per metre of wave amplitude, phase relative to the elevation at x = 0 (ζ = a cos ωt; response
@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "coupling/linearisation.hpp"
+#include "multibody/linearisation.hpp"
 #include "modal/mode_cache.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
@@ -45,14 +45,14 @@ struct HullFrequencyTerms {
 using HullHydrodynamics = std::function<HullFrequencyTerms(double angular_frequency)>;
 
 // M, C, K: the natural modes, lowest first (one per complex pair; overdamped ones as real roots).
-std::vector<NaturalMode> natural_modes(const coupling::LinearisedCrane& linear);
+std::vector<NaturalMode> natural_modes(const multibody::LinearisedCrane& linear);
 // With a hull impedance Z(s) (a memory hull, study/rao_bem.hpp): the roots of
 // det(s²M + sC + K + Z(s)) = 0, each found by Newton's method on log det, s ← s − 1/tr(D⁻¹D′), from
 // the constant system's eigenvalue (modes up to `refine_below` rad/s; faster ones, which the hull's
 // frequency-dependent part barely moves, stay the constant system's), at most `max_newton_steps`
 // steps each. A start that does not converge keeps the constant system's root and says why
 // (NaturalMode::unrefined).
-std::vector<NaturalMode> natural_modes(const coupling::LinearisedCrane& linear, const HullImpedance& impedance,
+std::vector<NaturalMode> natural_modes(const multibody::LinearisedCrane& linear, const HullImpedance& impedance,
                                        double refine_below, int max_newton_steps = 40);
 
 // X = (−ω²M + iωC + K)⁻¹ F by Eigen's complex LU; throws std::runtime_error when singular (at an
@@ -97,11 +97,11 @@ struct ModelRao {
   // requested ones and the refinement's, ascending.
   std::vector<double> angular_frequencies;
   // response[output][frequency index], per metre of wave amplitude (LinearOutput order)
-  std::array<std::vector<std::complex<double>>, coupling::linear_output_count> response;
+  std::array<std::vector<std::complex<double>>, multibody::linear_output_count> response;
   std::vector<ResonancePeak> peaks;  // refine_peaks: each output's peak at each resonant mode in the band (output = LinearOutput)
   std::size_t added_frequencies = 0;  // refine_peaks: frequencies the refinement added
   // sea_spectrum: 4 √(∫ |Y(ω)|² S(ω) dω) per output over the model's frequencies (LinearOutput order)
-  std::array<double, coupling::linear_output_count> significant_response{};
+  std::array<double, multibody::linear_output_count> significant_response{};
   double wall_seconds = 0.0;
 };
 
@@ -121,7 +121,7 @@ struct RaoResult {
 };
 
 // The scene must float a crane (hull) in water. Throws scene::SceneError (the scene cannot make
-// the crane), coupling::SolverFailure (static equilibrium), std::invalid_argument (no frequency, or
+// the crane), solve::SolverFailure (static equilibrium), std::invalid_argument (no frequency, or
 // one ≤ 0), std::runtime_error (a singular system at some ω). `progress` is told each model's label.
 RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoRequest& request,
                                        const std::function<void(const std::string&)>& progress = {},

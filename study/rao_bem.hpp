@@ -1,5 +1,5 @@
 // The hull of a [bem] scene in the frequency domain (`ffrf rao`; docs/hydrodynamics.md §6.1).
-// The crane's linearisation (coupling/linearisation.hpp) holds the radiation model's A_model in the
+// The crane's linearisation (multibody/linearisation.hpp) holds the radiation model's A_model in the
 // mass matrix and its ∂μ/∂ẋ at t = 0 (empty history) in the damping: A(ω_c), B(ω_c) for the constant
 // model, A∞ and ½·dt·K(0) for the convolution, A∞ and 0 for the state-space form. The frequency
 // domain adds the hull impedance beyond them, Z(s) (3 × 3, at G1), so that the crane's dynamic

@@ -15,7 +15,7 @@
 namespace ffrf::study {
 namespace {
 
-using coupling::LinearOutput;
+using multibody::LinearOutput;
 
 // Samples per wave period of the check's runs: resolves the second harmonic in the fit.
 constexpr double samples_per_period = 40.0;
@@ -23,7 +23,7 @@ constexpr double samples_per_period = 40.0;
 // its frequency is below half the sampling's Nyquist frequency (faster modes are gone by then).
 constexpr double dead_mode_exponent = -30.0;
 
-double sample_value(LinearOutput output, const coupling::CraneOutputs& sample) {
+double sample_value(LinearOutput output, const multibody::CraneOutputs& sample) {
   switch (output) {
     case LinearOutput::hull_surge: return sample.hull.x();
     case LinearOutput::hull_heave: return sample.hull.y();

@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "coupling/linearisation.hpp"
-#include "coupling/simulation.hpp"
+#include "multibody/linearisation.hpp"
+#include "multibody/crane_run.hpp"
 #include "modal/mode_cache.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
@@ -42,10 +42,10 @@ struct TimeDomainCheckRequest {
 };
 
 // The judged channels: hull heave and pitch, cargo heave.
-std::vector<coupling::LinearOutput> checked_outputs();
+std::vector<multibody::LinearOutput> checked_outputs();
 
 struct ChannelCheck {
-  coupling::LinearOutput output;
+  multibody::LinearOutput output;
   double frequency_domain = 0.0;  // |RAO| per metre of wave amplitude (as `ffrf rao` gives it)
   // [bem] scenes: |RAO| with the hull's radiation as the run's radiation model realises it (A∞ and the
   // transform of its kernel; study/rao_bem.hpp) — the consistent comparison; 0 without [bem].
@@ -78,7 +78,7 @@ struct PeriodCheck {
   double window_start = 0.0;  // [s]
   int fitted_modes = 0;   // free modes in the fit basis
   std::vector<ChannelCheck> channels;
-  coupling::SolverStats stats;
+  solve::SolverStats stats;
   std::optional<NaturalMode> nearest_mode;  // the resonant natural mode nearest in frequency
   bool in_half_power_band = false;          // the wave's ω within the nearest mode's half-power band
   std::optional<NonlinearityProbe> probe;   // a failed period with probe_nonlinearity
@@ -99,7 +99,7 @@ struct TimeDomainCheck {
   std::optional<double> suggested_wave_height() const;
 };
 
-// Throws scene::SceneError, coupling::SolverFailure, std::invalid_argument (a period ≤ 0, a wave
+// Throws scene::SceneError, solve::SolverFailure, std::invalid_argument (a period ≤ 0, a wave
 // height ≤ 0, a tolerance outside (0, 1)). `progress` is told each run's period and wave height as it starts.
 TimeDomainCheck check_time_domain(const scene::Scene& scene, const scene::BoomChoice& choice,
                                   const TimeDomainCheckRequest& request,

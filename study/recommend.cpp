@@ -45,7 +45,7 @@ void add_model(const scene::Scene& scene, const RecommendReasoning& r, const Wor
     Candidate c;
     c.choice = choice;
     c.elastic_dof = dof;
-    c.expected_work = expected_solver_work(forecast, dof, coupling::Integrator::cvode, 0.0);
+    c.expected_work = expected_solver_work(forecast, dof, solve::Integrator::cvode, 0.0);
     c.estimated_error = estimate;
     c.prune_reason = reason;
     if (c.prune_reason.empty() && variant == scene::Stiffening::none && r.required_stiffening != scene::Stiffening::none) {
@@ -54,7 +54,7 @@ void add_model(const scene::Scene& scene, const RecommendReasoning& r, const Wor
     const double limit = explicit_limit(scene, choice, modes);
     if (limit >= scene.simulation.output_interval) {
       Candidate e = c;
-      e.integrator = coupling::Integrator::arkode;
+      e.integrator = solve::Integrator::arkode;
       e.explicit_step_limit = limit;
       e.expected_work = expected_solver_work(forecast, dof, e.integrator, limit);
       ladder.push_back(e);
@@ -77,7 +77,7 @@ std::string_view to_string(CandidateStatus status) {
 }
 
 std::string Candidate::label() const {
-  return fmt::format("{}, {}", choice.label(), coupling::to_string(integrator));
+  return fmt::format("{}, {}", choice.label(), solve::to_string(integrator));
 }
 
 std::vector<Candidate> candidate_ladder(const scene::Scene& scene, const RecommendReasoning& r, modal::ModeCache* modes) {
@@ -150,7 +150,7 @@ void verify(const scene::Scene& scene, const Recommendation& rec, modal::ModeCac
   request.integrator = c.integrator;
   request.relative_tolerance = request.absolute_tolerance = rec.reasoning.relative_tolerance;
   request.duration = rec.duration;
-  const coupling::IntegratorSettings settings = integrator_settings(scene, request);
+  const multibody::RunSettings settings = integrator_settings(scene, request);
   try {
     const ModelRun run = run_model(scene, c.choice, settings, &modes);
     c.state_size = run.state_size;
@@ -158,13 +158,13 @@ void verify(const scene::Scene& scene, const Recommendation& rec, modal::ModeCac
     c.rhs_evaluations = run.result.stats.function_evaluations;
     c.wall_seconds = run.result.stats.wall_seconds;
     const WorstError worst =
-        worst_error(coupling::compare_runs(run.result, rec.reference.run.result, rec.reference.window_start), rec.outputs);
+        worst_error(multibody::compare_runs(run.result, rec.reference.run.result, rec.reference.window_start), rec.outputs);
     c.error = worst.error;
-    c.worst_output = std::string(coupling::channel_name(worst.channel));
+    c.worst_output = std::string(multibody::channel_name(worst.channel));
     c.status = std::isfinite(c.error) && c.error <= rec.reasoning.tolerance ? CandidateStatus::passed : CandidateStatus::failed;
-  } catch (const coupling::SolverFailure& failure) {
+  } catch (const solve::SolverFailure& failure) {
     c.status = CandidateStatus::solver_failure;
-    c.failure = fmt::format("{} ({}) at t = {:.3g} s: {}", coupling::to_string(failure.kind()), failure.solver(),
+    c.failure = fmt::format("{} ({}) at t = {:.3g} s: {}", solve::to_string(failure.kind()), failure.solver(),
                             failure.time(), failure.cause());
   }
 }

@@ -1,7 +1,7 @@
 // The candidate models of `ffrf recommend`, in order of expected solver work (study/expected_work.hpp),
 // each pruned by the reasoning (recommend_reasoning.hpp) or verified against the converged reference
 // at the model-choice rtol (study/verdict.hpp); the search stops at the first candidate whose worst
-// normalized RMS error over the chosen outputs (coupling/error_metrics.hpp, the error of `ffrf
+// normalized RMS error over the chosen outputs (multibody/error_metrics.hpp, the error of `ffrf
 // compare` and `ffrf sweep`) is within the tolerance, then proves minimality by running the next
 // cheaper candidate of the ladder even when the reasoning pruned it. The expected work is a
 // prediction, the measured one scatters about it: the kept candidates whose expected work is within
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "coupling/simulation.hpp"
+#include "multibody/crane_run.hpp"
 #include "study/recommend_reasoning.hpp"
 #include "study/reference.hpp"
 #include "study/verdict.hpp"
@@ -28,7 +28,7 @@ std::string_view to_string(CandidateStatus status);
 
 struct Candidate {
   scene::BoomChoice choice;
-  coupling::Integrator integrator = coupling::Integrator::cvode;
+  solve::Integrator integrator = solve::Integrator::cvode;
   int elastic_dof = 0;                  // predicted size of the elastic coordinates
   double expected_work = 0.0;           // the ladder's order: expected_solver_work (study/expected_work.hpp)
   double estimated_error = std::numeric_limits<double>::quiet_NaN();  // a priori (NaN: none)
@@ -52,7 +52,7 @@ std::vector<Candidate> candidate_ladder(const scene::Scene& scene, const Recomme
 
 struct RecommendRequest {
   double tolerance = 0.01;                       // in (0, 1)
-  std::vector<coupling::OutputChannel> outputs;  // judged; empty: judged_outputs(scene)
+  std::vector<multibody::OutputChannel> outputs;  // judged; empty: judged_outputs(scene)
   double duration = 0.0;                         // of every run [s]; 0: simulation.duration of the scene
   ReferenceOptions reference;  // its first level's rtol is at most the candidates' (a one-level reference: a tenth)
 };
@@ -60,7 +60,7 @@ struct RecommendRequest {
 struct Recommendation {
   RecommendReasoning reasoning;
   scene::Scene reference_scene;  // the scene with the stiffening the reference needs
-  std::vector<coupling::OutputChannel> outputs;  // the judged outputs
+  std::vector<multibody::OutputChannel> outputs;  // the judged outputs
   double duration = 0.0;                         // of every run [s]
   ConvergedReference reference;
   std::vector<Candidate> candidates;
@@ -77,7 +77,7 @@ std::optional<std::size_t> cheapest_passing_candidate(const std::vector<Candidat
 // Same kind, mesh, modes, static modes and stiffening (`scene_stiffening` stands for an unset one).
 bool same_model(const Candidate& a, const Candidate& b, scene::Stiffening scene_stiffening);
 
-// Throws scene::SceneError, coupling::SolverFailure (the reference), modal::EigenSolverError,
+// Throws scene::SceneError, solve::SolverFailure (the reference), modal::EigenSolverError,
 // SettingError (a tolerance or duration out of range). `progress` is told what is being run.
 Recommendation recommend(const scene::Scene& scene, const RecommendRequest& request,
                          const std::function<void(const std::string&)>& progress = {}, modal::ModeCache* modes = nullptr);

@@ -19,7 +19,7 @@ namespace {
 
 constexpr int reasoning_modes = 6;  // as many as `ffrf modes` lists by default for a clamped boom
 
-bool contains(const std::vector<coupling::OutputChannel>& outputs, coupling::OutputChannel channel) {
+bool contains(const std::vector<multibody::OutputChannel>& outputs, multibody::OutputChannel channel) {
   return std::find(outputs.begin(), outputs.end(), channel) != outputs.end();
 }
 
@@ -81,7 +81,7 @@ void frequencies(const scene::Scene& scene, RecommendReasoning& r) {
   }
 }
 
-void loads(const scene::Scene& scene, const std::vector<coupling::OutputChannel>& outputs, RecommendReasoning& r) {
+void loads(const scene::Scene& scene, const std::vector<multibody::OutputChannel>& outputs, RecommendReasoning& r) {
   const fem::BeamMesh& mesh = scene.boom.mesh;
   const double L = mesh.length, EI = mesh.section.bending_rigidity(), rhoA = mesh.section.mass_per_length;
   const double g = scene.environment.gravity, phi = scene::boom_angle_at_rest(scene);
@@ -89,7 +89,7 @@ void loads(const scene::Scene& scene, const std::vector<coupling::OutputChannel>
   r.static_tip_deflection = (cargo_weight * L * L * L / 3.0 + rhoA * g * std::pow(L, 4) / 8.0) * std::cos(phi) / EI;
   r.axial_load = (rhoA * g * L + cargo_weight) * std::sin(phi);
   r.euler_load = *fem::euler_buckling_load(scene.boom.mesh, fem::Boundary::clamped_free);
-  if (contains(outputs, coupling::OutputChannel::tip_deflection)) {
+  if (contains(outputs, multibody::OutputChannel::tip_deflection)) {
     r.rigid_error = 1.0;
     r.statements.push_back("Rigid boom: the tip deflection is a chosen output and a rigid boom has none (error 100 %).");
   } else if (scene::has_waves(scene)) {
@@ -155,7 +155,7 @@ double missing_flexibility(const scene::Scene& scene, const std::vector<BoomMode
 }
 
 RecommendReasoning reason_about(const scene::Scene& scene, double tolerance,
-                                const std::vector<coupling::OutputChannel>& outputs) {
+                                const std::vector<multibody::OutputChannel>& outputs) {
   RecommendReasoning r;
   r.tolerance = tolerance;
   excitation(scene, r);

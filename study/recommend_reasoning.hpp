@@ -26,7 +26,7 @@
 
 #include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
-#include "coupling/error_metrics.hpp"
+#include "multibody/error_metrics.hpp"
 
 namespace ffrf::study {
 
@@ -62,7 +62,7 @@ scene::Stiffening physics_stiffening(const scene::Scene& scene, double tolerance
 
 // Throws modal::EigenSolverError when the boom's modes cannot be solved.
 RecommendReasoning reason_about(const scene::Scene& scene, double tolerance,
-                                const std::vector<coupling::OutputChannel>& outputs);
+                                const std::vector<multibody::OutputChannel>& outputs);
 
 // Fraction of the tip's static flexibility the first k modes of `modes` do not carry (bending modes
 // only, each 12 EI/(ω² m L³)); 1 for k = 0.

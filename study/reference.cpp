@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "coupling/error_metrics.hpp"
+#include "multibody/error_metrics.hpp"
 #include "study/error_measure.hpp"
 #include "study/work_limits.hpp"
 
@@ -58,12 +58,12 @@ ConvergedReference converged_reference(scene::CraneModelCache& models, const Ref
     DynamicsRequest request;
     request.relative_tolerance = request.absolute_tolerance = options.start_relative_tolerance * std::pow(0.1, level);
     request.duration = duration;
-    const coupling::IntegratorSettings settings = integrator_settings(scene, request);
+    const multibody::RunSettings settings = integrator_settings(scene, request);
     PreparedRun prepared = prepare_run(models, choice);
     ModelRun run = integrate_run(scene, prepared, settings);
     ReferenceLevel record{choice.elements, settings.relative_tolerance, 0.0, run.result.stats};
     if (level > 0) {
-      record.change = coupling::compare_runs(reference.run.result, run.result, reference.window_start).worst_normalized_rms();
+      record.change = multibody::compare_runs(reference.run.result, run.result, reference.window_start).worst_normalized_rms();
     }
     reference.levels.push_back(record);
     reference.choice = choice;

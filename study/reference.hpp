@@ -2,7 +2,7 @@
 // changing. Level i uses N = N0·2^i elements and rtol = atol = rtol0·10^(−i) (CVODE, minimal
 // coordinates), each run through the one pipeline (study/run_pipeline.hpp: the scene's initial
 // state, cargo lift included); the change between two levels is the worst normalized RMS
-// difference over the output channels (coupling/error_metrics.hpp) in the error window
+// difference over the output channels (multibody/error_metrics.hpp) in the error window
 // (study/error_measure.hpp). The finest level is the reference once the change falls below the
 // bound; every error ffrf reports is measured against it.
 //
@@ -37,12 +37,12 @@ struct ReferenceLevel {
   int elements = 0;
   double relative_tolerance = 0.0;
   double change = 0.0;  // vs the previous level (0 for the first)
-  coupling::SolverStats stats;
+  solve::SolverStats stats;
 };
 
 struct ConvergedReference {
   scene::BoomChoice choice;
-  coupling::IntegratorSettings settings;
+  multibody::RunSettings settings;
   ModelRun run;               // the finest level's run, statistics included
   std::vector<ReferenceLevel> levels;
   double bound = 0.0;
@@ -52,7 +52,7 @@ struct ConvergedReference {
 
 // The reference for runs of `duration` seconds. A run that ends within the wave ramp has no window
 // to check convergence on: then only the first level is run (reported as not converged). Throws
-// scene::SceneError, coupling::SolverFailure.
+// scene::SceneError, solve::SolverFailure.
 ConvergedReference converged_reference(const scene::Scene& scene, const ReferenceOptions& options, double duration,
                                        modal::ModeCache* modes = nullptr);
 // The same on the cache's scene with the cache's models (scene/crane_model_cache.hpp): a study that

@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "sea/incident_wave_record.hpp"
-#include "coupling/planar.hpp"
+#include "multibody/planar.hpp"
 #include "fem/analytic_beam.hpp"
 #include "scene/irregular_sea.hpp"
 #include "scene/scene_checks.hpp"
@@ -43,8 +43,8 @@ SettingError::SettingError(Setting setting, std::string value, std::string probl
       value_(std::move(value)),
       problem_(std::move(problem)) {}
 
-coupling::MonitorLimits monitor_limits(const scene::Scene& scene) {
-  coupling::MonitorLimits limits;
+multibody::MonitorLimits monitor_limits(const scene::Scene& scene) {
+  multibody::MonitorLimits limits;
   const fem::BeamMesh& mesh = scene.boom.mesh;
   limits.boom_length = mesh.length;
   limits.deflection_limit = scene.simulation.deflection_limit;
@@ -66,7 +66,7 @@ coupling::MonitorLimits monitor_limits(const scene::Scene& scene) {
   return limits;
 }
 
-coupling::IntegratorSettings integrator_settings(const scene::Scene& scene, const DynamicsRequest& request) {
+multibody::RunSettings integrator_settings(const scene::Scene& scene, const DynamicsRequest& request) {
   for (const auto& [setting, value] : {std::pair{Setting::relative_tolerance, request.relative_tolerance},
                                        std::pair{Setting::absolute_tolerance, request.absolute_tolerance}}) {
     if (!(value >= min_tolerance && value <= max_tolerance)) {
@@ -74,7 +74,7 @@ coupling::IntegratorSettings integrator_settings(const scene::Scene& scene, cons
                          fmt::format("not a valid tolerance (valid range [{:g}, {:g}])", min_tolerance, max_tolerance));
     }
   }
-  coupling::IntegratorSettings settings;
+  multibody::RunSettings settings;
   settings.kind = request.integrator;
   settings.relative_tolerance = request.relative_tolerance;
   settings.absolute_tolerance = request.absolute_tolerance;
@@ -98,7 +98,7 @@ coupling::IntegratorSettings integrator_settings(const scene::Scene& scene, cons
                        fmt::format("not a valid fixed step (valid range [0, {}] s, the output interval)",
                                    settings.output_interval));
   }
-  if (settings.kind == coupling::Integrator::generalized_alpha && request.fixed_step == 0.0) {
+  if (settings.kind == solve::Integrator::generalized_alpha && request.fixed_step == 0.0) {
     throw SettingError(Setting::fixed_step, "0",
                        fmt::format("generalized-alpha is a fixed-step method: give a fixed step in (0, {}] s, e.g. 0.01",
                                    settings.output_interval));
@@ -121,18 +121,18 @@ coupling::IntegratorSettings integrator_settings(const scene::Scene& scene, cons
 
 long ModelRun::slack_events() const {
   return std::count_if(result.wire_events.begin(), result.wire_events.end(),
-                       [](const coupling::WireEvent& event) { return event.slack; });
+                       [](const multibody::WireEvent& event) { return event.slack; });
 }
 
 namespace {
 
 // The initial state of freshly made equations at their static equilibrium.
 PreparedRun prepare_equations(const scene::Scene& scene, const scene::BoomChoice& choice,
-                              std::unique_ptr<coupling::CraneEquations> made, coupling::StaticEquilibrium statics) {
+                              std::unique_ptr<multibody::CraneEquations> made, multibody::StaticEquilibrium statics) {
   PreparedRun prepared;
   prepared.choice = choice;
   prepared.equations = std::move(made);
-  coupling::CraneEquations& equations = *prepared.equations;
+  multibody::CraneEquations& equations = *prepared.equations;
   prepared.statics = std::move(statics);
   prepared.from_static_equilibrium = scene.simulation.initial_state == scene::InitialState::static_equilibrium;
   prepared.initial_state = prepared.from_static_equilibrium ? prepared.statics.z : equations.initial_guess();
@@ -146,15 +146,15 @@ PreparedRun prepare_equations(const scene::Scene& scene, const scene::BoomChoice
 
 PreparedRun prepare_run(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes) {
   check_run_memory(choice);
-  std::unique_ptr<coupling::CraneEquations> equations = scene::build_crane(scene, choice, modes);
-  coupling::StaticEquilibrium statics = coupling::solve_static_equilibrium(*equations, equations->initial_guess());
+  std::unique_ptr<multibody::CraneEquations> equations = scene::build_crane(scene, choice, modes);
+  multibody::StaticEquilibrium statics = multibody::solve_static_equilibrium(*equations, equations->initial_guess());
   return prepare_equations(scene, choice, std::move(equations), std::move(statics));
 }
 
 PreparedRun prepare_run(scene::CraneModelCache& models, const scene::BoomChoice& choice,
                         std::optional<hydro::RadiationKind> radiation) {
   check_run_memory(choice);
-  coupling::StaticEquilibrium statics = models.static_equilibrium(choice, radiation);
+  multibody::StaticEquilibrium statics = models.static_equilibrium(choice, radiation);
   return prepare_equations(models.scene(radiation), choice, models.model(choice, radiation)->equations(), std::move(statics));
 }
 
@@ -167,7 +167,7 @@ void summarize(const scene::Scene& scene, double duration, ModelRun& run) {
   run.stats = series_stats(run.result.samples, run.statics.outputs, run.window);
   double max_tension = 0.0;
   run.max_constraint_residual = 0.0;
-  for (const coupling::CraneOutputs& sample : run.result.samples) {
+  for (const multibody::CraneOutputs& sample : run.result.samples) {
     max_tension = std::max(max_tension, sample.wire_tension);
     run.max_constraint_residual = std::max(run.max_constraint_residual, std::abs(sample.constraint_residual));
   }
@@ -176,9 +176,9 @@ void summarize(const scene::Scene& scene, double duration, ModelRun& run) {
   run.real_time_factor = duration / run.result.stats.wall_seconds;
   run.irregular = irregular_statistics(scene, run.result.time, run.result.samples, run.statics.outputs, run.window.first,
                                        scene.simulation.output_interval);
-  run.slack_intervals = coupling::slack_intervals(run.result, run.monitor);
-  run.snap_loads = coupling::snap_loads(run.result, run.monitor);
-  run.max_buckling_load_ratio = coupling::max_buckling_load_ratio(run.result, run.monitor);
+  run.slack_intervals = multibody::slack_intervals(run.result, run.monitor);
+  run.snap_loads = multibody::snap_loads(run.result, run.monitor);
+  run.max_buckling_load_ratio = multibody::max_buckling_load_ratio(run.result, run.monitor);
 }
 
 ModelRun prepared_model(const PreparedRun& prepared) {
@@ -198,32 +198,32 @@ ModelRun prepared_model(const PreparedRun& prepared) {
 
 }  // namespace
 
-ModelRun integrate_run(const scene::Scene& scene, PreparedRun& prepared, const coupling::IntegratorSettings& settings) {
+ModelRun integrate_run(const scene::Scene& scene, PreparedRun& prepared, const multibody::RunSettings& settings) {
   ModelRun run = prepared_model(prepared);
-  coupling::IntegratorSettings run_settings = settings;
+  multibody::RunSettings run_settings = settings;
   run_settings.monitor.static_tension = prepared.statics.outputs.wire_tension;
   run.monitor = run_settings.monitor;
-  const coupling::HullLoadCounts before = prepared.equations->hull_load_counts();
-  run.result = coupling::integrate(*prepared.equations, prepared.initial_state, run_settings);
-  const coupling::HullLoadCounts after = prepared.equations->hull_load_counts();
+  const multibody::HullLoadCounts before = prepared.equations->hull_load_counts();
+  run.result = multibody::simulate(*prepared.equations, prepared.initial_state, run_settings);
+  const multibody::HullLoadCounts after = prepared.equations->hull_load_counts();
   run.wave_kinematics.hull_loads = {after.recorded - before.recorded, after.exact - before.exact};
   summarize(scene, settings.duration, run);
   return run;
 }
 
-ModelRun run_model(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::IntegratorSettings& settings,
+ModelRun run_model(const scene::Scene& scene, const scene::BoomChoice& choice, const multibody::RunSettings& settings,
                    modal::ModeCache* modes, const std::function<void(const ModelRun&)>& on_prepared) {
   PreparedRun prepared = prepare_run(scene, choice, modes);
   if (on_prepared) on_prepared(prepared_model(prepared));
   return integrate_run(scene, prepared, settings);
 }
 
-double draft_at_mid_length(const scene::Scene& scene, const coupling::CraneOutputs& outputs) {
+double draft_at_mid_length(const scene::Scene& scene, const multibody::CraneOutputs& outputs) {
   if (!scene.hull) return std::numeric_limits<double>::quiet_NaN();
   const scene::Hull& hull = *scene.hull;
   const Eigen::Vector2d keel_mid =
       outputs.hull.head<2>() +
-      coupling::rotation(outputs.hull.z()) * Eigen::Vector2d(hull.g1_aft_of_mid_length, -hull.g1_above_keel);
+      multibody::rotation(outputs.hull.z()) * Eigen::Vector2d(hull.g1_aft_of_mid_length, -hull.g1_above_keel);
   return -keel_mid.y();
 }
 

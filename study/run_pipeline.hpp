@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "coupling/run_monitor.hpp"
-#include "coupling/simulation.hpp"
-#include "coupling/static_equilibrium.hpp"
+#include "multibody/run_monitor.hpp"
+#include "multibody/crane_run.hpp"
+#include "multibody/crane_statics.hpp"
 #include "modal/mode_cache.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/crane_model_cache.hpp"
@@ -53,15 +53,15 @@ class SettingError : public std::invalid_argument {
   std::string value_, problem_;
 };
 
-// What a run is asked for; the rest of coupling::IntegratorSettings follows from the scene.
+// What a run is asked for; the rest of multibody::RunSettings follows from the scene.
 struct DynamicsRequest {
-  coupling::Integrator integrator = coupling::Integrator::cvode;
+  solve::Integrator integrator = solve::Integrator::cvode;
   double relative_tolerance = 1e-6;
   double absolute_tolerance = 1e-6;
   std::optional<double> duration;  // default: simulation.duration of the scene
   double fixed_step = 0.0;         // generalized-α: required; arkode: 0 = adaptive [s]
   int max_order = 0;               // largest BDF order of cvode/ida; 0: from the physics
-  coupling::WorkLimits work = {};  // steps, wall clock and step-size floor of the run
+  solve::WorkLimits work = {};  // steps, wall clock and step-size floor of the run
 };
 
 // The tolerances every run accepts: tighter than 1e-12 is at the edge of what the integrators
@@ -75,19 +75,19 @@ inline constexpr double min_tolerance = 1e-12, max_tolerance = 0.1;
 // axis; 2 is A-stable), 5 otherwise. Throws SettingError for a value out of range, for more output
 // samples than scene::max_output_samples and for more fixed steps than max_fixed_steps
 // (study/work_limits.hpp).
-coupling::IntegratorSettings integrator_settings(const scene::Scene& scene, const DynamicsRequest& request);
+multibody::RunSettings integrator_settings(const scene::Scene& scene, const DynamicsRequest& request);
 
 // The failure detectors' bounds for a scene (deflection and drift limits, the boom's Euler load,
 // the wire); integrate_run() adds the static wire tension.
-coupling::MonitorLimits monitor_limits(const scene::Scene& scene);
+multibody::MonitorLimits monitor_limits(const scene::Scene& scene);
 
 // --- the pipeline ---
 
 // A model in its initial state, ready to integrate (possibly more than once: benches).
 struct PreparedRun {
   scene::BoomChoice choice;
-  std::unique_ptr<coupling::CraneEquations> equations;
-  coupling::StaticEquilibrium statics;
+  std::unique_ptr<multibody::CraneEquations> equations;
+  multibody::StaticEquilibrium statics;
   Eigen::VectorXd initial_state;        // minimal coordinates at t = 0 (at rest)
   bool from_static_equilibrium = true;  // false: simulation.initial_state = as-built
   int state_size() const { return static_cast<int>(2 * initial_state.size()); }  // ODE state (z, ż)
@@ -99,7 +99,7 @@ struct WaveKinematicsUse {
   std::string method;  // "precomputed" | "exact"; empty: no wave on a floating hull
   std::string reason;  // why exact
   std::optional<sea::IncidentWaveRecordStats> record;
-  coupling::HullLoadCounts hull_loads;  // of this run's integration
+  multibody::HullLoadCounts hull_loads;  // of this run's integration
 };
 
 // One model's complete run.
@@ -108,8 +108,8 @@ struct ModelRun {
   int elastic_dof = 0;
   int state_size = 0;                   // 2 × minimal coordinates
   bool from_static_equilibrium = true;
-  coupling::StaticEquilibrium statics;
-  coupling::RunResult result;
+  multibody::StaticEquilibrium statics;
+  multibody::RunResult result;
   StatsWindow window;
   std::vector<SeriesStats> stats;  // per crane_series() entry
   double amplification = 0.0;      // max wire tension over the run / static tension
@@ -120,12 +120,12 @@ struct ModelRun {
   // The failure detectors' bounds the run was judged by (the scene's, its static wire tension
   // added), and what they found over the run: the wire's slack intervals and snap loads, the largest
   // boom compression over its Euler load.
-  coupling::MonitorLimits monitor;
-  std::vector<coupling::SlackInterval> slack_intervals;
-  std::vector<coupling::SnapLoad> snap_loads;
+  multibody::MonitorLimits monitor;
+  std::vector<multibody::SlackInterval> slack_intervals;
+  std::vector<multibody::SnapLoad> snap_loads;
   double max_buckling_load_ratio = 0.0;
 
-  const coupling::CraneOutputs& static_outputs() const { return statics.outputs; }
+  const multibody::CraneOutputs& static_outputs() const { return statics.outputs; }
   long slack_events() const;       // the wire went slack
   // Solver work, RHS evaluations × state size (study/verdict.hpp: the measure every verdict decides by).
   double work() const { return solver_work(result.stats.function_evaluations, state_size); }
@@ -134,7 +134,7 @@ struct ModelRun {
 // Builds the crane (modes from `modes`, or solved here), solves its static equilibrium, applies
 // the scene's initial state. Throws SettingError when the model is beyond the memory limit
 // (study/work_limits.hpp), scene::SceneError (the scene cannot make this crane) and
-// coupling::SolverFailure (KINSOL).
+// solve::SolverFailure (KINSOL).
 PreparedRun prepare_run(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes = nullptr);
 // The same on the cache's scene with `radiation` as its [bem] radiation model (empty: the scene's
 // own) and the cache's shared model of `choice` and its static equilibrium (each built and solved
@@ -144,16 +144,16 @@ PreparedRun prepare_run(scene::CraneModelCache& models, const scene::BoomChoice&
                         std::optional<hydro::RadiationKind> radiation = std::nullopt);
 
 // Integrates a prepared model with `settings` (the static wire tension added to its monitor) and
-// gathers the statistics. Throws coupling::SolverFailure.
-ModelRun integrate_run(const scene::Scene& scene, PreparedRun& prepared, const coupling::IntegratorSettings& settings);
+// gathers the statistics. Throws solve::SolverFailure.
+ModelRun integrate_run(const scene::Scene& scene, PreparedRun& prepared, const multibody::RunSettings& settings);
 
 // prepare_run then integrate_run. `on_prepared` sees the run once its static equilibrium is known,
 // before the integration (the command line prints the static report there).
-ModelRun run_model(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::IntegratorSettings& settings,
+ModelRun run_model(const scene::Scene& scene, const scene::BoomChoice& choice, const multibody::RunSettings& settings,
                    modal::ModeCache* modes = nullptr, const std::function<void(const ModelRun&)>& on_prepared = {});
 
 // Hull draft at mid-length [m] (keel depth below still water) of a static or sampled pose; NaN
 // without a hull (hub scenes).
-double draft_at_mid_length(const scene::Scene& scene, const coupling::CraneOutputs& outputs);
+double draft_at_mid_length(const scene::Scene& scene, const multibody::CraneOutputs& outputs);
 
 }  // namespace ffrf::study

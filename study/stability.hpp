@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "coupling/failure.hpp"
-#include "coupling/run_monitor.hpp"
+#include "solve/failure.hpp"
+#include "multibody/run_monitor.hpp"
 #include "scene/scene.hpp"
 #include "study/campbell.hpp"
 #include "study/stability_explicit_map.hpp"
@@ -32,26 +32,26 @@ struct StabilityOptions {
 // 1. The largest stable explicit RK step per boom model, measured against the theory.
 struct ExplicitStepStudy {
   ExplicitStabilityMap map;
-  coupling::StableStepSearch search;
+  solve::StableStepSearch search;
   bool quick = false;
 };
 ExplicitStepStudy explicit_step_study(const scene::Scene& scene, const StabilityOptions& options);
 
 // 2. The clamp at B treated five ways on one model: |C(t)| per formulation against the drift bound.
 struct DriftRun {
-  coupling::Integrator formulation;
+  solve::Integrator formulation;
   std::optional<ModelRun> run;                 // with |C| in its samples' constraint_residual
-  std::optional<coupling::Detection> failure;  // a solver failure (fatal)
+  std::optional<solve::Detection> failure;  // a solver failure (fatal)
   double max_residual = 0.0, final_residual = 0.0;  // [m]
-  const coupling::Detection* drift_detection() const;  // the run's constraint-drift detection, if any
+  const solve::Detection* drift_detection() const;  // the run's constraint-drift detection, if any
 };
 struct DriftStudy {
   scene::BoomChoice choice;
-  coupling::IntegratorSettings settings;
+  multibody::RunSettings settings;
   double cargo_lift = 0.0;  // [m] the scene's
   double limit = 0.0;       // simulation.constraint_drift_limit [m]
   std::vector<DriftRun> runs;
-  double max_drift(coupling::Integrator formulation) const;  // NaN when that run failed
+  double max_drift(solve::Integrator formulation) const;  // NaN when that run failed
 };
 DriftStudy constraint_drift_study(const scene::Scene& scene, const StabilityOptions& options);
 
@@ -61,7 +61,7 @@ struct SpinRun {
   scene::BoomChoice choice;
   bool stiffened = false;
   std::vector<double> time, deflection;  // tip transverse deflection [m] (up to the failure)
-  std::optional<coupling::Detection> failure;
+  std::optional<solve::Detection> failure;
   double max_deflection = 0.0;
   double spin_rate_at_failure = 0.0;  // Ω(t) at the detection [rad/s]
   std::string label() const;          // "nodal N=32, no stiffening"
@@ -71,7 +71,7 @@ struct SpinStudy {
   std::vector<scene::BoomChoice> models;
   double omega1 = 0.0;       // first clamped–free bending frequency at rest, analytic [rad/s]
   double chart_spin = 4.0;   // the spin of the time-history chart and the nodal–modal agreement [rad/s]
-  coupling::IntegratorSettings settings;
+  multibody::RunSettings settings;
   std::vector<SpinRun> runs;  // model-major, then stiffening (off, on), then spin
   CampbellResult campbell;    // over [0, max spin]
   double agreement = 0.0;     // max|δ_nodal − δ_modal| / max|δ_nodal|, stiffened at chart_spin (NaN: not both ran)
@@ -84,14 +84,14 @@ double hub_spin_rate(const scene::Hub& hub, double spin, double t);
 struct WireRun {
   scene::BoomChoice choice;
   std::optional<ModelRun> run;
-  std::optional<coupling::Detection> failure;
-  std::vector<coupling::SlackInterval> slack;
-  std::vector<coupling::SnapLoad> snaps;
+  std::optional<solve::Detection> failure;
+  std::vector<multibody::SlackInterval> slack;
+  std::vector<multibody::SnapLoad> snaps;
 };
 struct WireStudy {
   double lift = 0.0;                // d [m]
   bool lift_from_scene = true;      // false: the scene had none, 1 m is used
-  coupling::IntegratorSettings settings;
+  multibody::RunSettings settings;
   std::vector<WireRun> runs;        // rigid, then elastic (nodal)
   // The hand result (rigid boom, undamped wire): s = mg/k, ω = √(k/m), A = √(s² + 2g(d − s)/ω²).
   double mass = 0.0, stiffness = 0.0, gravity = 0.0;
@@ -102,8 +102,8 @@ WireStudy wire_study(const scene::Scene& scene, const StabilityOptions& options)
 // 5. BDF order on undamped stiff modes: cvode with max_order 2 and 5 on the same run.
 struct OrderRun {
   int order = 0;
-  std::optional<coupling::SolverStats> stats;
-  std::optional<coupling::Detection> failure;
+  std::optional<solve::SolverStats> stats;
+  std::optional<solve::Detection> failure;
 };
 struct BdfOrderStudy {
   scene::BoomChoice choice;

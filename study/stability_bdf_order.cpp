@@ -22,7 +22,7 @@ BdfOrderStudy bdf_order_study(const scene::Scene& scene, const StabilityOptions&
   modal::ModeCache modes;
   for (int order : {2, 5}) {
     request.max_order = order;
-    const coupling::IntegratorSettings settings = integrator_settings(scene, request);
+    const multibody::RunSettings settings = integrator_settings(scene, request);
     study.relative_tolerance = settings.relative_tolerance;
     if (options.progress) {
       options.progress(fmt::format("BDF order: cvode max_order {} on {}, {} s", order, study.choice.label(), settings.duration));
@@ -30,7 +30,7 @@ BdfOrderStudy bdf_order_study(const scene::Scene& scene, const StabilityOptions&
     OrderRun run{order, std::nullopt, std::nullopt};
     try {
       run.stats = run_model(scene, study.choice, settings, &modes).result.stats;
-    } catch (const coupling::SolverFailure& failure) {
+    } catch (const solve::SolverFailure& failure) {
       run.failure = failure.detection();
     }
     study.runs.push_back(run);

@@ -20,7 +20,7 @@ BucklingStudy buckling_study(const scene::Scene& scene, const StabilityOptions& 
   if (options.progress) options.progress(fmt::format("buckling margin: static equilibrium of {}", study.choice.label()));
   const PreparedRun prepared = prepare_run(scene, study.choice);
   study.axial_force = prepared.statics.outputs.root_axial_force;  // tension > 0
-  const coupling::MonitorLimits limits = monitor_limits(scene);
+  const multibody::MonitorLimits limits = monitor_limits(scene);
   study.euler_load = limits.buckling_load;
   study.load_ratio = std::max(0.0, -study.axial_force) / study.euler_load;
   study.warning_ratio = limits.buckling_warning_ratio;

@@ -1,6 +1,6 @@
 // Experiment 2 of the stability map: the clamp at B treated five ways — minimal coordinates
 // (cvode), Lagrange multipliers as a stabilized index-2 DAE (ida), and the index-1 ODE
-// unstabilized, with Baumgarte feedback and with projection (coupling/constraint_drift.hpp) — on
+// unstabilized, with Baumgarte feedback and with projection (multibody/constraint_drift.hpp) — on
 // one elastic model from the scene's initial state: |C(t)| per formulation against the scene's drift
 // bound (simulation.constraint_drift_limit), with the cost of each.
 #include <fmt/format.h>
@@ -8,21 +8,21 @@
 #include <algorithm>
 #include <cmath>
 
-#include "coupling/constraint_drift.hpp"
+#include "multibody/constraint_drift.hpp"
 #include "study/stability.hpp"
 
 namespace ffrf::study {
 
-const coupling::Detection* DriftRun::drift_detection() const {
+const solve::Detection* DriftRun::drift_detection() const {
   if (!run) return nullptr;
   const auto& detections = run->result.detections;
-  const auto fired = std::find_if(detections.begin(), detections.end(), [](const coupling::Detection& d) {
-    return d.kind == coupling::FailureKind::constraint_drift;
+  const auto fired = std::find_if(detections.begin(), detections.end(), [](const solve::Detection& d) {
+    return d.kind == solve::FailureKind::constraint_drift;
   });
   return fired == detections.end() ? nullptr : &*fired;
 }
 
-double DriftStudy::max_drift(coupling::Integrator formulation) const {
+double DriftStudy::max_drift(solve::Integrator formulation) const {
   for (const DriftRun& run : runs) {
     if (run.formulation == formulation && run.run) return run.max_residual;
   }
@@ -39,21 +39,21 @@ DriftStudy constraint_drift_study(const scene::Scene& scene, const StabilityOpti
   study.cargo_lift = scene.simulation.cargo_lift;
   study.limit = study.settings.monitor.constraint_drift_limit;
   modal::ModeCache modes;
-  for (coupling::Integrator formulation : coupling::constraint_formulations()) {
+  for (solve::Integrator formulation : multibody::constraint_formulations()) {
     if (options.progress) {
-      options.progress(fmt::format("constraint drift: {} on {}, {} s", coupling::to_string(formulation),
+      options.progress(fmt::format("constraint drift: {} on {}, {} s", solve::to_string(formulation),
                                    study.choice.label(), study.settings.duration));
     }
     DriftRun drift{formulation, std::nullopt, std::nullopt};
-    coupling::IntegratorSettings settings = study.settings;
+    multibody::RunSettings settings = study.settings;
     settings.kind = formulation;
     try {
       drift.run = run_model(scene, study.choice, settings, &modes);
-      for (const coupling::CraneOutputs& sample : drift.run->result.samples) {
+      for (const multibody::CraneOutputs& sample : drift.run->result.samples) {
         drift.max_residual = std::max(drift.max_residual, sample.constraint_residual);
       }
       if (!drift.run->result.samples.empty()) drift.final_residual = drift.run->result.samples.back().constraint_residual;
-    } catch (const coupling::SolverFailure& failure) {
+    } catch (const solve::SolverFailure& failure) {
       drift.failure = failure.detection();
     }
     study.runs.push_back(std::move(drift));

@@ -6,7 +6,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "coupling/simulation.hpp"
+#include "multibody/crane_run.hpp"
 #include "study/run_pipeline.hpp"
 #include "study/stability_theory.hpp"
 
@@ -14,7 +14,7 @@ namespace ffrf::study {
 namespace {
 
 ExplicitStabilityRow measure_model(const scene::Scene& scene, const scene::BoomChoice& choice,
-                                   const coupling::StableStepSearch& search, modal::ModeCache& modes) {
+                                   const solve::StableStepSearch& search, modal::ModeCache& modes) {
   const auto start = std::chrono::steady_clock::now();
   ExplicitStabilityRow row;
   row.choice = choice;
@@ -28,14 +28,14 @@ ExplicitStabilityRow measure_model(const scene::Scene& scene, const scene::BoomC
     row.boom_damped_step = damped_boom_step_limit(omega, scene::boom_stiffness_damping(scene));
     // The limit belongs to the linearization about the static equilibrium (not the lifted start).
     const Eigen::VectorXd& z0 = prepared.statics.z;
-    row.jacobian_step = coupling::explicit_stable_step(*prepared.equations, z0);
+    row.jacobian_step = solve::explicit_stable_step(*prepared.equations, z0);
     // The bracket starts below the theory so the measured ends are not pinned to it.
-    row.measured = coupling::measure_stable_step(*prepared.equations, z0, 0.8 * row.jacobian_step, search);
+    row.measured = solve::measure_stable_step(*prepared.equations, z0, 0.8 * row.jacobian_step, search);
     if (!row.measured.converged) {
       row.failure = fmt::format("search capped after {} trials, {} RHS evaluations", row.measured.trials,
                                 row.measured.rhs_evaluations);
     }
-  } catch (const coupling::SolverFailure& failure) {
+  } catch (const solve::SolverFailure& failure) {
     row.failure = failure.what();
   }
   row.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -56,14 +56,14 @@ std::vector<scene::BoomChoice> default_stability_models() {
 }
 
 ExplicitStabilityMap explicit_stability_map(const scene::Scene& scene, const std::vector<scene::BoomChoice>& models,
-                                            const coupling::StableStepSearch& search,
+                                            const solve::StableStepSearch& search,
                                             const std::function<void(const ExplicitStabilityRow&)>& progress) {
   scene::Scene calm = scene;
   calm.wave.reset();
   ExplicitStabilityMap map;
   map.scene_file = scene.file;
   map.scene_name = scene.name;
-  map.imaginary_axis_boundary = coupling::explicit_imaginary_axis_boundary();
+  map.imaginary_axis_boundary = solve::explicit_imaginary_axis_boundary();
   map.wire_cargo_frequency = wire_cargo_frequency(scene);
   map.relative_precision = search.relative_precision;
   modal::ModeCache modes;

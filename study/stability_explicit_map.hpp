@@ -1,8 +1,8 @@
 // The explicit stability map of a crane scene (for `ffrf stability`): for each boom model the
 // largest fixed step of ARKODE's explicit Runge–Kutta measured by trial runs
-// (coupling::measure_stable_step) against the theory — the boom's own bound (β_I/ω_max undamped;
+// (solve::measure_stable_step) against the theory — the boom's own bound (β_I/ω_max undamped;
 // with its stiffness-proportional damping) and the linearized crane's Jacobian bound
-// (coupling::explicit_stable_step). Its tables and charts: report/stability_explicit_map_report.hpp.
+// (solve::explicit_stable_step). Its tables and charts: report/stability_explicit_map_report.hpp.
 // The scene is analysed in calm water: the limit belongs to the linearization about the static
 // equilibrium (the 10 s wave does not move it).
 #pragma once
@@ -13,7 +13,7 @@
 
 #include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
-#include "coupling/explicit_stability.hpp"
+#include "solve/explicit_stability.hpp"
 
 namespace ffrf::study {
 
@@ -24,8 +24,8 @@ struct ExplicitStabilityRow {
   double highest_frequency = 0.0;        // ω_max of the boom's elastic coordinates [rad/s] (0: rigid)
   double boom_undamped_step = 0.0;       // β_I / ω_max [s] (infinity: rigid)
   double boom_damped_step = 0.0;         // with the boom's structural damping [s] (infinity: rigid)
-  double jacobian_step = 0.0;            // coupling::explicit_stable_step [s]
-  coupling::StableStepMeasurement measured;
+  double jacobian_step = 0.0;            // solve::explicit_stable_step [s]
+  solve::StableStepMeasurement measured;
   double wall_seconds = 0.0;             // equilibrium, theory and every trial
   std::string failure;                   // non-empty: the model could not be measured (why)
 
@@ -48,7 +48,7 @@ std::vector<scene::BoomChoice> default_stability_models();
 // Measures every model (`progress` sees each row as it is done). A model whose static equilibrium
 // or measurement fails becomes a row with `failure` set; scene errors (scene::SceneError) propagate.
 ExplicitStabilityMap explicit_stability_map(const scene::Scene& scene, const std::vector<scene::BoomChoice>& models,
-                                            const coupling::StableStepSearch& search = {},
+                                            const solve::StableStepSearch& search = {},
                                             const std::function<void(const ExplicitStabilityRow&)>& progress = {});
 
 }  // namespace ffrf::study

@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "coupling/prescribed_motion.hpp"
+#include "multibody/prescribed_motion.hpp"
 #include "fem/analytic_beam.hpp"
 #include "study/stability.hpp"
 
@@ -25,22 +25,22 @@ SpinRun run_spin(const scene::Scene& scene, double spin, const scene::BoomChoice
   run.choice.stiffening = stiffened ? scene::Stiffening::centrifugal : scene::Stiffening::none;
   scene::Scene spun = scene;
   spun.hub->spin_rate = spin;
-  const coupling::IntegratorSettings settings = integrator_settings(spun, {});
-  const coupling::RunResult* samples = nullptr;
+  const multibody::RunSettings settings = integrator_settings(spun, {});
+  const multibody::RunResult* samples = nullptr;
   ModelRun model;
-  std::shared_ptr<const coupling::RunResult> partial;
+  std::shared_ptr<const multibody::RunResult> partial;
   try {
     model = run_model(spun, run.choice, settings, &modes);
     samples = &model.result;
-  } catch (const coupling::SolverFailure& failure) {
+  } catch (const solve::SolverFailure& failure) {
     run.failure = failure.detection();
     run.spin_rate_at_failure = hub_spin_rate(*scene.hub, spin, failure.time());
-    partial = failure.partial();
+    partial = multibody::partial_run(failure);
     samples = partial.get();
   }
   if (samples) {
     run.time = samples->time;
-    for (const coupling::CraneOutputs& sample : samples->samples) {
+    for (const multibody::CraneOutputs& sample : samples->samples) {
       run.deflection.push_back(sample.tip_deflection.y());
       run.max_deflection = std::max(run.max_deflection, std::abs(sample.tip_deflection.y()));
     }
@@ -61,9 +61,9 @@ double agreement(const SpinRun& nodal, const SpinRun& modal) {
 std::string SpinRun::label() const { return stiffened ? choice.label() : choice.label() + ", no stiffening"; }
 
 double hub_spin_rate(const scene::Hub& hub, double spin, double t) {
-  coupling::PrescribedMotion motion;
-  motion.profile = hub.motion == scene::HubMotion::spin_up ? coupling::RotationProfile::spin_up
-                                                           : coupling::RotationProfile::constant_spin;
+  multibody::PrescribedMotion motion;
+  motion.profile = hub.motion == scene::HubMotion::spin_up ? multibody::RotationProfile::spin_up
+                                                           : multibody::RotationProfile::constant_spin;
   motion.spin_rate = spin;
   motion.spin_up_time = hub.spin_up_time;
   return motion.rate(t);

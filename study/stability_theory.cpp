@@ -6,8 +6,8 @@
 #include <complex>
 #include <limits>
 
-#include "coupling/explicit_stability.hpp"
-#include "coupling/simulation.hpp"
+#include "solve/explicit_stability.hpp"
+#include "multibody/crane_run.hpp"
 #include "linalg/dense_solvers.hpp"
 
 namespace ffrf::study {
@@ -17,7 +17,7 @@ Eigen::VectorXd frequencies(const Eigen::MatrixXd& stiffness, const Eigen::Matri
   if (stiffness.rows() == 0) return Eigen::VectorXd(0);
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(stiffness, mass, Eigen::EigenvaluesOnly);
   if (solver.info() != Eigen::Success) {
-    throw coupling::SolverFailure(coupling::FailureKind::model_error, "Eigen generalized eigen solver", "K φ = ω² M φ of the boom did not converge", 0.0,
+    throw solve::SolverFailure(solve::FailureKind::model_error, "Eigen generalized eigen solver", "K φ = ω² M φ of the boom did not converge", 0.0,
                                   "check the boom section and mass values");
   }
   return solver.eigenvalues().cwiseMax(0.0).cwiseSqrt();
@@ -41,7 +41,7 @@ double highest_boom_frequency(const scene::Scene& scene, const scene::BoomChoice
 }
 
 double undamped_boom_step_limit(double highest_frequency) {
-  return highest_frequency > 0.0 ? coupling::explicit_imaginary_axis_boundary() / highest_frequency
+  return highest_frequency > 0.0 ? solve::explicit_imaginary_axis_boundary() / highest_frequency
                                  : std::numeric_limits<double>::infinity();
 }
 
@@ -53,7 +53,7 @@ double damped_boom_step_limit(const Eigen::VectorXd& angular_frequencies, double
     // Roots of λ² + 2ζωλ + ω² = 0: the one with the larger |λ| (both share the ray when ζ < 1).
     const std::complex<double> root = std::sqrt(std::complex<double>(zeta * zeta - 1.0, 0.0));
     const std::complex<double> lambda = omega * (-zeta - (zeta >= 1.0 ? root : -root));
-    limit = std::min(limit, coupling::explicit_mode_step_limit(lambda));
+    limit = std::min(limit, solve::explicit_mode_step_limit(lambda));
   }
   return limit;
 }

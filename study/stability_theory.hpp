@@ -1,6 +1,6 @@
 // Theoretical explicit-RK step limits of the crane's parts, to compare with the measured limit
-// (coupling/explicit_stability.hpp) and with the coupled system's Jacobian bound
-// (coupling::explicit_stable_step):
+// (solve/explicit_stability.hpp) and with the coupled system's Jacobian bound
+// (solve::explicit_stable_step):
 //  * the boom's elastic coordinates alone, clamped at the root: ω_i² the eigenvalues of
 //    M_ff⁻¹ K in the coordinates build_crane uses (nodal: the FE mesh's free DOFs; modal: the
 //    retained vibration modes and the Rayleigh frequencies of the static correction modes);

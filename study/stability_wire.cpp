@@ -32,7 +32,7 @@ WireStudy wire_study(const scene::Scene& scene, const StabilityOptions& options)
       wire.run = run_model(lifted, wire.choice, study.settings);
       wire.slack = wire.run->slack_intervals;  // judged by the run's own limits (its static tension added)
       wire.snaps = wire.run->snap_loads;
-    } catch (const coupling::SolverFailure& failure) {
+    } catch (const solve::SolverFailure& failure) {
       wire.failure = failure.detection();
     }
   }

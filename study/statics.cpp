@@ -5,8 +5,8 @@
 #include <limits>
 #include <memory>
 
-#include "coupling/run_monitor.hpp"
-#include "coupling/simulation.hpp"
+#include "multibody/run_monitor.hpp"
+#include "multibody/crane_run.hpp"
 #include "study/run_pipeline.hpp"
 #include "study/work_limits.hpp"
 
@@ -15,13 +15,13 @@ namespace ffrf::study {
 StaticsResult solve_statics(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes) {
   // prepare_run's model and solve (its initial state aside), with how the solve went.
   check_run_memory(choice);
-  const std::unique_ptr<coupling::CraneEquations> equations = scene::build_crane(scene, choice, modes);
+  const std::unique_ptr<multibody::CraneEquations> equations = scene::build_crane(scene, choice, modes);
   const Eigen::VectorXd guess = equations->initial_guess();
   StaticsResult result;
   result.choice = choice;
   result.elastic_dof = equations->elastic_size();
-  result.statics = coupling::solve_static_equilibrium(*equations, guess, result.path);
-  const coupling::CraneOutputs& o = result.statics.outputs;
+  result.statics = multibody::solve_static_equilibrium(*equations, guess, result.path);
+  const multibody::CraneOutputs& o = result.statics.outputs;
   // The hull's coordinates lead the minimal ones when it floats; a held or driven hub keeps its pose.
   result.rest_pose = scene.is_crane() ? Eigen::Vector3d(guess.head<3>()) : o.hull;
   result.hull_offset = o.hull - result.rest_pose;
@@ -30,16 +30,16 @@ StaticsResult solve_statics(const scene::Scene& scene, const scene::BoomChoice& 
   result.cargo_weight = scene.cargo ? scene.cargo->mass * scene.environment.gravity : 0.0;
 
   // The detectors of a run, on the one sample at rest in still water.
-  coupling::MonitorLimits limits = monitor_limits(scene);
+  multibody::MonitorLimits limits = monitor_limits(scene);
   limits.water.wave_amplitude = 0.0;
   limits.static_tension = o.wire_tension;
-  coupling::RunResult at_rest;
+  multibody::RunResult at_rest;
   at_rest.time = {0.0};
   at_rest.samples = {o};
-  result.buckling_ratio = coupling::max_buckling_load_ratio(at_rest, limits);
-  for (const coupling::Detection& found : coupling::post_run_detections(at_rest, limits)) {
-    if (found.kind == coupling::FailureKind::deck_submerged || found.kind == coupling::FailureKind::cargo_in_water) {
-      throw coupling::SolverFailure(found.kind, "static equilibrium", found.cause + " at rest in still water", 0.0, found.remedy,
+  result.buckling_ratio = multibody::max_buckling_load_ratio(at_rest, limits);
+  for (const solve::Detection& found : multibody::post_run_detections(at_rest, limits)) {
+    if (found.kind == solve::FailureKind::deck_submerged || found.kind == solve::FailureKind::cargo_in_water) {
+      throw solve::SolverFailure(found.kind, "static equilibrium", found.cause + " at rest in still water", 0.0, found.remedy,
                                     found.value);
     }
     result.notes.push_back(found);

@@ -11,8 +11,8 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "coupling/failure.hpp"
-#include "coupling/static_equilibrium.hpp"
+#include "solve/failure.hpp"
+#include "multibody/crane_statics.hpp"
 #include "modal/mode_cache.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene.hpp"
@@ -22,19 +22,19 @@ namespace ffrf::study {
 struct StaticsResult {
   scene::BoomChoice choice;
   int elastic_dof = 0;
-  coupling::StaticEquilibrium statics;
-  coupling::StaticSolvePath path;  // Newton or continuation; the out-of-balance force and moment left
+  multibody::StaticEquilibrium statics;
+  multibody::StaticSolvePath path;  // Newton or continuation; the out-of-balance force and moment left
   Eigen::Vector3d rest_pose = Eigen::Vector3d::Zero();  // the hull's (or hub's) pose before the solve: x, y [m], pitch [rad]
   Eigen::Vector3d hull_offset = Eigen::Vector3d::Zero();  // equilibrium − rest pose (surge, heave, pitch)
   double draft = 0.0;           // keel depth at mid-length [m] (NaN: a hub)
   double wire_stretch = 0.0;    // ℓ − L0 [m] (NaN: no wire)
   double cargo_weight = 0.0;    // m g [N] (0: no cargo)
   double buckling_ratio = 0.0;  // root compression / Euler load
-  std::vector<coupling::Detection> notes;  // non-fatal findings at rest (buckling)
+  std::vector<solve::Detection> notes;  // non-fatal findings at rest (buckling)
 };
 
 // Solves the static equilibrium of `choice` in `scene` (calm water). Throws what prepare_run throws
-// (SettingError, scene::SceneError, coupling::SolverFailure) and SolverFailure(deck_submerged /
+// (SettingError, scene::SceneError, solve::SolverFailure) and SolverFailure(deck_submerged /
 // cargo_in_water) when the equilibrium puts a deck edge or the cargo below still water.
 StaticsResult solve_statics(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes = nullptr);
 

@@ -49,11 +49,11 @@ SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config
     request.relative_tolerance = request.absolute_tolerance = config.rtol > 0.0 ? config.rtol : 1e-6;
     request.duration = setup.duration;
     if (config.step > 0.0) r.step = request.fixed_step = dividing_step(config.step, output_interval);
-    coupling::IntegratorSettings settings = integrator_settings(scene, request);
+    multibody::RunSettings settings = integrator_settings(scene, request);
     PreparedRun prepared = setup.models != nullptr ? prepare_run(*setup.models, config.choice, config.radiation)
                                                    : prepare_run(scene, config.choice);
-    if (config.integrator == coupling::Integrator::arkode) {
-      r.stable_step = coupling::explicit_stable_step(*prepared.equations, prepared.initial_state);
+    if (config.integrator == solve::Integrator::arkode) {
+      r.stable_step = solve::explicit_stable_step(*prepared.equations, prepared.initial_state);
       const double h = config.stability_factor > 0.0 ? config.stability_factor * r.stable_step : r.stable_step;
       // A model with nothing free to move has no stability limit: it keeps the adaptive step.
       if (config.stability_factor > 0.0 && std::isfinite(h)) r.step = settings.fixed_step = h;
@@ -67,11 +67,11 @@ SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config
       }
     }
     const ModelRun run = integrate_run(scene, prepared, settings);
-    r.errors = coupling::compare_runs(run.result, setup.reference->run.result, setup.window_start);
+    r.errors = multibody::compare_runs(run.result, setup.reference->run.result, setup.window_start);
     r.worst = worst_error(r.errors, setup.judged);
     r.stats = run.result.stats;
     r.state_size = run.state_size;
-  } catch (const coupling::SolverFailure& failure) {
+  } catch (const solve::SolverFailure& failure) {
     r.status = RunStatus::failed;
     r.reason = fmt::format("{}: {} (t = {:g} s)", failure.solver(), failure.cause(), failure.time());
   } catch (const std::exception& error) {

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "coupling/error_metrics.hpp"
+#include "multibody/error_metrics.hpp"
 #include "distributed/farm.hpp"
 #include "scene/crane_model_cache.hpp"
 #include "scene/scene.hpp"
@@ -34,9 +34,9 @@ struct SweepResult {
   std::string reason;           // failed/skipped: why
   double step = 0.0;            // fixed step actually taken [s] (0: adaptive)
   double stable_step = 0.0;     // ARKODE rows: the explicit stability limit [s] (0: not computed)
-  coupling::RunErrors errors;   // ok rows
+  multibody::RunErrors errors;   // ok rows
   WorstError worst;             // ok rows: over the judged outputs
-  coupling::SolverStats stats;  // ok rows
+  solve::SolverStats stats;  // ok rows
   int state_size = 0;           // ok rows: 2 × minimal coordinates (work = RHS evaluations × state size)
 };
 
@@ -63,7 +63,7 @@ struct SweepStudy {
   bool stiffening_from_physics = false;
   ConvergedReference reference;
   double window_start = 0.0;
-  std::vector<coupling::OutputChannel> judged;
+  std::vector<multibody::OutputChannel> judged;
   std::vector<SweepResult> results;  // in grid order (the shard's configurations only)
   // How the runs got their models (this process), all from one scene::CraneModelCache: crane models
   // built for the reference's levels, then for the configurations (one per distinct model and
@@ -79,7 +79,7 @@ struct SweepSetup {
   const scene::Scene* scene = nullptr;
   const ConvergedReference* reference = nullptr;
   double window_start = 0.0;
-  std::vector<coupling::OutputChannel> judged;
+  std::vector<multibody::OutputChannel> judged;
   double duration = 0.0;
   long max_explicit_steps = 2'000'000;
   // The shared models of *scene (its scene() equal to *scene; a configuration's radiation model is
@@ -104,7 +104,7 @@ std::vector<SweepConfig> sweep_configurations(const SweepRequest& request);
 
 // The reference, then the shard's configurations over request.jobs threads (in this process). `on_reference` is
 // called once the reference is known; `progress` (serialized) after each configuration with the
-// number done and the total. Throws scene::SceneError, coupling::SolverFailure (the reference),
+// number done and the total. Throws scene::SceneError, solve::SolverFailure (the reference),
 // SettingError.
 SweepStudy sweep(const scene::Scene& scene, const SweepRequest& request,
                  const std::function<void(const ConvergedReference&)>& on_reference = {},

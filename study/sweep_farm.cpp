@@ -6,7 +6,7 @@
 // CSV line), so the journal holds exactly the rows of the table.
 #include <fmt/format.h>
 
-#include "coupling/stop_request.hpp"
+#include "solve/stop_request.hpp"
 #include "distributed/errors.hpp"
 #include "study/sweep.hpp"
 
@@ -32,7 +32,7 @@ SweepOnEngine sweep_on_engine(distributed::Session& session, const scene::Scene&
   const distributed::WorkFunction work = [&](const distributed::Task& task) {
     try {
       return record_of(run_configuration(setup, grid[task.index]));
-    } catch (const coupling::Interrupted& stop) {  // not a row: the rerun computes it again
+    } catch (const solve::Interrupted& stop) {  // not a row: the rerun computes it again
       throw distributed::TaskAbandoned(fmt::format("{}: interrupted by signal {}", task.key, stop.signal));
     }
   };

@@ -13,7 +13,7 @@ namespace {
 
 using scene::BoomChoice;
 using scene::BoomKind;
-using coupling::Integrator;
+using solve::Integrator;
 
 struct GridSpec {
   std::vector<int> nodal_elements;
@@ -61,7 +61,7 @@ std::string_view to_string(SweepGrid grid) {
 std::string grid_description(SweepGrid grid) {
   const GridSpec s = spec(grid);
   std::string adaptive;
-  for (Integrator i : s.adaptive) adaptive += std::string(coupling::to_string(i)) + ", ";
+  for (Integrator i : s.adaptive) adaptive += std::string(solve::to_string(i)) + ", ";
   std::string text = fmt::format(
       "grid `{}`: models rigid, nodal N ∈ {{{}}}, modal k ∈ {{{}}} with and without static modes (N = 16 mesh); "
       "integrators {}at rtol ∈ {{{}}} (and at the model-choice rtol of the verdict's τ when not among them); "
@@ -124,7 +124,7 @@ std::string model_family(const BoomChoice& choice) {
 }
 
 std::string integrator_label(const SweepConfig& c) {
-  const std::string name(coupling::to_string(c.integrator));
+  const std::string name(solve::to_string(c.integrator));
   if (c.stability_factor > 0.0) return fmt::format("{} h {:g}x limit", name, c.stability_factor);
   if (c.step > 0.0) return fmt::format("{} h {:g} s", name, c.step);
   return fmt::format("{} rtol {:g}", name, c.rtol);

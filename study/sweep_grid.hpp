@@ -12,7 +12,7 @@
 
 #include "hydro/radiation_memory.hpp"
 #include "scene/crane_builder.hpp"
-#include "coupling/simulation.hpp"
+#include "multibody/crane_run.hpp"
 
 namespace ffrf::study {
 
@@ -24,7 +24,7 @@ std::string grid_description(SweepGrid grid);
 struct SweepConfig {
   int id = 0;
   scene::BoomChoice choice;
-  coupling::Integrator integrator = coupling::Integrator::cvode;
+  solve::Integrator integrator = solve::Integrator::cvode;
   double rtol = 0.0;               // 0: none (fixed-step explicit RK)
   double step = 0.0;               // fixed step [s] (generalized-α); 0: adaptive or by stability_factor
   double stability_factor = 0.0;   // > 0: ARKODE fixed step = factor × the explicit stability limit

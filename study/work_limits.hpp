@@ -1,5 +1,5 @@
 // Work and memory a run will need, estimated before anything is allocated, against fixed limits
-// (below; coupling::WorkLimits bounds the run itself as it goes): a setting beyond them is a SettingError naming the limit, never an allocation that
+// (below; solve::WorkLimits bounds the run itself as it goes): a setting beyond them is a SettingError naming the limit, never an allocation that
 // ends in std::bad_alloc or a run that never ends.
 //  * memory: the integrators' dense Newton matrices — SUNDIALS' dense linear solver keeps the
 //    Jacobian, its saved copy and the LU factors, 3 n² doubles for a state of size n; the largest

@@ -24,7 +24,7 @@ are listed in docs/theory.md section 4 and printed below), and cross-checked num
     (b) Q_v against finite differences of the quadrature T (Lagrange's equations), and by
         integrating free flights (DOP853, tight tolerances): energy, linear and angular momentum;
     (c) Q_g against finite differences of V = g int rho y dx (quadrature).
-Finally it writes tests/coupling/one_element_reference.hpp (C++/Eigen, via sympy cxxcode) — the
+Finally it writes tests/multibody/one_element_reference.hpp (C++/Eigen, via sympy cxxcode) — the
 independent reference for the C++ floating-frame body. Do not edit that header by hand.
 """
 import os

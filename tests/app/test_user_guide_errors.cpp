@@ -1,5 +1,5 @@
 // docs/user-guide.md's "Errors, exit codes and failure names" cannot drift from the code: every
-// failure kind of coupling/failure.hpp has its row with a remedy, every exit code of app/commands.hpp
+// failure kind of solve/failure.hpp has its row with a remedy, every exit code of app/commands.hpp
 // and of a stop by SIGINT/SIGTERM (128 + signal) has its row, and every status word of the sweep and
 // recommend studies is named.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "app/commands.hpp"
-#include "coupling/failure.hpp"
+#include "solve/failure.hpp"
 #include "study/recommend.hpp"
 #include "study/sweep.hpp"
 
@@ -47,8 +47,8 @@ std::vector<std::string> row(const std::string& section, const std::string& firs
 TEST(UserGuideErrors, EveryFailureKindHasItsRowAndRemedy) {
   const std::string section = errors_section();
   ASSERT_FALSE(section.empty()) << "docs/user-guide.md lacks the errors section";
-  for (const coupling::FailureKind kind : coupling::all_failure_kinds) {
-    const std::string name(coupling::to_string(kind));
+  for (const solve::FailureKind kind : solve::all_failure_kinds) {
+    const std::string name(solve::to_string(kind));
     const auto cells = row(section, "`" + name + "`");
     ASSERT_EQ(cells.size(), 4u) << "no row for the failure kind '" << name << "'";
     EXPECT_TRUE(cells[1] == "yes" || cells[1] == "no") << name;

@@ -1,7 +1,9 @@
 # The layering of docs/architecture.md, checked on the sources (ctest `architecture_layers`):
-#   linalg (dense Eigen solvers compiled once) <- fem <- modal, nodal <- coupling <- scene <- study <-
+#   linalg (dense Eigen solvers compiled once) <- fem <- modal, nodal <- multibody <- scene <- study <-
 #   report <- app, with hydro on linalg and sea (the sea's loads on a hull) on hydro beside them
-#   (coupling may use sea and hydro; neither knows anything of the crane); distributed/ (the task-farm engine)
+#   (multibody may use sea and hydro; neither knows anything of the crane), and solve (the solvers of
+#   a generic second-order system) on linalg alone: multibody implements its system interface, and
+#   solve knows nothing of fem, modal, nodal, hydro, sea or the crane; distributed/ (the task-farm engine)
 #   knows nothing of ffrf and serves study/ and app/;
 #   CLI11 only in app/, nlohmann-json only in report/, toml++ only in scene/, netCDF only in hydro/;
 #   no printing (fmt::print, printf, std::cout/cerr, puts) in scene/, study/, report/;
@@ -21,12 +23,13 @@ set(allowed_nodal linalg fem)
 set(allowed_hydro linalg)
 set(allowed_distributed "")
 set(allowed_sea linalg hydro)
-set(allowed_coupling linalg fem modal nodal hydro sea)
-set(allowed_scene linalg fem modal nodal hydro sea coupling)
-set(allowed_study linalg fem modal nodal hydro sea coupling scene distributed)
-set(allowed_report linalg fem modal nodal hydro sea coupling scene study distributed)
-set(allowed_app linalg fem modal nodal hydro sea coupling scene study report distributed)
-set(layers linalg fem modal nodal hydro sea distributed coupling scene study report app)
+set(allowed_solve linalg)
+set(allowed_multibody linalg fem modal nodal hydro sea solve)
+set(allowed_scene linalg fem modal nodal hydro sea solve multibody)
+set(allowed_study linalg fem modal nodal hydro sea solve multibody scene distributed)
+set(allowed_report linalg fem modal nodal hydro sea solve multibody scene study distributed)
+set(allowed_app linalg fem modal nodal hydro sea solve multibody scene study report distributed)
+set(layers linalg fem modal nodal hydro sea distributed solve multibody scene study report app)
 
 set(violations "")
 set(checked 0)

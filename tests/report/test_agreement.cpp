@@ -90,7 +90,7 @@ TEST(Agreement, CompareSweepAndRecommendMeasureTheSameModelAlike) {
 
   // The same error for the same model.
   EXPECT_EQ(configured.worst.error, chosen.error) << chosen.label();
-  EXPECT_EQ(std::string(coupling::channel_name(configured.worst.channel)), chosen.worst_output);
+  EXPECT_EQ(std::string(multibody::channel_name(configured.worst.channel)), chosen.worst_output);
   bool found = false;
   for (std::size_t m = 0; m < comparison.runs.size(); ++m) {
     if (!same_model(comparison.runs[m].choice, chosen.choice, stiffening)) continue;
@@ -126,7 +126,7 @@ void expect_one_cheapest(const scene::Scene& scene, double duration, const study
   const study::Candidate& chosen = rec.candidates[*rec.chosen];
   const scene::Stiffening stiffening = rec.reference_scene.boom.stiffening;
   EXPECT_EQ(rec.reasoning.relative_tolerance, study::model_choice_rtol(0.01));
-  EXPECT_EQ(chosen.integrator, coupling::Integrator::cvode) << chosen.label();
+  EXPECT_EQ(chosen.integrator, solve::Integrator::cvode) << chosen.label();
   // No candidate that recommend ran and saw pass did less solver work than the one it names.
   for (const study::Candidate& c : rec.candidates) {
     if (c.status == study::CandidateStatus::passed) { EXPECT_GE(c.work(), chosen.work()) << c.label(); }

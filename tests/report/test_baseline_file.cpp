@@ -26,7 +26,7 @@ report::BaselineFile sample_file() {
   study::Baseline& b = file.baseline;
   b.model.choice = {scene::BoomKind::modal, 16, 2, true};
   b.model.choice.stiffening = scene::Stiffening::static_load;
-  b.model.integrator = coupling::Integrator::ida;
+  b.model.integrator = solve::Integrator::ida;
   b.model.relative_tolerance = 1e-7;
   b.model.absolute_tolerance = 3e-8;
   b.model.duration = 40.0;
@@ -167,7 +167,7 @@ TEST(BaselineFile, MalformedFilesAreNamedWithKeyValueAndProblem) {
   EXPECT_EQ(parse_error(edited("\"rtol\": 1e-07", "\"rtol\": 2.0")),
             "base.json: model.rtol = 2.0: out of range (valid range (0, 1))");
   EXPECT_EQ(parse_error(edited("\"integrator\": \"ida\"", "\"integrator\": \"euler\"")),
-            "base.json: model.integrator = \"euler\": unknown integrator (valid: " + coupling::integrator_choices() + ")");
+            "base.json: model.integrator = \"euler\": unknown integrator (valid: " + solve::integrator_choices() + ")");
   EXPECT_EQ(parse_error(edited("\"max_bdf_order\": 4", "\"max_bdf_order\": 6")),
             "base.json: model.max_bdf_order = 6: out of range (valid range [1, 5])");
   EXPECT_EQ(parse_error(edited("\"mean\": 1.0000000000000002", "\"mean\": \"abc\"")),

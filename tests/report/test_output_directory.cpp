@@ -9,7 +9,7 @@
 #include <fstream>
 #include <string>
 
-#include "coupling/stop_request.hpp"
+#include "solve/stop_request.hpp"
 #include "report/output_directory.hpp"
 
 namespace {
@@ -117,9 +117,9 @@ TEST(OutputDirectoryDeathTest, StopRequestKeepsAnInterruptedRunFromCommitting) {
         try {
           report::StagedDirectory out(target, "summary.json");
           out.write("summary.json", "{}\n");
-          coupling::request_stop(2);
+          solve::request_stop(2);
           out.commit();
-        } catch (const coupling::Interrupted& stop) {
+        } catch (const solve::Interrupted& stop) {
           signal = stop.signal;
         }
         std::exit(signal == 2 && !fs::exists(target) ? 42 : 1);

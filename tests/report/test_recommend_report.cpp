@@ -14,7 +14,7 @@ using namespace ffrf;
 
 study::Recommendation failed_recommendation(bool reference_converged) {
   study::Recommendation rec;
-  rec.outputs = {coupling::OutputChannel::cargo_heave};
+  rec.outputs = {multibody::OutputChannel::cargo_heave};
   rec.duration = 600.0;
   rec.reference.choice.kind = scene::BoomKind::nodal;
   rec.reference.choice.elements = 32;

@@ -27,13 +27,13 @@ namespace fs = std::filesystem;
 
 study::SweepResult ok_result(int id, double worst, double wall) {
   study::SweepResult r;
-  r.config = {id, {scene::BoomKind::modal, 16, 2, true}, coupling::Integrator::cvode, 1e-6, 0.0, 0.0, std::nullopt};
+  r.config = {id, {scene::BoomKind::modal, 16, 2, true}, solve::Integrator::cvode, 1e-6, 0.0, 0.0, std::nullopt};
   for (std::size_t c = 0; c < r.errors.channels.size(); ++c) {
     r.errors.channels[c].normalized_rms = worst * std::pow(0.5, static_cast<double>(c));
     r.errors.channels[c].max_abs = 0.1 + static_cast<double>(c) / 3.0;  // 1/3: needs every digit to round-trip
   }
   r.errors.daf_error = 1.0 / 7.0;
-  r.worst = {worst, coupling::OutputChannel::cargo_heave};
+  r.worst = {worst, multibody::OutputChannel::cargo_heave};
   r.stats.steps = 1234;
   r.stats.function_evaluations = 5678;
   r.stats.wall_seconds = wall;
@@ -43,7 +43,7 @@ study::SweepResult ok_result(int id, double worst, double wall) {
 TEST(SweepCsv, RowsReadBackExactlyFailuresHaveEmptyCellsAndTheirReason) {
   study::SweepResult ok = ok_result(3, 1.0 / 3.0, 0.125);
   study::SweepResult failed;
-  failed.config = {4, {scene::BoomKind::rigid, 1}, coupling::Integrator::arkode, 0.0, 0.0, 2.0, std::nullopt};
+  failed.config = {4, {scene::BoomKind::rigid, 1}, solve::Integrator::arkode, 0.0, 0.0, 2.0, std::nullopt};
   failed.status = study::RunStatus::failed;
   failed.reason = "ARKODE: unstable, \"h = 2x\", step too large\nsecond line";
   failed.errors.channels[0].normalized_rms = NAN;  // never written for a failed row

@@ -81,14 +81,14 @@ TEST(CraneCharts, ReferenceDrawnLastDashedBlackAndTheDifferencePanelReadsItsColu
   EXPECT_NE(run.find("unset key"), std::string::npos);
 }
 
-study::SweepResult result(int id, scene::BoomChoice choice, coupling::Integrator integrator, double worst, double wall,
+study::SweepResult result(int id, scene::BoomChoice choice, solve::Integrator integrator, double worst, double wall,
                           long steps, int state_size) {
   study::SweepResult r;
-  r.config = {id, choice, integrator, integrator == coupling::Integrator::generalized_alpha ? 0.0 : 1e-6,
-              integrator == coupling::Integrator::generalized_alpha ? 0.01 : 0.0, 0.0, std::nullopt};
-  if (integrator == coupling::Integrator::generalized_alpha) r.step = 0.01;
+  r.config = {id, choice, integrator, integrator == solve::Integrator::generalized_alpha ? 0.0 : 1e-6,
+              integrator == solve::Integrator::generalized_alpha ? 0.01 : 0.0, 0.0, std::nullopt};
+  if (integrator == solve::Integrator::generalized_alpha) r.step = 0.01;
   for (auto& e : r.errors.channels) e.normalized_rms = worst;
-  r.worst = {worst, coupling::OutputChannel::cargo_heave};
+  r.worst = {worst, multibody::OutputChannel::cargo_heave};
   r.stats.steps = steps;
   r.stats.function_evaluations = steps;  // one RHS evaluation per step: work = steps × state size here
   r.stats.wall_seconds = wall;
@@ -101,7 +101,7 @@ std::vector<report::SweepRow> random_rows() {
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::string csv = report::sweep_csv_header();
   for (int id = 0; id < 40; ++id) {
-    const auto integrator = id % 3 == 0 ? coupling::Integrator::generalized_alpha : coupling::Integrator::cvode;
+    const auto integrator = id % 3 == 0 ? solve::Integrator::generalized_alpha : solve::Integrator::cvode;
     csv += report::sweep_csv_line(result(id, {scene::BoomKind::modal, 16, 1 + id % 4, id % 2 == 0}, integrator,
                                          std::pow(10.0, -6.0 * uniform(random)), 0.01 + uniform(random), 1000 + id, 20));
   }
@@ -187,10 +187,10 @@ TEST(SweepVerdict, CheapestPassingConfigurationWithHandComputedSpeedUps) {
   // Reference: 8 s and work 64 000. τ = 1 %: the rigid run fails; the two modal runs pass; the nodal
   // one passes too but costs more work (1000 × 60 = 60 000) than modal k=2+static (2000 × 20 = 40 000).
   std::string csv = report::sweep_csv_header();
-  csv += report::sweep_csv_line(result(0, {scene::BoomKind::rigid, 1}, coupling::Integrator::cvode, 2.5, 0.1, 500, 12));
-  csv += report::sweep_csv_line(result(1, {scene::BoomKind::modal, 16, 2, true}, coupling::Integrator::cvode, 3e-5, 0.4, 2000, 20));
-  csv += report::sweep_csv_line(result(2, {scene::BoomKind::modal, 16, 4, true}, coupling::Integrator::cvode, 2e-5, 0.3, 2100, 24));
-  csv += report::sweep_csv_line(result(3, {scene::BoomKind::nodal, 8}, coupling::Integrator::cvode, 1e-5, 2.0, 1000, 60));
+  csv += report::sweep_csv_line(result(0, {scene::BoomKind::rigid, 1}, solve::Integrator::cvode, 2.5, 0.1, 500, 12));
+  csv += report::sweep_csv_line(result(1, {scene::BoomKind::modal, 16, 2, true}, solve::Integrator::cvode, 3e-5, 0.4, 2000, 20));
+  csv += report::sweep_csv_line(result(2, {scene::BoomKind::modal, 16, 4, true}, solve::Integrator::cvode, 2e-5, 0.3, 2100, 24));
+  csv += report::sweep_csv_line(result(3, {scene::BoomKind::nodal, 8}, solve::Integrator::cvode, 1e-5, 2.0, 1000, 60));
   const std::vector<report::SweepRow> rows = report::read_sweep_csv(csv, "verdict.csv");
   report::SweepFacts facts;
   facts.tolerance = 0.01;

@@ -11,25 +11,25 @@
 
 #include "scene/crane_builder.hpp"
 #include "scene/scene_loader.hpp"
-#include "coupling/simulation.hpp"
-#include "coupling/static_equilibrium.hpp"
+#include "multibody/crane_run.hpp"
+#include "multibody/crane_statics.hpp"
 
 namespace ffrf::test {
 
 inline scene::Scene reference_scene() { return scene::load_scene(FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml"); }
 
 // Builds a crane for `choice` with the model adjusted by `tweak` (hull supports, fixed hull, ...).
-inline std::unique_ptr<coupling::CraneEquations> build_with(
+inline std::unique_ptr<multibody::CraneEquations> build_with(
     const scene::Scene& scene, const scene::BoomChoice& choice,
-    const std::function<void(coupling::HullModel&, coupling::WireModel&)>& tweak) {
+    const std::function<void(multibody::HullModel&, multibody::WireModel&)>& tweak) {
   if (choice.kind == scene::BoomKind::nodal) {
     auto model = scene::build_crane_model(scene, nodal::NodalCoordinates(scene::boom_beam(scene, choice.elements)));
     tweak(model.hull, model.wire);
-    return coupling::make_crane_equations(std::move(model));
+    return multibody::make_crane_equations(std::move(model));
   }
   auto model = scene::build_crane_model(scene, scene::modal_coordinates(scene, choice));
   tweak(model.hull, model.wire);
-  return coupling::make_crane_equations(std::move(model));
+  return multibody::make_crane_equations(std::move(model));
 }
 
 // The conservative test crane: no water, waves or damping; the hull held by linear springs only
@@ -37,7 +37,7 @@ inline std::unique_ptr<coupling::CraneEquations> build_with(
 // its spring-supported static equilibrium released 0.5 m up (hull and cargo together, so the wire
 // keeps its stretch) with the cargo swung 1 m sideways: the wire stays taut throughout.
 struct ConservativeCrane {
-  std::unique_ptr<coupling::CraneEquations> equations;
+  std::unique_ptr<multibody::CraneEquations> equations;
   Eigen::VectorXd start;
 };
 
@@ -50,7 +50,7 @@ inline ConservativeCrane conservative_crane() {
   const double heave_stiffness = 3.6e7;
   const double weight = (scene.hull->mass + scene.boom.mesh.total_mass() + scene.cargo->mass) * scene.environment.gravity;
   ConservativeCrane crane;
-  crane.equations = build_with(scene, {scene::BoomKind::nodal, 1, 0, false}, [&](coupling::HullModel& hull, coupling::WireModel&) {
+  crane.equations = build_with(scene, {scene::BoomKind::nodal, 1, 0, false}, [&](multibody::HullModel& hull, multibody::WireModel&) {
     hull.hydrostatics = false;
     hull.mooring_stiffness = 0.0;
     hull.support_stiffness = Eigen::Vector3d(5.0e5, heave_stiffness, 5.0e10);
@@ -58,7 +58,7 @@ inline ConservativeCrane conservative_crane() {
   Eigen::VectorXd guess = crane.equations->initial_guess();
   guess(1) -= weight / heave_stiffness;  // start Newton where the heave spring carries the weight
   guess(4) -= weight / heave_stiffness;
-  crane.start = coupling::solve_static_equilibrium(*crane.equations, guess).z;
+  crane.start = multibody::solve_static_equilibrium(*crane.equations, guess).z;
   crane.start(1) += 0.5;
   crane.start(3) += 1.0;
   crane.start(4) += 0.5;
@@ -126,7 +126,7 @@ inline double relative_history_error(const std::vector<double>& a, const std::ve
 }
 
 template <class Get>
-std::vector<double> column(const coupling::RunResult& run, Get get) {
+std::vector<double> column(const multibody::RunResult& run, Get get) {
   std::vector<double> values;
   for (const auto& s : run.samples) values.push_back(get(s));
   return values;

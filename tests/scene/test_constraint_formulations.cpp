@@ -22,16 +22,16 @@
 
 #include <cstdio>
 
-#include "coupling/constraint_drift.hpp"
+#include "multibody/constraint_drift.hpp"
 #include "crane_test_support.hpp"
 
 namespace constraint_formulations_test {
 
 using namespace ffrf;
-using coupling::Integrator;
+using solve::Integrator;
 
-coupling::IntegratorSettings drift_settings() {
-  coupling::IntegratorSettings settings;
+multibody::RunSettings drift_settings() {
+  multibody::RunSettings settings;
   settings.relative_tolerance = 1e-6;
   settings.absolute_tolerance = 1e-8;
   settings.duration = 60.0;
@@ -42,16 +42,16 @@ coupling::IntegratorSettings drift_settings() {
 struct ReferenceCrane {
   scene::Scene scene = test::reference_scene();
   scene::BoomChoice choice{scene::BoomKind::rigid, 1, 0, false};
-  coupling::EquationsFactory factory() const {
+  multibody::EquationsFactory factory() const {
     return [this] { return scene::build_crane(scene, choice); };
   }
   Eigen::VectorXd equilibrium() const {
     auto equations = scene::build_crane(scene, choice);
-    return coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
+    return multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   }
 };
 
-double max_between(const coupling::FormulationDrift& d, double from, double to) {
+double max_between(const multibody::FormulationDrift& d, double from, double to) {
   double m = 0.0;
   for (std::size_t i = 0; i < d.residual.size(); ++i) {
     if (d.run.time[i] >= from && d.run.time[i] <= to) m = std::max(m, d.residual[i]);
@@ -59,7 +59,7 @@ double max_between(const coupling::FormulationDrift& d, double from, double to) 
   return m;
 }
 
-const coupling::FormulationDrift& find(const std::vector<coupling::FormulationDrift>& drifts, Integrator kind) {
+const multibody::FormulationDrift& find(const std::vector<multibody::FormulationDrift>& drifts, Integrator kind) {
   for (const auto& d : drifts) {
     if (d.formulation == kind) return d;
   }
@@ -70,12 +70,12 @@ class ConstraintFormulations : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     const ReferenceCrane crane;
-    drifts_ = new std::vector<coupling::FormulationDrift>(
-        coupling::compare_constraint_drift(crane.factory(), crane.equilibrium(), drift_settings()));
+    drifts_ = new std::vector<multibody::FormulationDrift>(
+        multibody::compare_constraint_drift(crane.factory(), crane.equilibrium(), drift_settings()));
     for (const auto& d : *drifts_) {
       std::printf("%-11s max |C| %.3e m, final %.3e m | steps %ld, evaluations %ld, Jacobians %ld, Newton %ld, "
                   "error-test failures %ld, projections %ld, wall %.3f s\n",
-                  std::string(coupling::to_string(d.formulation)).c_str(), d.max_residual, d.final_residual, d.run.stats.steps,
+                  std::string(solve::to_string(d.formulation)).c_str(), d.max_residual, d.final_residual, d.run.stats.steps,
                   d.run.stats.function_evaluations, d.run.stats.jacobian_evaluations, d.run.stats.newton_iterations,
                   d.run.stats.error_test_failures, d.run.stats.projections, d.run.stats.wall_seconds);
     }
@@ -84,10 +84,10 @@ class ConstraintFormulations : public ::testing::Test {
     delete drifts_;
     drifts_ = nullptr;
   }
-  static const std::vector<coupling::FormulationDrift>& drifts() { return *drifts_; }
+  static const std::vector<multibody::FormulationDrift>& drifts() { return *drifts_; }
 
  private:
-  static inline std::vector<coupling::FormulationDrift>* drifts_ = nullptr;
+  static inline std::vector<multibody::FormulationDrift>* drifts_ = nullptr;
 };
 
 TEST_F(ConstraintFormulations, UnstabilizedIndexOneDriftsAndTheDriftGrows) {
@@ -104,13 +104,13 @@ TEST_F(ConstraintFormulations, StabilizedFormulationsHoldTheConstraintAndMinimal
   for (Integrator kind : {Integrator::ida, Integrator::baumgarte, Integrator::projection}) {
     // Within the integration tolerance, rtol × 1 m (the index-2 DAE's own error control; the
     // stabilised ODE forms far below it).
-    EXPECT_LT(find(drifts(), kind).max_residual, 1e-6) << coupling::to_string(kind);
+    EXPECT_LT(find(drifts(), kind).max_residual, 1e-6) << solve::to_string(kind);
   }
   EXPECT_EQ(find(drifts(), Integrator::cvode).max_residual, 0.0);
   // Stabilization matters: each stabilized formulation ends far below the unstabilized drift.
   const double drift = find(drifts(), Integrator::index1).final_residual;
   for (Integrator kind : {Integrator::ida, Integrator::baumgarte, Integrator::projection}) {
-    EXPECT_LT(find(drifts(), kind).final_residual, 1e-2 * drift) << coupling::to_string(kind);
+    EXPECT_LT(find(drifts(), kind).final_residual, 1e-2 * drift) << solve::to_string(kind);
   }
   EXPECT_GT(find(drifts(), Integrator::projection).run.stats.projections, 0);
 }
@@ -130,11 +130,11 @@ TEST_F(ConstraintFormulations, AllFormulationsAgreeWithMinimalCoordinatesOnThePh
     const auto& a = d.run.samples.back().joint_reaction;
     const auto& b = minimal.run.samples.back().joint_reaction;
     std::printf("%-11s vs cvode: cargo heave %.3e m (motion %.3f m), wire tension %.3e N, joint reaction %.3e relative\n",
-                std::string(coupling::to_string(d.formulation)).c_str(), heave, heave_range, tension, (a - b).norm() / b.norm());
+                std::string(solve::to_string(d.formulation)).c_str(), heave, heave_range, tension, (a - b).norm() / b.norm());
     EXPECT_GT(heave_range, 0.5) << "the wave must move the cargo";
-    EXPECT_LT(heave, 1e-4) << coupling::to_string(d.formulation);
-    EXPECT_LT(tension, wire_stiffness * 1e-4) << coupling::to_string(d.formulation);
-    EXPECT_LT((a - b).norm(), 1e-3 * b.norm()) << coupling::to_string(d.formulation);
+    EXPECT_LT(heave, 1e-4) << solve::to_string(d.formulation);
+    EXPECT_LT(tension, wire_stiffness * 1e-4) << solve::to_string(d.formulation);
+    EXPECT_LT((a - b).norm(), 1e-3 * b.norm()) << solve::to_string(d.formulation);
     EXPECT_TRUE(d.run.wire_events.empty()) << "the wire stays taut in this sea";
   }
 }
@@ -154,10 +154,10 @@ TEST(ConstraintFormulationsBaumgarte, DriftFallsAsTheStabilizationFrequencyRises
     double log_sum = 0.0;
     int runs = 0;
     for (double interval : {0.06, 0.07, 0.08, 0.09, 0.1, 0.11, 0.12, 0.13}) {
-      coupling::IntegratorSettings settings = drift_settings();
+      multibody::RunSettings settings = drift_settings();
       settings.output_interval = interval;
       settings.baumgarte_frequency = frequency;
-      const auto run = coupling::compare_constraint_drift(crane.factory(), z0, settings, {Integrator::baumgarte})[0];
+      const auto run = multibody::compare_constraint_drift(crane.factory(), z0, settings, {Integrator::baumgarte})[0];
       double squares = 0.0;
       for (const double c : run.residual) squares += c * c;
       log_sum += 0.5 * std::log(squares / static_cast<double>(run.residual.size()));
@@ -171,23 +171,23 @@ TEST(ConstraintFormulationsBaumgarte, DriftFallsAsTheStabilizationFrequencyRises
 
 TEST(ConstraintFormulationsBaumgarte, RejectsANonPositiveFrequency) {
   const ReferenceCrane crane;
-  coupling::IntegratorSettings settings = drift_settings();
+  multibody::RunSettings settings = drift_settings();
   settings.kind = Integrator::baumgarte;
   settings.baumgarte_frequency = 0.0;
   auto equations = crane.factory()();
-  EXPECT_THROW(coupling::integrate(*equations, crane.equilibrium(), settings), std::invalid_argument);
+  EXPECT_THROW(multibody::simulate(*equations, crane.equilibrium(), settings), std::invalid_argument);
 }
 
 TEST(ConstraintFormulationsEnergy, ProjectionInjectsNoEnergy) {
   const Eigen::VectorXd z0 = test::conservative_crane().start;
-  coupling::IntegratorSettings settings = drift_settings();
+  multibody::RunSettings settings = drift_settings();
   settings.duration = 30.0;
   settings.output_interval = 0.05;
-  const auto runs = coupling::compare_constraint_drift([] { return test::conservative_crane().equations; }, z0, settings,
+  const auto runs = multibody::compare_constraint_drift([] { return test::conservative_crane().equations; }, z0, settings,
                                                        {Integrator::cvode, Integrator::projection});
   std::vector<double> loss, rise, kinetic;
   for (const auto& d : runs) {
-    const auto energy = test::column(d.run, [](const coupling::CraneOutputs& o) {
+    const auto energy = test::column(d.run, [](const multibody::CraneOutputs& o) {
       return o.kinetic_energy + o.gravity_energy + o.strain_energy + o.wire_energy + o.spring_energy;
     });
     double k = 0.0, r = -1e300;
@@ -199,7 +199,7 @@ TEST(ConstraintFormulationsEnergy, ProjectionInjectsNoEnergy) {
     rise.push_back(r);
     kinetic.push_back(k);
     std::printf("%-11s energy lost %.4e J, largest rise above the start %.3e J, max kinetic %.4e J\n",
-                std::string(coupling::to_string(d.formulation)).c_str(), loss.back(), rise.back(), k);
+                std::string(solve::to_string(d.formulation)).c_str(), loss.back(), rise.back(), k);
   }
   EXPECT_GT(kinetic[1], 1e6) << "the test must actually move";
   EXPECT_LE(rise[1], 1e-9 * kinetic[1]) << "projection must not raise the energy above the start";

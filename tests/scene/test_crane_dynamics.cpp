@@ -17,8 +17,8 @@ namespace crane_dynamics_test {
 using namespace ffrf;
 using test::column;
 
-coupling::IntegratorSettings tight(double duration, coupling::Integrator kind = coupling::Integrator::cvode) {
-  coupling::IntegratorSettings s;
+multibody::RunSettings tight(double duration, solve::Integrator kind = solve::Integrator::cvode) {
+  multibody::RunSettings s;
   s.kind = kind;
   s.relative_tolerance = 1e-9;
   s.absolute_tolerance = 1e-9;
@@ -31,12 +31,12 @@ TEST(CraneDynamics, EnergyIsConservedWithoutWaterAndDamping) {
   test::ConservativeCrane crane = test::conservative_crane();
   auto& equations = crane.equations;
   const Eigen::VectorXd& z = crane.start;
-  const coupling::RunResult run = coupling::integrate(*equations, z, tight(100.0));
+  const multibody::RunResult run = multibody::simulate(*equations, z, tight(100.0));
   EXPECT_TRUE(run.wire_events.empty());
-  const auto energy = column(run, [](const coupling::CraneOutputs& o) {
+  const auto energy = column(run, [](const multibody::CraneOutputs& o) {
     return o.kinetic_energy + o.gravity_energy + o.strain_energy + o.wire_energy + o.spring_energy;
   });
-  const auto kinetic = column(run, [](const coupling::CraneOutputs& o) { return o.kinetic_energy; });
+  const auto kinetic = column(run, [](const multibody::CraneOutputs& o) { return o.kinetic_energy; });
   const double kinetic_max = *std::max_element(kinetic.begin(), kinetic.end());
   double drift = 0.0;
   for (double e : energy) drift = std::max(drift, std::abs(e - energy.front()));
@@ -54,13 +54,13 @@ TEST(CraneDynamics, HeavePeriodOfTheHullAloneMatchesHydrostatics) {
   scene.wire->stiffness = 1.0e3;
   scene.radiation.surge_damping = scene.radiation.heave_damping = scene.radiation.pitch_damping = 0.0;
   auto equations = scene::build_crane(scene, {scene::BoomKind::rigid, 1, 0, false});
-  Eigen::VectorXd z = coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
+  Eigen::VectorXd z = multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   z(1) += 0.2;  // heave release: the hull, and the tiny cargo with it (the wire keeps its stretch)
   z(4) += 0.2;
-  coupling::IntegratorSettings settings = tight(60.0);
+  multibody::RunSettings settings = tight(60.0);
   settings.output_interval = 0.01;
-  const coupling::RunResult run = coupling::integrate(*equations, z, settings);
-  const double period = test::mean_period(run.time, column(run, [](const coupling::CraneOutputs& o) { return o.hull.y(); }));
+  const multibody::RunResult run = multibody::simulate(*equations, z, settings);
+  const double period = test::mean_period(run.time, column(run, [](const multibody::CraneOutputs& o) { return o.hull.y(); }));
   const auto& hull = *scene.hull;
   const double mass = hull.mass + scene.boom.mesh.total_mass() + scene.cargo->mass;
   const double added = scene.radiation.heave_added_mass * mass;
@@ -76,7 +76,7 @@ TEST(CraneDynamics, CargoOnRigidBoomSwingsAsARigidBodyOnAString) {
   scene.wave.reset();
   scene.wire->damping_ratio = 0.0;
   auto equations = test::build_with(scene, {scene::BoomKind::rigid, 1, 0, false},
-                                    [](coupling::HullModel& hull, coupling::WireModel&) { hull.fixed = true; });
+                                    [](multibody::HullModel& hull, multibody::WireModel&) { hull.fixed = true; });
   const auto& cargo = *scene.cargo;
   const double g = scene.environment.gravity, m = cargo.mass, h = cargo.hook_y, inertia = cargo.pitch_inertia();
   const double length = scene.wire->unstretched_length + m * g / scene.wire->stiffness;  // string at rest
@@ -93,10 +93,10 @@ TEST(CraneDynamics, CargoOnRigidBoomSwingsAsARigidBodyOnAString) {
   const Eigen::Vector2d hook = tip + length * Eigen::Vector2d(std::sin(phi), -std::cos(phi));
   z.head<2>() = hook + h * Eigen::Vector2d(std::sin(psi), -std::cos(psi));
   z(2) = psi;
-  coupling::IntegratorSettings settings = tight(80.0);
+  multibody::RunSettings settings = tight(80.0);
   settings.output_interval = 0.01;
-  const coupling::RunResult run = coupling::integrate(*equations, z, settings);
-  const double period = test::mean_period(run.time, column(run, [](const coupling::CraneOutputs& o) { return o.cargo.x(); }));
+  const multibody::RunResult run = multibody::simulate(*equations, z, settings);
+  const double period = test::mean_period(run.time, column(run, [](const multibody::CraneOutputs& o) { return o.cargo.x(); }));
   std::printf("pendulum period %.5f s, double-pendulum theory %.5f s\n", period, 2 * std::numbers::pi / std::sqrt(omega2));
   EXPECT_NEAR(period / (2 * std::numbers::pi / std::sqrt(omega2)), 1.0, 5e-3);
   EXPECT_NEAR(period / (2 * std::numbers::pi / std::sqrt(omega2)), 1.0, 1e-3) << "small amplitude: linear theory";
@@ -105,12 +105,12 @@ TEST(CraneDynamics, CargoOnRigidBoomSwingsAsARigidBodyOnAString) {
 TEST(CraneDynamics, LagrangeMultipliersAndMinimalCoordinatesAgree) {
   const scene::Scene scene = test::reference_scene();
   auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, 4, 0, false});
-  const Eigen::VectorXd z0 = coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
-  coupling::IntegratorSettings settings = tight(40.0);
+  const Eigen::VectorXd z0 = multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
+  multibody::RunSettings settings = tight(40.0);
   settings.output_interval = 0.05;
-  const coupling::RunResult minimal = coupling::integrate(*equations, z0, settings);
-  settings.kind = coupling::Integrator::ida;
-  const coupling::RunResult lagrange = coupling::integrate(*equations, z0, settings);
+  const multibody::RunResult minimal = multibody::simulate(*equations, z0, settings);
+  settings.kind = solve::Integrator::ida;
+  const multibody::RunResult lagrange = multibody::simulate(*equations, z0, settings);
   double heave = 0.0, residual = 0.0;
   for (std::size_t i = 0; i < minimal.samples.size(); ++i) {
     heave = std::max(heave, std::abs(minimal.samples[i].cargo.y() - lagrange.samples[i].cargo.y()));
@@ -130,11 +130,11 @@ TEST(CraneDynamics, VeryStiffBoomReproducesTheRigidBoom) {
   scene.boom.mesh.section.youngs_modulus *= 1e6;
   auto stiff = scene::build_crane(scene, {scene::BoomKind::nodal, 2, 0, false});
   auto rigid = scene::build_crane(scene, {scene::BoomKind::rigid, 1, 0, false});
-  coupling::IntegratorSettings settings = tight(30.0);  // ramp (20 s) plus one full wave period
+  multibody::RunSettings settings = tight(30.0);  // ramp (20 s) plus one full wave period
   settings.relative_tolerance = settings.absolute_tolerance = 1e-8;
-  const auto a = coupling::integrate(*stiff, coupling::solve_static_equilibrium(*stiff, stiff->initial_guess()).z, settings);
-  const auto b = coupling::integrate(*rigid, coupling::solve_static_equilibrium(*rigid, rigid->initial_guess()).z, settings);
-  using O = coupling::CraneOutputs;
+  const auto a = multibody::simulate(*stiff, multibody::solve_static_equilibrium(*stiff, stiff->initial_guess()).z, settings);
+  const auto b = multibody::simulate(*rigid, multibody::solve_static_equilibrium(*rigid, rigid->initial_guess()).z, settings);
+  using O = multibody::CraneOutputs;
   EXPECT_LT(test::relative_history_error(column(a, [](const O& o) { return o.hull.y(); }), column(b, [](const O& o) { return o.hull.y(); })), 1e-4);
   EXPECT_LT(test::relative_history_error(column(a, [](const O& o) { return o.hull.z(); }), column(b, [](const O& o) { return o.hull.z(); })), 1e-4);
   EXPECT_LT(test::relative_history_error(column(a, [](const O& o) { return o.cargo.y(); }), column(b, [](const O& o) { return o.cargo.y(); })), 1e-4);

@@ -5,7 +5,7 @@
 // the boom frame at the equilibrium trim), and the joint reaction = weight of boom + cargo.
 #include <gtest/gtest.h>
 
-#include "coupling/planar.hpp"
+#include "multibody/planar.hpp"
 #include "crane_test_support.hpp"
 
 namespace crane_statics_test {
@@ -18,15 +18,15 @@ TEST(CraneStatics, ReferenceSceneEquilibriumMatchesStatics) {
   choice.kind = scene::BoomKind::nodal;
   choice.elements = 32;
   auto equations = scene::build_crane(scene, choice);
-  const coupling::StaticEquilibrium eq = coupling::solve_static_equilibrium(*equations, equations->initial_guess());
-  const coupling::CraneOutputs& out = eq.outputs;
+  const multibody::StaticEquilibrium eq = multibody::solve_static_equilibrium(*equations, equations->initial_guess());
+  const multibody::CraneOutputs& out = eq.outputs;
   const auto& hull = *scene.hull;
   const double g = scene.environment.gravity, rho = scene.environment.water_density;
   const double boom_mass = scene.boom.mesh.total_mass(), cargo_mass = scene.cargo->mass;
   const double displaced = hull.mass + boom_mass + cargo_mass;
 
   // Archimedes: keel depth at mid-length.
-  const Eigen::Vector2d keel_mid = out.hull.head<2>() + coupling::rotation(out.hull(2)) * Eigen::Vector2d(hull.g1_aft_of_mid_length, -hull.g1_above_keel);
+  const Eigen::Vector2d keel_mid = out.hull.head<2>() + multibody::rotation(out.hull(2)) * Eigen::Vector2d(hull.g1_aft_of_mid_length, -hull.g1_above_keel);
   // The trimmed box's submerged area is L · (−y_keel,mid) / cos θ (the waterline's height above the
   // keel varies linearly along the hull; at mid-length it is the vertical depth over cos θ).
   EXPECT_NEAR(-keel_mid.y() / std::cos(out.hull(2)), displaced / (rho * hull.length * hull.width), 1e-9);
@@ -38,8 +38,8 @@ TEST(CraneStatics, ReferenceSceneEquilibriumMatchesStatics) {
 
   // Boom tip: linear cantilever under the wire force (vertical at rest) and self weight.
   const double angle = out.hull(2) + scene.boom.mount->angle;
-  const Eigen::Vector2d wire_force_local = coupling::rotation(angle).transpose() * Eigen::Vector2d(0.0, -out.wire_tension);
-  const Eigen::Vector2d weight_local = coupling::rotation(angle).transpose() * Eigen::Vector2d(0.0, -scene.boom.mesh.section.mass_per_length * g);
+  const Eigen::Vector2d wire_force_local = multibody::rotation(angle).transpose() * Eigen::Vector2d(0.0, -out.wire_tension);
+  const Eigen::Vector2d weight_local = multibody::rotation(angle).transpose() * Eigen::Vector2d(0.0, -scene.boom.mesh.section.mass_per_length * g);
   const double length = scene.boom.mesh.length;
   const double ei = scene.boom.mesh.section.bending_rigidity(), ea = scene.boom.mesh.section.axial_rigidity();
   const double transverse = wire_force_local.y() * std::pow(length, 3) / (3 * ei) + weight_local.y() * std::pow(length, 4) / (8 * ei);
@@ -59,8 +59,8 @@ TEST(CraneStatics, RigidAndModalBoomsReachTheSameFloatingPose) {
   scene::BoomChoice modal{scene::BoomKind::modal, 16, 0, true};  // static modes only: exact static tip
   auto nodal_eq = scene::build_crane(scene, nodal);
   auto modal_eq = scene::build_crane(scene, modal);
-  const auto a = coupling::solve_static_equilibrium(*nodal_eq, nodal_eq->initial_guess());
-  const auto b = coupling::solve_static_equilibrium(*modal_eq, modal_eq->initial_guess());
+  const auto a = multibody::solve_static_equilibrium(*nodal_eq, nodal_eq->initial_guess());
+  const auto b = multibody::solve_static_equilibrium(*modal_eq, modal_eq->initial_guess());
   EXPECT_NEAR(a.outputs.tip_deflection.y(), b.outputs.tip_deflection.y(), 1e-10 * std::abs(a.outputs.tip_deflection.y()));
   EXPECT_NEAR(a.outputs.cargo.y(), b.outputs.cargo.y(), 1e-9);
 }

@@ -1,4 +1,4 @@
-// The failure detectors (coupling/run_monitor.hpp, coupling/failure.hpp) against independent facts:
+// The failure detectors (multibody/run_monitor.hpp, solve/failure.hpp) against independent facts:
 //  * buckling margin: the root compression of a boom on a fixed hub carrying a hanging cargo is beam
 //    statics, (ρA g L + m g) sin φ (both loads vertical; their axial components at the root); the
 //    ratio to the clamped–free Euler load π²EI/(4L²) is reported from 0.5 on, and not below;
@@ -24,8 +24,8 @@ namespace failure_detectors_test {
 
 using namespace ffrf;
 
-coupling::MonitorLimits limits_of(const scene::Scene& scene) {
-  coupling::MonitorLimits limits;
+multibody::MonitorLimits limits_of(const scene::Scene& scene) {
+  multibody::MonitorLimits limits;
   const fem::BeamMesh& mesh = scene.boom.mesh;
   limits.boom_length = mesh.length;
   limits.buckling_load = std::numbers::pi * std::numbers::pi * mesh.section.bending_rigidity() / (4.0 * mesh.length * mesh.length);
@@ -33,8 +33,8 @@ coupling::MonitorLimits limits_of(const scene::Scene& scene) {
   return limits;
 }
 
-const coupling::Detection* find(const std::vector<coupling::Detection>& detections, coupling::FailureKind kind) {
-  for (const coupling::Detection& d : detections) {
+const solve::Detection* find(const std::vector<solve::Detection>& detections, solve::FailureKind kind) {
+  for (const solve::Detection& d : detections) {
     if (d.kind == kind) return &d;
   }
   return nullptr;
@@ -45,19 +45,19 @@ TEST(FailureDetectors, BucklingMarginFromBeamStatics) {
     const scene::Scene scene = test::hub_crane_scene({2.1e11, 1.0e-3, 1.0e-5, 10.0, 4, cargo_mass, 1.0e7});
     const double g = scene.environment.gravity, phi = std::numbers::pi / 4.0, L = scene.boom.mesh.length;
     const double compression = (scene.boom.mesh.section.mass_per_length * g * L + cargo_mass * g) * std::sin(phi);
-    const coupling::MonitorLimits limits = limits_of(scene);
+    const multibody::MonitorLimits limits = limits_of(scene);
     const double ratio = compression / limits.buckling_load;
 
     auto equations = scene::build_crane(scene, {scene::BoomKind::rigid, 1, 0, false});
-    const auto statics = coupling::solve_static_equilibrium(*equations, equations->initial_guess());
+    const auto statics = multibody::solve_static_equilibrium(*equations, equations->initial_guess());
     EXPECT_NEAR(statics.outputs.root_axial_force / -compression, 1.0, 1e-6) << "cargo " << cargo_mass << " kg";
 
-    coupling::IntegratorSettings settings;
+    multibody::RunSettings settings;
     settings.duration = 1.0;
     settings.output_interval = 0.01;
     settings.monitor = limits;
-    const coupling::RunResult run = coupling::integrate(*equations, statics.z, settings);
-    const coupling::Detection* buckling = find(run.detections, coupling::FailureKind::buckling);
+    const multibody::RunResult run = multibody::simulate(*equations, statics.z, settings);
+    const solve::Detection* buckling = find(run.detections, solve::FailureKind::buckling);
     if (ratio > 0.5) {
       ASSERT_NE(buckling, nullptr) << "ratio " << ratio;
       EXPECT_NEAR(buckling->value / ratio, 1.0, 1e-6);
@@ -79,18 +79,18 @@ TEST(FailureDetectors, IndefiniteMassMatrixStopsTheRunAtTheStart) {
   const double crane_inertia =
       scene.hull->pitch_inertia() + (scene.boom.mesh.total_mass() + scene.cargo->mass) * reach * reach;
   model.hull.added_mass(2) = -10.0 * crane_inertia;
-  auto equations = coupling::make_crane_equations(std::move(model));
-  coupling::IntegratorSettings settings;
+  auto equations = multibody::make_crane_equations(std::move(model));
+  multibody::RunSettings settings;
   settings.duration = 1.0;
   settings.output_interval = 0.05;
   try {
-    coupling::integrate(*equations, equations->initial_guess(), settings);
+    multibody::simulate(*equations, equations->initial_guess(), settings);
     FAIL() << "an indefinite mass matrix must stop the run";
-  } catch (const coupling::SolverFailure& failure) {
-    EXPECT_EQ(failure.kind(), coupling::FailureKind::mass_not_positive_definite) << failure.what();
+  } catch (const solve::SolverFailure& failure) {
+    EXPECT_EQ(failure.kind(), solve::FailureKind::mass_not_positive_definite) << failure.what();
     EXPECT_LE(failure.time(), settings.output_interval) << failure.what();
-    if (failure.partial()) {
-      for (const coupling::CraneOutputs& sample : failure.partial()->samples) {
+    if (multibody::partial_run(failure)) {
+      for (const multibody::CraneOutputs& sample : multibody::partial_run(failure)->samples) {
         EXPECT_TRUE(sample.hull.allFinite() && sample.cargo.allFinite() && std::isfinite(sample.wire_tension));
       }
     }
@@ -101,8 +101,8 @@ TEST(FailureDetectors, IndefiniteMassMatrixStopsTheRunAtTheStart) {
 TEST(FailureDetectors, UnstabilizedIndexOneDriftsAndBaumgarteDoesNot) {
   const scene::Scene scene = test::reference_scene();
   auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, 2, 0, false});
-  const auto statics = coupling::solve_static_equilibrium(*equations, equations->initial_guess());
-  coupling::IntegratorSettings settings;
+  const auto statics = multibody::solve_static_equilibrium(*equations, equations->initial_guess());
+  multibody::RunSettings settings;
   settings.duration = 60.0;
   settings.output_interval = 0.1;
   settings.monitor = limits_of(scene);
@@ -110,12 +110,12 @@ TEST(FailureDetectors, UnstabilizedIndexOneDriftsAndBaumgarteDoesNot) {
   // factor of 10 either side (1e-7 would leave index1 only 1.5 x above it).
   settings.monitor.constraint_drift_limit = 1.5e-8;
   double drift[2] = {0.0, 0.0};
-  const coupling::Integrator kinds[2] = {coupling::Integrator::index1, coupling::Integrator::baumgarte};
+  const solve::Integrator kinds[2] = {solve::Integrator::index1, solve::Integrator::baumgarte};
   for (int i = 0; i < 2; ++i) {
     settings.kind = kinds[i];
-    const coupling::RunResult run = coupling::integrate(*equations, statics.z, settings);
-    drift[i] = coupling::max_constraint_drift(run);
-    const coupling::Detection* found = find(run.detections, coupling::FailureKind::constraint_drift);
+    const multibody::RunResult run = multibody::simulate(*equations, statics.z, settings);
+    drift[i] = multibody::max_constraint_drift(run);
+    const solve::Detection* found = find(run.detections, solve::FailureKind::constraint_drift);
     if (i == 0) {
       ASSERT_NE(found, nullptr) << "index1 drift " << drift[i];
       // The detection reports the largest residual and the first output time beyond the bound.
@@ -147,19 +147,19 @@ scene::Scene spinning_beam() {
 TEST(FailureDetectors, DivergenceWatchStopsWithAFinitePartialResult) {
   const scene::Scene scene = spinning_beam();
   auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, 10, 0, false});
-  coupling::IntegratorSettings settings;
+  multibody::RunSettings settings;
   settings.duration = 10.0;
   settings.output_interval = 0.01;
   settings.monitor = limits_of(scene);
   try {
-    coupling::integrate(*equations, equations->initial_guess(), settings);
+    multibody::simulate(*equations, equations->initial_guess(), settings);
     FAIL() << "the unstiffened beam above its first bending frequency must diverge";
-  } catch (const coupling::SolverFailure& failure) {
-    ASSERT_EQ(failure.kind(), coupling::FailureKind::divergence) << failure.what();
-    ASSERT_TRUE(failure.partial());
-    const coupling::RunResult& partial = *failure.partial();
+  } catch (const solve::SolverFailure& failure) {
+    ASSERT_EQ(failure.kind(), solve::FailureKind::divergence) << failure.what();
+    ASSERT_TRUE(multibody::partial_run(failure));
+    const multibody::RunResult& partial = *multibody::partial_run(failure);
     ASSERT_FALSE(partial.samples.empty());
-    for (const coupling::CraneOutputs& sample : partial.samples) {
+    for (const multibody::CraneOutputs& sample : partial.samples) {
       ASSERT_TRUE(sample.tip_deflection.allFinite() && sample.hull.allFinite());
     }
     EXPECT_NEAR(partial.time.back(), failure.time(), 1e-12);
@@ -175,9 +175,9 @@ TEST(FailureDetectors, DivergenceWatchStopsWithAFinitePartialResult) {
 
 TEST(FailureDetectors, EveryFailureKindHasADistinctName) {
   std::set<std::string> names;
-  const int count = static_cast<int>(coupling::FailureKind::setup) + 1;
+  const int count = static_cast<int>(solve::FailureKind::setup) + 1;
   for (int k = 0; k < count; ++k) {
-    const std::string name(coupling::to_string(static_cast<coupling::FailureKind>(k)));
+    const std::string name(solve::to_string(static_cast<solve::FailureKind>(k)));
     EXPECT_FALSE(name.empty());
     EXPECT_NE(name, "?");
     names.insert(name);

@@ -1,4 +1,4 @@
-// Geometric stiffening of the floating-frame boom (coupling/floating_frame_body.hpp: −(K + K_σ + θ̇²K_c)η)
+// Geometric stiffening of the floating-frame boom (multibody/floating_frame_body.hpp: −(K + K_σ + θ̇²K_c)η)
 // end to end, against closed-form beam theory:
 //  * static prestress: a light boom on a held hub at φ = 45° carrying a heavy cargo at its tip. The
 //    wire hangs vertically from the tip at equilibrium, so in the (fixed) boom frame the tip carries
@@ -39,7 +39,7 @@ scene::Scene prestressed_boom(double fraction) {
 
 double static_tip_deflection(const scene::Scene& scene, scene::BoomChoice choice) {
   auto equations = scene::build_crane(scene, choice);
-  return coupling::solve_static_equilibrium(*equations, equations->initial_guess()).outputs.tip_deflection.y();
+  return multibody::solve_static_equilibrium(*equations, equations->initial_guess()).outputs.tip_deflection.y();
 }
 
 TEST(GeometricStiffening, StaticPrestressGivesTheBeamColumnDeflection) {
@@ -76,8 +76,8 @@ scene::Scene constant_spin(double spin_rate, scene::Stiffening stiffening) {
   return scene;
 }
 
-coupling::IntegratorSettings spin_settings(const scene::Scene& scene) {
-  coupling::IntegratorSettings settings;
+multibody::RunSettings spin_settings(const scene::Scene& scene) {
+  multibody::RunSettings settings;
   settings.duration = 10.0;
   settings.output_interval = 0.02;
   settings.max_order = 2;  // undamped boom: A-stable BDF orders only (docs/stability.md)
@@ -99,21 +99,21 @@ TEST(GeometricStiffening, CentrifugalStiffeningPreventsTheSpinDivergence) {
     Eigen::VectorXd start = equations->initial_guess();
     start(start.size() - 2) = 1e-6;
     try {
-      coupling::integrate(*equations, start, spin_settings(soft));
+      multibody::simulate(*equations, start, spin_settings(soft));
       FAIL() << "without stiffening the beam spun above ω1 must diverge";
-    } catch (const coupling::SolverFailure& failure) {
-      ASSERT_EQ(failure.kind(), coupling::FailureKind::divergence) << failure.what();
+    } catch (const solve::SolverFailure& failure) {
+      ASSERT_EQ(failure.kind(), solve::FailureKind::divergence) << failure.what();
       measured = failure.value();
       EXPECT_NEAR(measured / sigma, 1.0, 0.1) << failure.what();
     }
   }
   const scene::Scene stiff = constant_spin(spin, scene::Stiffening::centrifugal);
   auto equations = scene::build_crane(stiff, {scene::BoomKind::nodal, 4, 0, false});
-  const coupling::IntegratorSettings settings = spin_settings(stiff);
-  const coupling::RunResult run = coupling::integrate(*equations, equations->initial_guess(), settings);
+  const multibody::RunSettings settings = spin_settings(stiff);
+  const multibody::RunResult run = multibody::simulate(*equations, equations->initial_guess(), settings);
   ASSERT_NEAR(run.time.back(), settings.duration, 1e-9);
   double largest = 0.0;
-  for (const coupling::CraneOutputs& sample : run.samples) largest = std::max(largest, std::abs(sample.tip_deflection.y()));
+  for (const multibody::CraneOutputs& sample : run.samples) largest = std::max(largest, std::abs(sample.tip_deflection.y()));
   EXPECT_LT(largest, 0.01 * settings.monitor.deflection_limit * stiff.boom.mesh.length);
   std::printf("Ωs %.1f rad/s, ω1 %.4f rad/s: σ theory %.4f 1/s, measured %.4f 1/s (%.2f %%); stiffened max |v_tip| %.3g m\n",
               spin, omega1, sigma, measured, 100.0 * (measured / sigma - 1.0), largest);

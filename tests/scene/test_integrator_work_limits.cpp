@@ -9,54 +9,54 @@
 
 #include <cstdio>
 
-#include "coupling/integrator_table.hpp"
+#include "solve/integrator_table.hpp"
 #include "crane_test_support.hpp"
 
 namespace integrator_work_limits_test {
 
 using namespace ffrf;
-using coupling::FailureKind;
-using coupling::Integrator;
+using solve::FailureKind;
+using solve::Integrator;
 
 struct Crane {
   scene::Scene scene;
-  std::unique_ptr<coupling::CraneEquations> equations;
+  std::unique_ptr<multibody::CraneEquations> equations;
   Eigen::VectorXd z0;
   Crane(scene::Scene s, scene::BoomChoice choice) : scene(std::move(s)), equations(scene::build_crane(scene, choice)) {
-    z0 = coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
+    z0 = multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   }
 };
 
-coupling::IntegratorSettings settings(Integrator kind, double duration) {
-  coupling::IntegratorSettings s;
+multibody::RunSettings settings(Integrator kind, double duration) {
+  multibody::RunSettings s;
   s.kind = kind;
   s.relative_tolerance = 1e-6;
   s.absolute_tolerance = 1e-6;
   s.duration = duration;
   s.output_interval = 0.05;
-  if (kind.solver == coupling::Solver::generalized_alpha) s.fixed_step = 0.01;
+  if (kind.solver == solve::Solver::generalized_alpha) s.fixed_step = 0.01;
   return s;
 }
 
 // The failure of a run that must fail.
-coupling::SolverFailure failure_of(coupling::CraneEquations& equations, const Eigen::VectorXd& z0,
-                                   const coupling::IntegratorSettings& s) {
+solve::SolverFailure failure_of(multibody::CraneEquations& equations, const Eigen::VectorXd& z0,
+                                   const multibody::RunSettings& s) {
   try {
-    coupling::integrate(equations, z0, s);
-  } catch (const coupling::SolverFailure& failure) {
+    multibody::simulate(equations, z0, s);
+  } catch (const solve::SolverFailure& failure) {
     std::printf("%s\n", failure.what());
     return failure;
   }
-  throw std::runtime_error(std::string(coupling::to_string(s.kind)) + ": the run did not fail");
+  throw std::runtime_error(std::string(solve::to_string(s.kind)) + ": the run did not fail");
 }
 
 TEST(IntegratorWorkLimits, ExplicitRungeKuttaOnAStiffBoomStopsWithTooMuchWork) {
   Crane crane(test::reference_scene(), {scene::BoomKind::nodal, 8, 0, false});
   auto s = settings(Integrator::arkode, 120.0);
-  const double stable_step = coupling::explicit_stable_step(*crane.equations, crane.z0);
+  const double stable_step = solve::explicit_stable_step(*crane.equations, crane.z0);
   std::printf("stable ERK step %.3e s: 120 s need at least %.3g steps\n", stable_step, s.duration / stable_step);
   ASSERT_GT(s.output_interval / stable_step, 1000.0) << "the boom is stiff for ERK: > 1000 steps per output interval";
-  const coupling::SolverFailure failure = failure_of(*crane.equations, crane.z0, s);
+  const solve::SolverFailure failure = failure_of(*crane.equations, crane.z0, s);
   EXPECT_EQ(failure.kind(), FailureKind::too_much_work);
   EXPECT_EQ(failure.time(), 0.0) << "stopped before its first step";
   EXPECT_NE(failure.cause().find("the explicit step limit ~"), std::string::npos) << failure.cause();
@@ -69,7 +69,7 @@ TEST(IntegratorWorkLimits, ExplicitRungeKuttaOnAStiffBoomStopsWithTooMuchWork) {
 TEST(IntegratorWorkLimits, ExplicitRungeKuttaStopsFromItsFirstStepsStatistics) {
   Crane crane(test::reference_scene(), {scene::BoomKind::nodal, 110, 0, false});  // 333 coordinates
   auto s = settings(Integrator::arkode, 120.0);
-  const coupling::SolverFailure failure = failure_of(*crane.equations, crane.z0, s);
+  const solve::SolverFailure failure = failure_of(*crane.equations, crane.z0, s);
   EXPECT_EQ(failure.kind(), FailureKind::too_much_work);
   EXPECT_NE(failure.cause().find("the mean of the first 1000 steps"), std::string::npos) << failure.cause();
   EXPECT_LT(failure.time(), s.output_interval) << "stopped within the first output interval";
@@ -77,10 +77,10 @@ TEST(IntegratorWorkLimits, ExplicitRungeKuttaStopsFromItsFirstStepsStatistics) {
 
 TEST(IntegratorWorkLimits, EveryIntegratorStopsAtItsStepLimit) {
   Crane crane(test::reference_scene(), {scene::BoomKind::nodal, 2, 0, false});
-  for (const coupling::IntegratorEntry& entry : coupling::integrator_table()) {
+  for (const solve::IntegratorEntry& entry : solve::integrator_table()) {
     auto s = settings(entry.choice, 30.0);
     s.work.max_steps = 40;  // far fewer than 30 s of waves need (and than 3000 fixed steps)
-    const coupling::SolverFailure failure = failure_of(*crane.equations, crane.z0, s);
+    const solve::SolverFailure failure = failure_of(*crane.equations, crane.z0, s);
     EXPECT_EQ(failure.kind(), FailureKind::too_much_work) << entry.name;
     EXPECT_NE(failure.cause().find("step limit of 40"), std::string::npos) << entry.name << ": " << failure.cause();
     EXPECT_FALSE(failure.remedy().empty());
@@ -92,10 +92,10 @@ TEST(IntegratorWorkLimits, EveryIntegratorStopsAtItsStepLimit) {
 
 TEST(IntegratorWorkLimits, EveryIntegratorStopsAtItsWallClockLimit) {
   Crane crane(test::reference_scene(), {scene::BoomKind::nodal, 2, 0, false});
-  for (const coupling::IntegratorEntry& entry : coupling::integrator_table()) {
+  for (const solve::IntegratorEntry& entry : solve::integrator_table()) {
     auto s = settings(entry.choice, 30.0);
     s.work.max_wall_seconds = 1e-4;  // a 30 s run takes far longer
-    const coupling::SolverFailure failure = failure_of(*crane.equations, crane.z0, s);
+    const solve::SolverFailure failure = failure_of(*crane.equations, crane.z0, s);
     EXPECT_EQ(failure.kind(), FailureKind::too_much_work) << entry.name;
     EXPECT_NE(failure.cause().find("wall-clock limit"), std::string::npos) << entry.name << ": " << failure.cause();
     EXPECT_LT(failure.time(), 30.0) << entry.name;
@@ -113,14 +113,14 @@ TEST(IntegratorWorkLimits, AStepSizeFloorAboveWhatAWireSnapNeedsIsAStepSizeColla
     auto s = settings(kind, 2.0);
     s.output_interval = 0.002;
     s.work.min_step = 0.05;
-    const coupling::SolverFailure failure = failure_of(*crane.equations, z0, s);
-    EXPECT_EQ(failure.kind(), FailureKind::step_size_collapse) << coupling::to_string(kind);
+    const solve::SolverFailure failure = failure_of(*crane.equations, z0, s);
+    EXPECT_EQ(failure.kind(), FailureKind::step_size_collapse) << solve::to_string(kind);
     EXPECT_NE(failure.cause().find("step-size floor"), std::string::npos) << failure.cause();
     EXPECT_LT(failure.time(), 2.0);
   }
   auto s = settings(Integrator::cvode, 2.0);  // the same run without the floor finishes
   s.output_interval = 0.002;
-  EXPECT_NO_THROW(coupling::integrate(*crane.equations, z0, s));
+  EXPECT_NO_THROW(multibody::simulate(*crane.equations, z0, s));
 }
 
 }  // namespace integrator_work_limits_test

@@ -15,10 +15,10 @@ namespace integrators_test {
 
 using namespace ffrf;
 using test::column;
-using O = coupling::CraneOutputs;
+using O = multibody::CraneOutputs;
 
-coupling::IntegratorSettings settings(coupling::Integrator kind, double duration, double tolerance) {
-  coupling::IntegratorSettings s;
+multibody::RunSettings settings(solve::Integrator kind, double duration, double tolerance) {
+  multibody::RunSettings s;
   s.kind = kind;
   s.relative_tolerance = s.absolute_tolerance = tolerance;
   s.duration = duration;
@@ -27,7 +27,7 @@ coupling::IntegratorSettings settings(coupling::Integrator kind, double duration
 }
 
 // max |a − b| over the samples with t ∈ [from, to].
-double max_difference(const coupling::RunResult& a, const coupling::RunResult& b, double from, double to) {
+double max_difference(const multibody::RunResult& a, const multibody::RunResult& b, double from, double to) {
   double error = 0.0;
   for (std::size_t i = 0; i < a.samples.size(); ++i) {
     if (a.time[i] >= from - 1e-9 && a.time[i] <= to + 1e-9) error = std::max(error, std::abs(a.samples[i].cargo.y() - b.samples[i].cargo.y()));
@@ -38,20 +38,20 @@ double max_difference(const coupling::RunResult& a, const coupling::RunResult& b
 // The reference scene, nodal N = 2, at static equilibrium.
 struct Reference {
   scene::Scene scene = test::reference_scene();
-  std::unique_ptr<coupling::CraneEquations> equations = scene::build_crane(scene, {scene::BoomKind::nodal, 2, 0, false});
-  Eigen::VectorXd z0 = coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
+  std::unique_ptr<multibody::CraneEquations> equations = scene::build_crane(scene, {scene::BoomKind::nodal, 2, 0, false});
+  Eigen::VectorXd z0 = multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
 };
 
 TEST(Integrators, GeneralizedAlphaConvergesAtSecondOrder) {
   Reference ref;
-  const auto cvode = coupling::integrate(*ref.equations, ref.z0, settings(coupling::Integrator::cvode, 30.0, 1e-10));
+  const auto cvode = multibody::simulate(*ref.equations, ref.z0, settings(solve::Integrator::cvode, 30.0, 1e-10));
   double errors[3];
   const double steps[3] = {0.025, 0.0125, 0.00625};
   double residual = 0.0;
   for (int i = 0; i < 3; ++i) {
-    auto s = settings(coupling::Integrator::generalized_alpha, 30.0, 1e-9);
+    auto s = settings(solve::Integrator::generalized_alpha, 30.0, 1e-9);
     s.fixed_step = steps[i];
-    const auto run = coupling::integrate(*ref.equations, ref.z0, s);
+    const auto run = multibody::simulate(*ref.equations, ref.z0, s);
     EXPECT_DOUBLE_EQ(run.stats.step, steps[i]);
     errors[i] = max_difference(run, cvode, 20.0, 30.0);
     for (const auto& o : run.samples) residual = std::max(residual, o.constraint_residual);
@@ -68,11 +68,11 @@ TEST(Integrators, GeneralizedAlphaConvergesAtSecondOrder) {
 
 TEST(Integrators, GeneralizedAlphaKeepsTheConstraintAndTheReaction) {
   Reference ref;
-  auto s = settings(coupling::Integrator::generalized_alpha, 30.0, 1e-6);
+  auto s = settings(solve::Integrator::generalized_alpha, 30.0, 1e-6);
   s.absolute_tolerance = 1e-8;  // the default tolerances
   s.fixed_step = 0.01;
-  const auto run = coupling::integrate(*ref.equations, ref.z0, s);
-  const auto cvode = coupling::integrate(*ref.equations, ref.z0, settings(coupling::Integrator::cvode, 30.0, 1e-10));
+  const auto run = multibody::simulate(*ref.equations, ref.z0, s);
+  const auto cvode = multibody::simulate(*ref.equations, ref.z0, settings(solve::Integrator::cvode, 30.0, 1e-10));
   double residual = 0.0, reaction = 0.0, reaction_scale = 0.0;
   for (std::size_t i = 0; i < run.samples.size(); ++i) {
     residual = std::max(residual, run.samples[i].constraint_residual);
@@ -94,10 +94,10 @@ TEST(Integrators, GeneralizedAlphaWithoutDissipationKeepsTheEnergy) {
   double drift[2], first_half[2], second_half[2];
   const double steps[2] = {0.01, 0.005};
   for (int i = 0; i < 2; ++i) {
-    auto s = settings(coupling::Integrator::generalized_alpha, 40.0, 1e-9);
+    auto s = settings(solve::Integrator::generalized_alpha, 40.0, 1e-9);
     s.fixed_step = steps[i];
     s.spectral_radius = 1.0;
-    const auto run = coupling::integrate(*equations, z, s);
+    const auto run = multibody::simulate(*equations, z, s);
     EXPECT_TRUE(run.wire_events.empty());
     const auto energy = column(run, [](const O& o) { return o.kinetic_energy + o.gravity_energy + o.strain_energy + o.wire_energy + o.spring_energy; });
     const auto kinetic = column(run, [](const O& o) { return o.kinetic_energy; });
@@ -119,9 +119,9 @@ TEST(Integrators, GeneralizedAlphaWithoutDissipationKeepsTheEnergy) {
 TEST(Integrators, ArkodeAdaptiveAgreesWithCvodeOnTheRigidBoom) {
   const scene::Scene scene = test::reference_scene();
   auto equations = scene::build_crane(scene, {scene::BoomKind::rigid, 1, 0, false});
-  const Eigen::VectorXd z0 = coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
-  const auto cvode = coupling::integrate(*equations, z0, settings(coupling::Integrator::cvode, 30.0, 1e-10));
-  const auto arkode = coupling::integrate(*equations, z0, settings(coupling::Integrator::arkode, 30.0, 1e-8));
+  const Eigen::VectorXd z0 = multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
+  const auto cvode = multibody::simulate(*equations, z0, settings(solve::Integrator::cvode, 30.0, 1e-10));
+  const auto arkode = multibody::simulate(*equations, z0, settings(solve::Integrator::arkode, 30.0, 1e-8));
   const double error = max_difference(arkode, cvode, 0.0, 30.0);
   std::printf("ARKODE ERK adaptive (rtol 1e-8) vs CVODE: max cargo heave difference %.3e m; steps %ld, RHS %ld, "
               "error-test failures %ld, %.3f s\n", error, arkode.stats.steps, arkode.stats.function_evaluations,
@@ -134,35 +134,35 @@ TEST(Integrators, ArkodeAdaptiveAgreesWithCvodeOnTheRigidBoom) {
 TEST(Integrators, ArkodeBeyondTheStabilityLimitIsReportedUnstable) {
   const scene::Scene scene = test::reference_scene();
   auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, 8, 0, false});
-  const Eigen::VectorXd z0 = coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
-  const double limit = coupling::explicit_stable_step(*equations, z0);
+  const Eigen::VectorXd z0 = multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
+  const double limit = solve::explicit_stable_step(*equations, z0);
   std::printf("nodal N = 8: linearized ERK stability limit %.4e s (imaginary-axis boundary %.4f)\n", limit,
-              coupling::explicit_imaginary_axis_boundary());
+              solve::explicit_imaginary_axis_boundary());
   {  // the same boom without structural damping: only the imaginary-axis boundary matters
     scene::Scene undamped_scene = scene;
     undamped_scene.boom.damping_ratio = 0.0;
     auto undamped = scene::build_crane(undamped_scene, {scene::BoomKind::nodal, 8, 0, false});
     const double undamped_limit =
-        coupling::explicit_stable_step(*undamped, coupling::solve_static_equilibrium(*undamped, undamped->initial_guess()).z);
+        solve::explicit_stable_step(*undamped, multibody::solve_static_equilibrium(*undamped, undamped->initial_guess()).z);
     std::printf("without structural damping: limit %.4e s (ω_max ≈ %.4g rad/s)\n", undamped_limit,
-                coupling::explicit_imaginary_axis_boundary() / undamped_limit);
+                solve::explicit_imaginary_axis_boundary() / undamped_limit);
     EXPECT_GT(undamped_limit, 10.0 * limit) << "stiffness-proportional damping puts the top modes on the real axis at ≈ −βω²";
   }
-  auto s = settings(coupling::Integrator::arkode, 2.0, 1e-8);
+  auto s = settings(solve::Integrator::arkode, 2.0, 1e-8);
   s.fixed_step = 100.0 * limit;
   try {
-    coupling::integrate(*equations, z0, s);
+    multibody::simulate(*equations, z0, s);
     ADD_FAILURE() << "h = 100 × the limit must fail";
-  } catch (const coupling::SolverFailure& failure) {
+  } catch (const solve::SolverFailure& failure) {
     std::printf("%s\n", failure.what());
     EXPECT_NE(failure.cause().find("unstable"), std::string::npos) << failure.what();
     EXPECT_EQ(failure.solver(), "ARKODE ERK");
   }
   s.fixed_step = 1.1 * limit;
   s.duration = 0.1;
-  EXPECT_THROW(coupling::integrate(*equations, z0, s), coupling::SolverFailure) << "10 % beyond the limit";
+  EXPECT_THROW(multibody::simulate(*equations, z0, s), solve::SolverFailure) << "10 % beyond the limit";
   s.fixed_step = 0.9 * limit;
-  const auto run = coupling::integrate(*equations, z0, s);
+  const auto run = multibody::simulate(*equations, z0, s);
   for (const auto& o : run.samples) ASSERT_TRUE(std::isfinite(o.cargo.y()) && std::isfinite(o.kinetic_energy));
   std::printf("h = 0.9 × limit: %ld steps, max cargo heave change %.3e m\n", run.stats.steps,
               std::abs(run.samples.back().cargo.y() - run.samples.front().cargo.y()));

@@ -14,10 +14,10 @@
 
 #include "scene/crane_builder.hpp"
 #include "scene/scene_loader.hpp"
-#include "coupling/bordered_band_matrix.hpp"
-#include "coupling/crane_equations.hpp"
-#include "coupling/ida_newton.hpp"
-#include "coupling/static_equilibrium.hpp"
+#include "solve/bordered_band_matrix.hpp"
+#include "multibody/crane_equations.hpp"
+#include "solve/ida_newton.hpp"
+#include "multibody/crane_statics.hpp"
 
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -25,8 +25,8 @@
 namespace newton_jacobians_test {
 
 using namespace ffrf;
-using coupling::CraneEquations;
-using coupling::SecondOrderJacobian;
+using multibody::CraneEquations;
+using solve::SecondOrderJacobian;
 
 struct Case {
   std::string scene;
@@ -44,7 +44,7 @@ std::unique_ptr<CraneEquations> build(const Case& c) {
 // its terms count), velocities of half that size per second.
 void moving_state(CraneEquations& eq, Eigen::VectorXd& z, Eigen::VectorXd& z_dot) {
   const Eigen::VectorXd scale = eq.coordinate_scale();
-  z = eq.minimal_size() > 0 ? coupling::solve_static_equilibrium(eq, eq.initial_guess()).z : Eigen::VectorXd(0);
+  z = eq.minimal_size() > 0 ? multibody::solve_static_equilibrium(eq, eq.initial_guess()).z : Eigen::VectorXd(0);
   z_dot.resize(z.size());
   for (int i = 0; i < z.size(); ++i) {
     z(i) += 0.02 * scale(i) * std::sin(1.7 * i + 0.4);
@@ -53,7 +53,7 @@ void moving_state(CraneEquations& eq, Eigen::VectorXd& z, Eigen::VectorXd& z_dot
 }
 
 // Tolerance of the Newton matrices: the dense columns are forward differences (increments 1e-6 of each
-// coordinate's size, coupling/crane_system_jacobian.ipp), exact to ~1e-6 of the matrix's diagonal
+// coordinate's size, multibody/crane_system_jacobian.ipp), exact to ~1e-6 of the matrix's diagonal
 // scaling; 1e-5 leaves room and still catches any missing or wrong term (those are O(1)).
 constexpr double kNewtonMatrixTolerance = 1e-5;
 
@@ -170,7 +170,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"paper_floating_crane.toml", {.kind = scene::BoomKind::modal, .elements = 16, .modes = 2, .static_modes = true}, 31.0},
                       Case{"spin_up_beam.toml", {.kind = scene::BoomKind::nodal, .elements = 10, .stiffening = scene::Stiffening::centrifugal}, 9.0}));
 
-// IDA's residual of the stabilized index-2 DAE (as coupling/integrate_lagrange.cpp writes it).
+// IDA's residual of the stabilized index-2 DAE (as solve/integrate_lagrange.cpp writes it).
 Eigen::VectorXd dae_residual(CraneEquations& eq, double t, const Eigen::VectorXd& y, const Eigen::VectorXd& y_dot) {
   const int n = eq.full_size();
   const auto q = y.head(n), v = y.segment(n, n);
@@ -230,7 +230,7 @@ Eigen::MatrixXd assembled_index_two_matrix(CraneEquations& eq, double t, const E
 // IDA's Newton matrix and step: the blocks assembled densely against central differences of the
 // residual (entry by entry, relative to the geometric mean of its row's and column's largest entries:
 // the unknowns' scales differ by 10 orders of magnitude), and the structured solve (the reduction of
-// coupling/ida_newton.hpp, bordered band LU) against Eigen's dense LU of the same matrix, at a state
+// solve/ida_newton.hpp, bordered band LU) against Eigen's dense LU of the same matrix, at a state
 // with nonzero multipliers so that every curvature term of the constraint counts.
 TEST_P(NewtonJacobians, IndexTwoNewtonStepMatchesTheDenseSystem) {
   const Case c = GetParam();
@@ -281,13 +281,13 @@ TEST_P(NewtonJacobians, IndexTwoNewtonStepMatchesTheDenseSystem) {
   ASSERT_EQ(SUNContext_Create(nullptr, &context), 0);
   {
     const Eigen::VectorXd scale = y.head(n).cwiseAbs().cwiseMax(Eigen::VectorXd::Constant(n, 1e-2));
-    coupling::sundials::IndexTwoNewton newton(*eq, context, scale);
+    solve::sundials::IndexTwoNewton newton(*eq, context, scale);
     N_Vector state = N_VNew_Serial(total, context), rate = N_VNew_Serial(total, context), b = N_VNew_Serial(total, context),
              x = N_VNew_Serial(total, context);
     Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(state), total) = y;
     Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(rate), total) = y_dot;
     Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(b), total) = rhs;
-    ASSERT_EQ(coupling::sundials::IndexTwoNewton::jacobian(c.t, cj, state, rate, nullptr, newton.matrix(), nullptr, nullptr,
+    ASSERT_EQ(solve::sundials::IndexTwoNewton::jacobian(c.t, cj, state, rate, nullptr, newton.matrix(), nullptr, nullptr,
                                                           nullptr, nullptr), 0);
     ASSERT_EQ(SUNLinSolSetup(newton.solver(), newton.matrix()), 0);
     ASSERT_EQ(SUNLinSolSolve(newton.solver(), newton.matrix(), x, b, 0.0), 0);
@@ -317,9 +317,9 @@ TEST(NewtonJacobians, NodalBoomsAreBandedModalOnesDense) {
 }
 
 TEST(BorderedBandLU, SolvesLikeDenseLU) {
-  for (const coupling::BandStructure s : {coupling::BandStructure{6, 40, 5, 5}, coupling::BandStructure{0, 30, 2, 3},
-                                          coupling::BandStructure{9, 0, 0, 0}, coupling::BandStructure{15, 25, 4, 4}}) {
-    coupling::BorderedBandMatrix m(s);
+  for (const solve::BandStructure s : {solve::BandStructure{6, 40, 5, 5}, solve::BandStructure{0, 30, 2, 3},
+                                          solve::BandStructure{9, 0, 0, 0}, solve::BandStructure{15, 25, 4, 4}}) {
+    solve::BorderedBandMatrix m(s);
     for (int i = 0; i < m.size(); ++i) {
       for (int j = 0; j < m.size(); ++j) {
         if (m.in_structure(i, j)) m.at(i, j) = std::sin(1.3 * i + 0.7 * j * j) + (i == j ? 6.0 : 0.0);
@@ -329,7 +329,7 @@ TEST(BorderedBandLU, SolvesLikeDenseLU) {
     for (int i = 0; i < b.size(); ++i) b(i) = std::cos(0.37 * i);
     const Eigen::MatrixXd dense = m.dense();
     x = b;
-    coupling::BorderedBandLU lu(s);
+    solve::BorderedBandLU lu(s);
     ASSERT_TRUE(lu.factorize(m));
     lu.solve(x);
     const Eigen::VectorXd reference = dense.partialPivLu().solve(b);
@@ -337,8 +337,8 @@ TEST(BorderedBandLU, SolvesLikeDenseLU) {
     m.multiply(reference, product);
     EXPECT_LT((product - dense * reference).cwiseAbs().maxCoeff(), 1e-12 * b.cwiseAbs().maxCoeff());
   }
-  coupling::BorderedBandMatrix singular(coupling::BandStructure{2, 5, 1, 1});
-  coupling::BorderedBandLU lu(singular.structure());
+  solve::BorderedBandMatrix singular(solve::BandStructure{2, 5, 1, 1});
+  solve::BorderedBandLU lu(singular.structure());
   EXPECT_FALSE(lu.factorize(singular));
 }
 

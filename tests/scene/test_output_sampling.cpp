@@ -12,14 +12,14 @@
 
 #include "scene/crane_builder.hpp"
 #include "scene/scene_loader.hpp"
-#include "coupling/simulation.hpp"
-#include "coupling/static_equilibrium.hpp"
+#include "multibody/crane_run.hpp"
+#include "multibody/crane_statics.hpp"
 
 namespace output_sampling_test {
 
 using namespace ffrf;
 
-void expect_same_outputs(const coupling::CraneOutputs& a, const coupling::CraneOutputs& b, const std::string& label) {
+void expect_same_outputs(const multibody::CraneOutputs& a, const multibody::CraneOutputs& b, const std::string& label) {
   const auto near = [&](double x, double y, double scale, const char* what) {
     EXPECT_NEAR(x, y, 1e-10 * std::max(scale, 1.0)) << label << ": " << what;
   };
@@ -48,7 +48,7 @@ TEST(OutputSampling, OutputsFromGivenAccelerationsEqualThoseThatSolveForThem) {
   for (const auto& [scene, choice] : models) {
     auto eq = scene::build_crane(*scene, choice);
     const int n = eq->minimal_size();
-    Eigen::VectorXd z = coupling::solve_static_equilibrium(*eq, eq->initial_guess()).z, z_dot(n), z_ddot(n);
+    Eigen::VectorXd z = multibody::solve_static_equilibrium(*eq, eq->initial_guess()).z, z_dot(n), z_ddot(n);
     const Eigen::VectorXd scale = eq->coordinate_scale();
     for (int i = 0; i < n; ++i) {
       z(i) += 0.02 * scale(i) * std::sin(1.3 * i);
@@ -65,14 +65,14 @@ TEST(OutputSampling, OutputsFromGivenAccelerationsEqualThoseThatSolveForThem) {
 TEST(OutputSampling, InterpolatedAccelerationsKeepTheJointReactionAtTheIntegrationError) {
   const auto scene = scene::load_scene(FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml");
   auto eq = scene::build_crane(scene, {.kind = scene::BoomKind::nodal, .elements = 4});
-  const Eigen::VectorXd z0 = coupling::solve_static_equilibrium(*eq, eq->initial_guess()).z;
-  coupling::IntegratorSettings settings;
+  const Eigen::VectorXd z0 = multibody::solve_static_equilibrium(*eq, eq->initial_guess()).z;
+  multibody::RunSettings settings;
   settings.duration = 40.0;
   settings.output_interval = 0.05;
   settings.relative_tolerance = settings.absolute_tolerance = 1e-10;
-  const auto reference = coupling::integrate(*eq, z0, settings);
+  const auto reference = multibody::simulate(*eq, z0, settings);
   settings.relative_tolerance = settings.absolute_tolerance = 1e-6;
-  const auto run = coupling::integrate(*eq, z0, settings);
+  const auto run = multibody::simulate(*eq, z0, settings);
   ASSERT_EQ(run.samples.size(), reference.samples.size());
   double reaction_error = 0.0, reaction_range = 0.0, heave_error = 0.0, heave_range = 0.0;
   for (std::size_t k = 0; k < run.samples.size(); ++k) {

@@ -10,9 +10,9 @@
 #include <iterator>
 #include <numbers>
 
-#include "coupling/failure.hpp"
+#include "solve/failure.hpp"
 #include "sea/hull_pressure.hpp"
-#include "coupling/static_equilibrium.hpp"
+#include "multibody/crane_statics.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/scene_loader.hpp"
@@ -64,7 +64,7 @@ TEST(SceneChecks, RestingHydrostaticsAgreeWithTheStaticEquilibrium) {
   const RestingHydrostatics rest = resting_hydrostatics(scene);
   // The checks take the boom as built (rigid): compare with the rigid boom's equilibrium.
   auto crane = build_crane(scene, BoomChoice{BoomKind::rigid, 1});
-  const auto statics = coupling::solve_static_equilibrium(*crane, crane->initial_guess());
+  const auto statics = multibody::solve_static_equilibrium(*crane, crane->initial_guess());
   const Hull& hull = *scene.hull;
   // The box's draft at mid-length is the mean draft for any small trim: exact.
   const double pitch = statics.outputs.hull.z();  // bow up > 0
@@ -145,7 +145,7 @@ TEST(SceneChecks, NoMooringMeansNoSurgeEquilibrium) {
   Scene scene = load_scene(kCrane);
   scene.mooring.surge_stiffness = 0.0;
   auto crane = build_crane(scene, BoomChoice{BoomKind::nodal, 2});
-  EXPECT_THROW((void)coupling::solve_static_equilibrium(*crane, crane->initial_guess()), coupling::SolverFailure);
+  EXPECT_THROW((void)multibody::solve_static_equilibrium(*crane, crane->initial_guess()), solve::SolverFailure);
 }
 
 TEST(SceneChecks, DeckUnderWaterAtRestIsNamedBeforeKinsolFails) {
@@ -155,7 +155,7 @@ TEST(SceneChecks, DeckUnderWaterAtRestIsNamedBeforeKinsolFails) {
   Scene scene = load_scene(kCrane);
   scene.cargo->mass = 14.0e6;
   auto crane = build_crane(scene, BoomChoice{BoomKind::nodal, 2});
-  EXPECT_THROW((void)coupling::solve_static_equilibrium(*crane, crane->initial_guess()), coupling::SolverFailure);
+  EXPECT_THROW((void)multibody::solve_static_equilibrium(*crane, crane->initial_guess()), solve::SolverFailure);
 }
 
 TEST(SceneChecks, CargoHangingInTheWater) {

@@ -1,5 +1,5 @@
 // Snap loads of a dropped cargo (cases/dropped_load.toml) against the hand derivation, and the
-// failure detectors that report them (coupling/run_monitor.hpp: slack intervals, snap loads).
+// failure detectors that report them (multibody/run_monitor.hpp: slack intervals, snap loads).
 //
 // Hand derivation (rigid boom on a fixed hub, undamped wire of stiffness k, cargo of mass m hanging
 // straight below the tip with the hook above G2, so the motion is purely vertical and the cargo does
@@ -31,7 +31,7 @@ scene::Scene dropped_load() { return scene::load_scene(FFRF_SOURCE_DIR "/cases/d
 
 struct HandSchedule {
   double s, t_free, omega, amplitude, t_taut, peak;
-  std::vector<coupling::WireEvent> events;  // up to the duration
+  std::vector<multibody::WireEvent> events;  // up to the duration
 };
 
 HandSchedule hand_schedule(const scene::Scene& scene, double duration) {
@@ -57,17 +57,17 @@ HandSchedule hand_schedule(const scene::Scene& scene, double duration) {
 }
 
 struct DropRun {
-  coupling::RunResult result;
-  coupling::MonitorLimits limits;
+  multibody::RunResult result;
+  multibody::MonitorLimits limits;
 };
 
 DropRun drop(const scene::Scene& scene, const scene::BoomChoice& choice) {
   auto equations = scene::build_crane(scene, choice);
-  const coupling::StaticEquilibrium statics = coupling::solve_static_equilibrium(*equations, equations->initial_guess());
+  const multibody::StaticEquilibrium statics = multibody::solve_static_equilibrium(*equations, equations->initial_guess());
   Eigen::VectorXd z0 = statics.z;
   z0(equations->cargo_offset() + 1) += scene.simulation.cargo_lift;  // raised, released at rest
-  coupling::IntegratorSettings settings;
-  settings.kind = coupling::Integrator::cvode;
+  multibody::RunSettings settings;
+  settings.kind = solve::Integrator::cvode;
   settings.relative_tolerance = 1e-10;
   settings.absolute_tolerance = 1e-10;
   settings.duration = scene.simulation.duration;
@@ -76,12 +76,12 @@ DropRun drop(const scene::Scene& scene, const scene::BoomChoice& choice) {
   settings.monitor.boom_length = scene.boom.mesh.length;
   settings.monitor.wire_unstretched_length = scene.wire->unstretched_length;
   settings.monitor.static_tension = statics.outputs.wire_tension;
-  DropRun run{coupling::integrate(*equations, z0, settings), settings.monitor};
+  DropRun run{multibody::simulate(*equations, z0, settings), settings.monitor};
   return run;
 }
 
-bool has_detection(const coupling::RunResult& result, coupling::FailureKind kind) {
-  for (const coupling::Detection& d : result.detections) {
+bool has_detection(const multibody::RunResult& result, solve::FailureKind kind) {
+  for (const solve::Detection& d : result.detections) {
     if (d.kind == kind) return true;
   }
   return false;
@@ -103,7 +103,7 @@ TEST(SnapLoads, RigidBoomDroppedLoadFollowsTheHandSchedule) {
   }
 
   // Slack intervals: [0, t_f), [t_f + T_t, t_f + T_t + 2 t_f), ... (the run starts slack).
-  const auto slack = coupling::slack_intervals(run.result, run.limits);
+  const auto slack = multibody::slack_intervals(run.result, run.limits);
   ASSERT_FALSE(slack.empty());
   EXPECT_EQ(slack.front().start, 0.0);
   EXPECT_NEAR(slack.front().end, hand.t_free, 1e-4);
@@ -116,18 +116,18 @@ TEST(SnapLoads, RigidBoomDroppedLoadFollowsTheHandSchedule) {
   }
 
   // Snap peaks k (s + A), sampled at Δt = 0.002 s (bound (ωΔt)²/2 of k A, see the header).
-  const auto snaps = coupling::snap_loads(run.result, run.limits);
+  const auto snaps = multibody::snap_loads(run.result, run.limits);
   ASSERT_EQ(snaps.size(), (hand.events.size() + 1) / 2);  // one per taut event
   const double sampling_bound = std::pow(hand.omega * scene.simulation.output_interval, 2) / 2.0;
   ASSERT_LT(sampling_bound * hand.amplitude / (hand.s + hand.amplitude), 1e-3);
   double worst_peak = 0.0;
-  for (const coupling::SnapLoad& snap : snaps) {
+  for (const multibody::SnapLoad& snap : snaps) {
     EXPECT_NEAR(snap.peak_tension / hand.peak, 1.0, 1e-3);
     EXPECT_NEAR(snap.ratio, hand.peak / (scene.cargo->mass * scene.environment.gravity), 1e-3 * snap.ratio);
     worst_peak = std::max(worst_peak, std::abs(snap.peak_tension / hand.peak - 1.0));
   }
-  EXPECT_TRUE(has_detection(run.result, coupling::FailureKind::wire_slack));
-  EXPECT_TRUE(has_detection(run.result, coupling::FailureKind::snap_load));
+  EXPECT_TRUE(has_detection(run.result, solve::FailureKind::wire_slack));
+  EXPECT_TRUE(has_detection(run.result, solve::FailureKind::snap_load));
   std::printf("t_f %.6f s, T_t %.6f s, peak %.6g N (%.3f x static); %zu events, worst time error %.3g s, "
               "worst peak error %.3g (sampling bound %.3g)\n",
               hand.t_free, hand.t_taut, hand.peak, hand.peak / (scene.cargo->mass * scene.environment.gravity),
@@ -165,7 +165,7 @@ TEST(SnapLoads, ElasticBoomFirstSnapAfterTheSameFreeFallButSofter) {
   eta = -jacobian.fullPivLu().solve(r0);
   boom_alone->static_residual(eta, r1);
   ASSERT_LT(r1.norm(), 1e-8 * r0.norm());
-  const coupling::CraneOutputs self_weight = boom_alone->minimal_outputs(0.0, eta, Eigen::VectorXd::Zero(m));
+  const multibody::CraneOutputs self_weight = boom_alone->minimal_outputs(0.0, eta, Eigen::VectorXd::Zero(m));
   // Cantilever under its weight's transverse part q = ρA g cos φ: tip deflection −q L⁴/(8EI)
   // (cubic Hermite elements with consistent loads are nodally exact for a uniform load).
   const fem::BeamMesh& mesh = scene.boom.mesh;
@@ -173,7 +173,7 @@ TEST(SnapLoads, ElasticBoomFirstSnapAfterTheSameFreeFallButSofter) {
   EXPECT_NEAR(self_weight.tip_deflection.y() / (-q * std::pow(mesh.length, 4) / (8.0 * mesh.section.bending_rigidity())), 1.0, 1e-6);
 
   auto rigid = scene::build_crane(scene, {scene::BoomKind::rigid, 1, 0, false});
-  const auto rigid_statics = coupling::solve_static_equilibrium(*rigid, rigid->initial_guess());
+  const auto rigid_statics = multibody::solve_static_equilibrium(*rigid, rigid->initial_guess());
 
   auto equations = scene::build_crane(scene, elastic);
   const int n = equations->elastic_size(), c = equations->cargo_offset();
@@ -185,7 +185,7 @@ TEST(SnapLoads, ElasticBoomFirstSnapAfterTheSameFreeFallButSofter) {
   z0.segment<3>(c) = rigid_statics.z.segment<3>(rigid->cargo_offset());
   z0.segment<2>(c) += tip_shift + Eigen::Vector2d(0.0, scene.simulation.cargo_lift);
 
-  coupling::IntegratorSettings settings;
+  multibody::RunSettings settings;
   settings.relative_tolerance = 1e-10;
   settings.absolute_tolerance = 1e-10;
   settings.duration = 1.5;
@@ -193,13 +193,13 @@ TEST(SnapLoads, ElasticBoomFirstSnapAfterTheSameFreeFallButSofter) {
   settings.max_order = 2;
   settings.monitor.boom_length = scene.boom.mesh.length;
   settings.monitor.wire_unstretched_length = scene.wire->unstretched_length;
-  const coupling::RunResult run = coupling::integrate(*equations, z0, settings);
+  const multibody::RunResult run = multibody::simulate(*equations, z0, settings);
   // At rest in equilibrium before the wire is taut (the boom does not move).
   EXPECT_LT((run.samples[10].tip_deflection - self_weight.tip_deflection).norm(), 1e-6);
   ASSERT_GE(run.wire_events.size(), 2u);
   EXPECT_FALSE(run.wire_events.front().slack);
   EXPECT_NEAR(run.wire_events.front().time, hand.t_free, 1e-4);
-  const auto snaps = coupling::snap_loads(run, settings.monitor);
+  const auto snaps = multibody::snap_loads(run, settings.monitor);
   ASSERT_FALSE(snaps.empty());
   EXPECT_LT(snaps.front().peak_tension, 0.95 * hand.peak) << "the boom's compliance in series softens the snap";
   EXPECT_GT(snaps.front().peak_tension, scene.cargo->mass * scene.environment.gravity) << "still a snap";
@@ -220,10 +220,10 @@ TEST(SnapLoads, OnlyAPeakAboveTheStaticTensionAfterSlackIsASnap) {
   const double fall = 1e-3;  // h [m]: a small free fall
   const double v = std::sqrt(2.0 * g * fall), amplitude = std::sqrt(s * s + (v / omega) * (v / omega));
   const double phi0 = std::asin(s / amplitude);
-  coupling::MonitorLimits limits;
+  multibody::MonitorLimits limits;
   limits.wire_unstretched_length = 10.0;
   limits.static_tension = static_tension;
-  coupling::RunResult record;
+  multibody::RunResult record;
   // Slack on [0, 0.1) (the run starts slack); taut 0.1–0.5 rising to 0.89 of the static tension and
   // back (0.89 T0 sin²); slack 0.5–0.6; taut from 0.6 as the hand's caught cargo, k(s + A sin(ωτ − φ0)).
   const double dt = 1e-3;
@@ -232,7 +232,7 @@ TEST(SnapLoads, OnlyAPeakAboveTheStaticTensionAfterSlackIsASnap) {
     double tension = 0.0;
     if (t >= 0.1 && t < 0.5) tension = 0.89 * static_tension * std::pow(std::sin(std::numbers::pi * (t - 0.1) / 0.4), 2);
     if (t >= 0.6) tension = std::max(0.0, k * (s + amplitude * std::sin(omega * (t - 0.6) - phi0)));
-    coupling::CraneOutputs sample;
+    multibody::CraneOutputs sample;
     sample.wire_tension = tension;
     sample.wire_length = limits.wire_unstretched_length + (tension > 0.0 ? tension / k : -0.01);
     record.time.push_back(t);
@@ -240,8 +240,8 @@ TEST(SnapLoads, OnlyAPeakAboveTheStaticTensionAfterSlackIsASnap) {
   }
   record.wire_events = {{0.1, false}, {0.5, true}, {0.6, false}};
 
-  ASSERT_EQ(coupling::slack_intervals(record, limits).size(), 2u);
-  const auto snaps = coupling::snap_loads(record, limits);
+  ASSERT_EQ(multibody::slack_intervals(record, limits).size(), 2u);
+  const auto snaps = multibody::snap_loads(record, limits);
   ASSERT_EQ(snaps.size(), 1u) << "the 0.89 x static re-tensioning is not a snap";
   EXPECT_EQ(snaps[0].time, 0.6);
   // The peak at ωτ − φ0 = π/2, sampled within dt: low by at most k A (ω dt)²/2.
@@ -250,13 +250,13 @@ TEST(SnapLoads, OnlyAPeakAboveTheStaticTensionAfterSlackIsASnap) {
   EXPECT_NEAR(snaps[0].peak_time, 0.6 + (std::numbers::pi / 2.0 + phi0) / omega, dt);
   EXPECT_GE(snaps[0].ratio, 2.0 - 1e-4) << "a caught free fall overshoots to at least twice the static tension";
   // The detections list the one snap, and the slack intervals both.
-  const auto found = coupling::post_run_detections(record, limits);
-  EXPECT_EQ(std::count_if(found.begin(), found.end(), [](const coupling::Detection& d) { return d.kind == coupling::FailureKind::snap_load; }), 1);
+  const auto found = multibody::post_run_detections(record, limits);
+  EXPECT_EQ(std::count_if(found.begin(), found.end(), [](const solve::Detection& d) { return d.kind == solve::FailureKind::snap_load; }), 1);
   // Raising the factor past the caught cargo's ratio lists none; an unknown static tension lists both peaks.
   limits.snap_load_factor = snaps[0].ratio * 1.01;
-  EXPECT_TRUE(coupling::snap_loads(record, limits).empty());
+  EXPECT_TRUE(multibody::snap_loads(record, limits).empty());
   limits.static_tension = 0.0;
-  EXPECT_EQ(coupling::snap_loads(record, limits).size(), 2u);
+  EXPECT_EQ(multibody::snap_loads(record, limits).size(), 2u);
 }
 
 }  // namespace snap_loads_test

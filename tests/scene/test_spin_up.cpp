@@ -20,8 +20,8 @@
 
 #include "scene/crane_builder.hpp"
 #include "scene/scene_loader.hpp"
-#include "coupling/simulation.hpp"
-#include "coupling/static_equilibrium.hpp"
+#include "multibody/crane_run.hpp"
+#include "multibody/crane_statics.hpp"
 #include "fem/analytic_beam.hpp"
 
 namespace ffrf {
@@ -29,8 +29,8 @@ namespace spin_up_test {
 
 scene::Scene spin_scene() { return scene::load_scene(FFRF_SOURCE_DIR "/cases/spin_up_beam.toml"); }
 
-coupling::IntegratorSettings spin_settings(const scene::Scene& scene, coupling::Integrator kind, double duration) {
-  coupling::IntegratorSettings settings;
+multibody::RunSettings spin_settings(const scene::Scene& scene, solve::Integrator kind, double duration) {
+  multibody::RunSettings settings;
   settings.kind = kind;
   settings.relative_tolerance = 1e-7;
   settings.absolute_tolerance = 1e-7;
@@ -42,10 +42,10 @@ coupling::IntegratorSettings spin_settings(const scene::Scene& scene, coupling::
   return settings;
 }
 
-coupling::RunResult run(const scene::Scene& scene, const scene::BoomChoice& choice, const coupling::IntegratorSettings& settings) {
+multibody::RunResult run(const scene::Scene& scene, const scene::BoomChoice& choice, const multibody::RunSettings& settings) {
   auto equations = scene::build_crane(scene, choice);
-  const Eigen::VectorXd z0 = coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z;
-  return coupling::integrate(*equations, z0, settings);
+  const Eigen::VectorXd z0 = multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
+  return multibody::simulate(*equations, z0, settings);
 }
 
 // Ω(t) of the spin-up profile (the scene's Ts).
@@ -55,9 +55,9 @@ double spin_rate(const scene::Scene& scene, double t) {
 }
 
 TEST(PrescribedMotion, RateAndAccelerationAreDerivativesOfThePose) {
-  coupling::PrescribedMotion motion;
+  multibody::PrescribedMotion motion;
   motion.pose0 = Eigen::Vector3d(1.0, 2.0, 0.3);
-  motion.profile = coupling::RotationProfile::spin_up;
+  motion.profile = multibody::RotationProfile::spin_up;
   motion.spin_rate = 4.0;
   motion.spin_up_time = 15.0;
   const double h = 1e-5;
@@ -84,16 +84,16 @@ TEST(DrivenHub, RigidBeamReactionIsRigidBodyDynamicsInMinimalAndFullCoordinates)
     scene.boom.mount->root_x = arm;
     const double mass = scene.boom.mesh.total_mass(), length = scene.boom.mesh.length;
     const double root_inertia = mass * length * length / 3.0;  // ρA L³/3
-    const coupling::PrescribedMotion motion{Eigen::Vector3d::Zero(), coupling::RotationProfile::spin_up, 4.0, 15.0};
+    const multibody::PrescribedMotion motion{Eigen::Vector3d::Zero(), multibody::RotationProfile::spin_up, 4.0, 15.0};
     // Minimal coordinates: no degrees of freedom remain, the reaction follows from the kinematics
     // (round-off). IDA integrates the frame against the time-dependent clamp (rtol 1e-7 on an angle
     // that reaches 50 rad): its residual |C| = |ΔR| + L|Δθ| stays below 1e-5 m (Δθ ~ 2e-7 rad) and the
     // reaction, λ recomputed from the state at each output, follows within 1e-4. Projection puts every
     // output state on C(q, t) = 0.
-    for (const auto& [kind, relative, drift] : {std::tuple{coupling::Integrator::cvode, 1e-10, 1e-12},
-                                                std::tuple{coupling::Integrator::ida, 1e-4, 1e-5},
-                                                std::tuple{coupling::Integrator::projection, 1e-4, 1e-8}}) {
-      const coupling::RunResult result = run(scene, {scene::BoomKind::rigid}, spin_settings(scene, kind, 20.0));
+    for (const auto& [kind, relative, drift] : {std::tuple{solve::Integrator::cvode, 1e-10, 1e-12},
+                                                std::tuple{solve::Integrator::ida, 1e-4, 1e-5},
+                                                std::tuple{solve::Integrator::projection, 1e-4, 1e-8}}) {
+      const multibody::RunResult result = run(scene, {scene::BoomKind::rigid}, spin_settings(scene, kind, 20.0));
       const double force_scale = mass * (arm + 0.5 * length) * 16.0;  // m |c| Ωs²
       const double moment_scale = (root_inertia + mass * arm * 0.5 * length) * 8.0 / 15.0;  // θ̈_max = 2Ωs/Ts
       for (std::size_t k = 0; k < result.time.size(); k += 37) {
@@ -102,7 +102,7 @@ TEST(DrivenHub, RigidBeamReactionIsRigidBodyDynamicsInMinimalAndFullCoordinates)
         const Eigen::Vector2d centroid = (arm + 0.5 * length) * Eigen::Vector2d(std::cos(theta), std::sin(theta));
         const Eigen::Vector2d force = mass * (acc * Eigen::Vector2d(-centroid.y(), centroid.x()) - rate * rate * centroid);
         const double moment = (root_inertia + mass * arm * 0.5 * length) * acc;
-        const coupling::CraneOutputs& o = result.samples[k];
+        const multibody::CraneOutputs& o = result.samples[k];
         SCOPED_TRACE(std::string(to_string(kind)) + ", r = " + std::to_string(arm) + " m, t = " + std::to_string(t));
         EXPECT_NEAR(o.joint_reaction.z(), moment, relative * moment_scale);
         EXPECT_NEAR((o.joint_reaction.head<2>() - force).norm(), 0.0, relative * force_scale);
@@ -119,20 +119,20 @@ TEST(SpinUp, UnstiffenedLinearBeamDivergesOnceTheSpinPassesTheFirstBendingFreque
   EXPECT_NEAR(omega1, 3.80, 0.005);  // (β1 L)² √(EI / (μ L⁴)) = 1.8751² · √(1.4e4 / (1.2 · 10⁴)) = 3.797 rad/s
   scene::BoomChoice choice{scene::BoomKind::nodal, 10};
   choice.stiffening = scene::Stiffening::none;
-  const coupling::IntegratorSettings settings = spin_settings(scene, coupling::Integrator::cvode, 30.0);
+  const multibody::RunSettings settings = spin_settings(scene, solve::Integrator::cvode, 30.0);
   try {
     run(scene, choice, settings);
     FAIL() << "the unstiffened spin-up did not diverge";
-  } catch (const coupling::SolverFailure& failure) {
-    EXPECT_EQ(failure.kind(), coupling::FailureKind::divergence) << failure.what();
+  } catch (const solve::SolverFailure& failure) {
+    EXPECT_EQ(failure.kind(), solve::FailureKind::divergence) << failure.what();
     const double omega_at_detection = spin_rate(scene, failure.time());
     EXPECT_GT(omega_at_detection, omega1) << "detected at t = " << failure.time();
     // The growth rate is positive and no faster than the instantaneous rate √(Ω² − ω1²) of the
     // softened mode (Ω(t) rises through the window, so the fitted rate is below it).
     EXPECT_GT(failure.value(), 0.05);
     EXPECT_LE(failure.value(), std::sqrt(omega_at_detection * omega_at_detection - omega1 * omega1) * 1.05);
-    ASSERT_NE(failure.partial(), nullptr);
-    const coupling::RunResult& partial = *failure.partial();
+    ASSERT_NE(multibody::partial_run(failure), nullptr);
+    const multibody::RunResult& partial = *multibody::partial_run(failure);
     ASSERT_FALSE(partial.samples.empty());
     for (const auto& sample : partial.samples) ASSERT_TRUE(sample.tip_deflection.allFinite());
     EXPECT_GT(partial.samples.back().tip_deflection.norm(), scene.simulation.deflection_limit * scene.boom.mesh.length);
@@ -141,9 +141,9 @@ TEST(SpinUp, UnstiffenedLinearBeamDivergesOnceTheSpinPassesTheFirstBendingFreque
 
 TEST(SpinUp, CentrifugalStiffeningKeepsTheTipBoundedAndNodalAgreesWithModal) {
   const scene::Scene scene = spin_scene();  // boom.stiffening = centrifugal
-  const coupling::IntegratorSettings settings = spin_settings(scene, coupling::Integrator::cvode, 30.0);
-  const coupling::RunResult nodal = run(scene, {scene::BoomKind::nodal, 10}, settings);
-  const coupling::RunResult modal = run(scene, {scene::BoomKind::modal, 10, 4, true}, settings);
+  const multibody::RunSettings settings = spin_settings(scene, solve::Integrator::cvode, 30.0);
+  const multibody::RunResult nodal = run(scene, {scene::BoomKind::nodal, 10}, settings);
+  const multibody::RunResult modal = run(scene, {scene::BoomKind::modal, 10, 4, true}, settings);
   ASSERT_EQ(nodal.time.size(), modal.time.size());
   double largest = 0.0, difference = 0.0;
   for (std::size_t k = 0; k < nodal.time.size(); ++k) {
@@ -173,11 +173,11 @@ TEST(SpinUp, FullCoordinateFormulationsReproduceTheMinimalRunOfTheDrivenBase) {
   scene.hub->radius = arm;
   scene.boom.mount->root_x = arm;
   const scene::BoomChoice choice{scene::BoomKind::modal, 10, 4, true};
-  const coupling::RunResult minimal = run(scene, choice, spin_settings(scene, coupling::Integrator::cvode, 20.0));
+  const multibody::RunResult minimal = run(scene, choice, spin_settings(scene, solve::Integrator::cvode, 20.0));
   double largest = 0.0;
   for (const auto& sample : minimal.samples) largest = std::max(largest, std::abs(sample.tip_deflection.y()));
-  for (coupling::Integrator kind : {coupling::Integrator::ida, coupling::Integrator::projection}) {
-    const coupling::RunResult full = run(scene, choice, spin_settings(scene, kind, 20.0));
+  for (solve::Integrator kind : {solve::Integrator::ida, solve::Integrator::projection}) {
+    const multibody::RunResult full = run(scene, choice, spin_settings(scene, kind, 20.0));
     ASSERT_EQ(full.time.size(), minimal.time.size());
     double difference = 0.0, drift = 0.0;
     for (std::size_t k = 0; k < full.time.size(); ++k) {

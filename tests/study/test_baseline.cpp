@@ -26,7 +26,7 @@ using namespace ffrf;
 constexpr int kElements = 4;          // 12 free DOFs: the six modes of a baseline
 constexpr double kDuration = 25.0;    // past the wave ramp (2 × 10 s): a statistics window of 5 s
 
-coupling::IntegratorSettings short_run(const scene::Scene& scene) {
+multibody::RunSettings short_run(const scene::Scene& scene) {
   study::DynamicsRequest request;
   request.duration = kDuration;
   return study::integrator_settings(scene, request);
@@ -125,7 +125,7 @@ TEST_F(CraneBaseline, RoundTripPassesWithZeroDifferences) {
 // error: a third run, at 1/10⁴ of the tolerances, differs from the recorded one by the same amount
 // (to the tighter run's own error, ~1 %).
 TEST_F(CraneBaseline, IntegrationErrorAgreesWithAMuchTighterRun) {
-  coupling::IntegratorSettings tight = short_run(*scene_);
+  multibody::RunSettings tight = short_run(*scene_);
   tight.relative_tolerance = tight.absolute_tolerance = 1e-10;
   study::BaselineTolerances exact;
   exact.relative = 0.0;
@@ -252,7 +252,7 @@ TEST(BaselineModel, DifferencesAreListedSettingBySetting) {
   b.choice.modes = 4;
   b.choice.static_modes = false;
   b.choice.stiffening = scene::Stiffening::static_load;
-  b.integrator = coupling::Integrator::ida;
+  b.integrator = solve::Integrator::ida;
   b.duration = 60.0;
   const std::vector<study::SettingDifference> d = study::model_differences(a, b);
   ASSERT_EQ(d.size(), 5u);
@@ -268,8 +268,8 @@ TEST(BaselineModel, DifferencesAreListedSettingBySetting) {
 }
 
 TEST(BaselineStatistics, MeanAndStandardDeviationOfASineOverWholePeriods) {
-  std::vector<coupling::CraneOutputs> samples(400);
-  coupling::CraneOutputs statics;
+  std::vector<multibody::CraneOutputs> samples(400);
+  multibody::CraneOutputs statics;
   statics.hull = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < samples.size(); ++i) {
     samples[i] = statics;

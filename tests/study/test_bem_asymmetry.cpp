@@ -21,7 +21,7 @@
 #include <string>
 
 #include "sea/bem_excitation.hpp"
-#include "coupling/linearisation.hpp"
+#include "multibody/linearisation.hpp"
 #include "hydro/wamit_reader.hpp"
 #include "scene/bem_hull_model.hpp"
 #include "scene/scene_loader.hpp"
@@ -90,7 +90,7 @@ TEST(BemAsymmetry, RaoIsTheDirectSolveWithTheFilesExcitation) {
   scene::Scene calm = scene;
   calm.wave.reset();
   study::PreparedRun prepared = study::prepare_run(calm, {scene::BoomKind::rigid, 1});
-  const coupling::LinearisedCrane linear = coupling::linearise_crane(*prepared.equations, prepared.statics.z);
+  const multibody::LinearisedCrane linear = multibody::linearise_crane(*prepared.equations, prepared.statics.z);
   ASSERT_EQ(linear.hull_at, 0);
   const Eigen::Matrix3d hull_mass = linear.mass.topLeftCorner<3, 3>();
   EXPECT_TRUE(hull_mass.isApprox(hull_mass.transpose(), 1e-12)) << hull_mass;
@@ -111,7 +111,7 @@ TEST(BemAsymmetry, RaoIsTheDirectSolveWithTheFilesExcitation) {
     const Complex got = rao.models.front().response[static_cast<std::size_t>(j)].front();
     double& worst = j < 3 ? hull : cargo;
     worst = std::max(worst, std::abs(got - motion(j)) / std::abs(motion(j)));
-    std::printf("%s: rao %.9e%+.9ei, direct %.9e%+.9ei\n", std::string(coupling::to_string(static_cast<coupling::LinearOutput>(j))).c_str(),
+    std::printf("%s: rao %.9e%+.9ei, direct %.9e%+.9ei\n", std::string(multibody::to_string(static_cast<multibody::LinearOutput>(j))).c_str(),
                 got.real(), got.imag(), motion(j).real(), motion(j).imag());
   }
   std::printf("largest relative difference rao/direct: hull %.2e, cargo %.2e\n", hull, cargo);
@@ -121,7 +121,7 @@ TEST(BemAsymmetry, RaoIsTheDirectSolveWithTheFilesExcitation) {
 
 TEST(BemAsymmetry, CvodeAndIdaAgreeInASmallRegularWave) {
   const scene::Scene scene = asymmetric_scene();
-  const auto run = [&](coupling::Integrator integrator) {
+  const auto run = [&](solve::Integrator integrator) {
     study::DynamicsRequest request;
     request.integrator = integrator;
     request.relative_tolerance = 1e-8;
@@ -129,8 +129,8 @@ TEST(BemAsymmetry, CvodeAndIdaAgreeInASmallRegularWave) {
     request.duration = 40.0;
     return study::run_model(scene, {scene::BoomKind::rigid, 1}, study::integrator_settings(scene, request));
   };
-  const study::ModelRun cvode = run(coupling::Integrator::cvode);
-  const study::ModelRun ida = run(coupling::Integrator::ida);
+  const study::ModelRun cvode = run(solve::Integrator::cvode);
+  const study::ModelRun ida = run(solve::Integrator::ida);
   ASSERT_EQ(cvode.result.samples.size(), ida.result.samples.size());
   const auto& rest = cvode.statics.outputs;
   for (int dof = 0; dof < 3; ++dof) {
@@ -152,10 +152,10 @@ TEST(BemAsymmetry, TheRegularWaveRunSettlesToTheRao) {
   const study::TimeDomainCheck check = study::check_time_domain(scene, {scene::BoomKind::rigid, 1}, request);
   for (const auto& period : check.periods) {
     for (const auto& c : period.channels) {
-      std::printf("%-11s RAO %.6g time domain %.6g: deviation %+.2e, phase %+.1e rad\n", std::string(coupling::to_string(c.output)).c_str(),
+      std::printf("%-11s RAO %.6g time domain %.6g: deviation %+.2e, phase %+.1e rad\n", std::string(multibody::to_string(c.output)).c_str(),
                   c.frequency_domain, c.time_domain, c.deviation(), c.phase_difference);
-      EXPECT_LT(std::abs(c.deviation()), 2e-3) << coupling::to_string(c.output);  // measured ≤ 4.9e-4
-      EXPECT_LT(std::abs(c.phase_difference), 2e-3) << coupling::to_string(c.output);
+      EXPECT_LT(std::abs(c.deviation()), 2e-3) << multibody::to_string(c.output);  // measured ≤ 4.9e-4
+      EXPECT_LT(std::abs(c.phase_difference), 2e-3) << multibody::to_string(c.output);
     }
   }
 }

@@ -25,7 +25,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "barge_hull_scene.hpp"
-#include "coupling/simulation.hpp"
+#include "multibody/crane_run.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/run_pipeline.hpp"
 #include "../barge_excitation_lines.hpp"
@@ -62,7 +62,7 @@ HullState hull_state(const std::string& text, double t) {
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(z.size());
   Eigen::VectorXd z_ddot(z.size());
   prepared.equations->minimal_accelerations(t, z, zero, z_ddot);
-  coupling::SecondOrderJacobian blocks(prepared.equations->minimal_structure());
+  solve::SecondOrderJacobian blocks(prepared.equations->minimal_structure());
   prepared.equations->minimal_jacobian(t, z, zero, z_ddot, blocks);
   HullState s;
   for (int i = 0; i < 3; ++i) {
@@ -144,12 +144,12 @@ truncation_time = 3.0)",
   study::PreparedRun prepared = study::prepare_run(scene, {scene::BoomKind::rigid, 1});
   Eigen::VectorXd z0 = prepared.initial_state;
   z0(1) += kStart;
-  coupling::IntegratorSettings settings;
+  multibody::RunSettings settings;
   settings.relative_tolerance = 1e-8;
   settings.absolute_tolerance = 1e-9;
   settings.duration = 30.0;
   settings.output_interval = 0.05;
-  const auto result = coupling::integrate(*prepared.equations, z0, settings);
+  const auto result = multibody::simulate(*prepared.equations, z0, settings);
   time = result.time;
   std::vector<double> heave;
   for (const auto& sample : result.samples) heave.push_back(sample.hull(1) - prepared.initial_state(1));

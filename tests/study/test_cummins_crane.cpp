@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "barge_hull_scene.hpp"
-#include "coupling/simulation.hpp"
+#include "multibody/crane_run.hpp"
 #include "hydro/retardation.hpp"
 #include "hydro/state_space_fit.hpp"
 #include "hydro/wamit_reader.hpp"
@@ -156,12 +156,12 @@ radiation_model = "{}"
     ffrf::study::PreparedRun prepared = ffrf::study::prepare_run(scene, {ffrf::scene::BoomKind::rigid, 1});
     Eigen::VectorXd z0 = prepared.initial_state;
     z0.head<3>() += offset;
-    ffrf::coupling::IntegratorSettings settings;
+    ffrf::multibody::RunSettings settings;
     settings.relative_tolerance = 1e-8;
     settings.absolute_tolerance = 1e-9;
     settings.duration = duration;
     settings.output_interval = 0.05;
-    const auto result = ffrf::coupling::integrate(*prepared.equations, z0, settings);
+    const auto result = ffrf::multibody::simulate(*prepared.equations, z0, settings);
     Record rec;
     rec.time = result.time;
     for (const auto& sample : result.samples) rec.position.push_back(sample.hull - prepared.initial_state.head<3>());

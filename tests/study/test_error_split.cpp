@@ -2,7 +2,7 @@
 // static offset and a known dynamic difference: reference x_ref = R_s + A sin ωt, model
 // x = X_s + A sin ωt + δ cos ωt over whole periods. By hand: S = A/√2, static error |X_s − R_s|/S,
 // dynamic error RMS(δ cos ωt)/S = δ/A, largest dynamic difference δ; the total error of
-// coupling::compare_runs (computed there, not here) is √(static² + dynamic²) because mean(δ cos ωt)
+// multibody::compare_runs (computed there, not here) is √(static² + dynamic²) because mean(δ cos ωt)
 // = 0; the chart's difference series (dynamic_difference) is δ cos ωt and its RMS over S is the
 // dynamic error.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "coupling/error_metrics.hpp"
+#include "multibody/error_metrics.hpp"
 #include "study/error_split.hpp"
 #include "study/output_series.hpp"
 
@@ -57,7 +57,7 @@ TEST(ErrorSplit, TotalErrorOfCompareRunsIsTheHypotenuseAndTheChartDifferenceIsTh
   model.statics.outputs.cargo.y() = model_static;
   reference.statics.outputs.cargo.y() = reference_static;
   for (std::size_t i = 0; i < p.time.size(); ++i) {
-    coupling::CraneOutputs m, r;
+    multibody::CraneOutputs m, r;
     m.cargo.y() = p.model[i];
     r.cargo.y() = p.reference[i];
     model.result.time.push_back(p.time[i]);
@@ -65,9 +65,9 @@ TEST(ErrorSplit, TotalErrorOfCompareRunsIsTheHypotenuseAndTheChartDifferenceIsTh
     reference.result.time.push_back(p.time[i]);
     reference.result.samples.push_back(r);
   }
-  const auto heave = static_cast<std::size_t>(coupling::OutputChannel::cargo_heave);
+  const auto heave = static_cast<std::size_t>(multibody::OutputChannel::cargo_heave);
   const study::SplitError split = study::split_errors(model, reference, window)[heave];
-  const double total = coupling::compare_runs(model.result, reference.result, window)[coupling::OutputChannel::cargo_heave]
+  const double total = multibody::compare_runs(model.result, reference.result, window)[multibody::OutputChannel::cargo_heave]
                            .normalized_rms;
   EXPECT_NEAR(total, std::hypot(split.static_error, split.dynamic_error), 1e-9 * total);
   EXPECT_LE(total, split.static_error + split.dynamic_error);

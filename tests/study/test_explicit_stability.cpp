@@ -1,7 +1,7 @@
-// The measured largest stable step of fixed-step ARKODE ERK (coupling/explicit_stability.hpp)
+// The measured largest stable step of fixed-step ARKODE ERK (solve/explicit_stability.hpp)
 // against independent theory: the Runge–Kutta stability polynomial's Taylor coefficients, the
 // analytic axial frequency of a one-element bar, the linearized crane's Jacobian eigenvalues
-// (coupling::explicit_stable_step: linear algebra, no time stepping) and the boom's own modes
+// (solve::explicit_stable_step: linear algebra, no time stepping) and the boom's own modes
 // with their stiffness-proportional damping (cases/stability_theory.hpp).
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <numbers>
 
 #include "study/stability_theory.hpp"
-#include "coupling/explicit_stability.hpp"
+#include "solve/explicit_stability.hpp"
 #include "../scene/crane_test_support.hpp"
 
 namespace ffrf {
@@ -26,18 +26,18 @@ scene::Scene calm_reference_scene() {
 }
 
 struct Measured {
-  std::unique_ptr<coupling::CraneEquations> equations;
+  std::unique_ptr<multibody::CraneEquations> equations;
   Eigen::VectorXd z0;
   double jacobian_limit;
-  coupling::StableStepMeasurement measurement;
+  solve::StableStepMeasurement measurement;
 };
 
 Measured measure(const scene::Scene& scene, const scene::BoomChoice& choice) {
   Measured m{scene::build_crane(scene, choice), {}, 0.0, {}};
-  m.z0 = coupling::solve_static_equilibrium(*m.equations, m.equations->initial_guess()).z;
-  m.jacobian_limit = coupling::explicit_stable_step(*m.equations, m.z0);
+  m.z0 = multibody::solve_static_equilibrium(*m.equations, m.equations->initial_guess()).z;
+  m.jacobian_limit = solve::explicit_stable_step(*m.equations, m.z0);
   // Start the bracket away from the theory so the search has to find the limit itself.
-  m.measurement = coupling::measure_stable_step(*m.equations, m.z0, 0.37 * m.jacobian_limit);
+  m.measurement = solve::measure_stable_step(*m.equations, m.z0, 0.37 * m.jacobian_limit);
   std::printf("%-24s measured h ∈ [%.5g, %.5g] s (%d trials, %ld RHS, window %ld steps), Jacobian bound %.5g s\n",
               choice.label().c_str(), m.measurement.stable_step, m.measurement.unstable_step, m.measurement.trials,
               m.measurement.rhs_evaluations, m.measurement.window_steps, m.jacobian_limit);
@@ -52,7 +52,7 @@ TEST(ExplicitStability, StabilityPolynomialIsTheFourthOrderTaylorSeriesOfExp) {
     std::complex<double> sum = 0.0;
     for (int j = 0; j < points; ++j) {
       const std::complex<double> w = std::polar(1.0, 2.0 * std::numbers::pi * j / points);
-      sum += coupling::explicit_stability_function(w) * std::conj(std::pow(w, k));
+      sum += solve::explicit_stability_function(w) * std::conj(std::pow(w, k));
     }
     c[static_cast<std::size_t>(k)] = (sum / static_cast<double>(points)).real();
   }
@@ -61,9 +61,9 @@ TEST(ExplicitStability, StabilityPolynomialIsTheFourthOrderTaylorSeriesOfExp) {
   for (int k = 5; k < points; ++k) EXPECT_NEAR(c[static_cast<std::size_t>(k)], 0.0, 1e-13) << "k = " << k;
   // Then |R(iy)|² − 1 = y⁶ (y² − 8) / 576: the imaginary-axis boundary is β_I = 2√2 (classical RK4's).
   const double beta_i = 2.0 * std::numbers::sqrt2;
-  EXPECT_NEAR(coupling::explicit_imaginary_axis_boundary(), beta_i, 1e-6) << "integrate_explicit's table";
-  EXPECT_NEAR(coupling::explicit_ray_boundary({0.0, 1.0}), beta_i, 1e-6) << "the measurement's table";
-  EXPECT_NEAR(std::abs(coupling::explicit_stability_function({0.0, beta_i})), 1.0, 1e-12);
+  EXPECT_NEAR(solve::explicit_imaginary_axis_boundary(), beta_i, 1e-6) << "integrate_explicit's table";
+  EXPECT_NEAR(solve::explicit_ray_boundary({0.0, 1.0}), beta_i, 1e-6) << "the measurement's table";
+  EXPECT_NEAR(std::abs(solve::explicit_stability_function({0.0, beta_i})), 1.0, 1e-12);
 }
 
 TEST(ExplicitStability, HighestFrequencyOfTheOneElementBoomIsTheAxialBar) {
@@ -109,17 +109,17 @@ TEST(ExplicitStability, BeyondTheLimitIsReportedUnstableAndBelowItCompletes) {
   const scene::Scene scene = calm_reference_scene();
   const Measured m = measure(scene, {BoomKind::nodal, 4, 0, false});
   ASSERT_TRUE(m.measurement.converged);
-  const coupling::StableStepSearch search;
-  const Eigen::VectorXd start = m.z0 + coupling::stability_seed(*m.equations, search.seed_size);
-  coupling::IntegratorSettings settings;
-  settings.kind = coupling::Integrator::arkode;
+  const solve::StableStepSearch search;
+  const Eigen::VectorXd start = m.z0 + solve::stability_seed(*m.equations, search.seed_size);
+  multibody::RunSettings settings;
+  settings.kind = solve::Integrator::arkode;
   settings.output_interval = 0.01;
   settings.duration = 1.0;  // ≥ 3 000 steps at these sizes: longer than the measurement window
   settings.fixed_step = 1.3 * m.measurement.stable_step;
   try {
-    const auto run = coupling::integrate_explicit(*m.equations, start, settings);
+    const auto run = multibody::simulate(*m.equations, start, settings);
     ADD_FAILURE() << "1.3 × the measured limit returned " << run.samples.size() << " samples";
-  } catch (const coupling::SolverFailure& failure) {
+  } catch (const solve::SolverFailure& failure) {
     std::printf("1.3 ×: %s\n", failure.what());
     EXPECT_EQ(failure.cause().rfind("unstable:", 0), 0U) << failure.cause();
     EXPECT_NE(failure.cause().find("stability limit"), std::string::npos) << "names the limit: " << failure.cause();
@@ -127,7 +127,7 @@ TEST(ExplicitStability, BeyondTheLimitIsReportedUnstableAndBelowItCompletes) {
     EXPECT_EQ(failure.remedy().find("--"), std::string::npos) << "neutral words, no option names: " << failure.remedy();
   }
   settings.fixed_step = 0.7 * m.measurement.stable_step;
-  const auto run = coupling::integrate_explicit(*m.equations, start, settings);
+  const auto run = multibody::simulate(*m.equations, start, settings);
   ASSERT_EQ(run.samples.size(), 101U);
   for (const auto& o : run.samples) {
     ASSERT_TRUE(std::isfinite(o.kinetic_energy) && std::isfinite(o.tip_deflection.norm()) && std::isfinite(o.wire_tension));

@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "barge_hull_scene.hpp"
-#include "coupling/linearisation.hpp"
-#include "coupling/simulation.hpp"
+#include "multibody/linearisation.hpp"
+#include "multibody/crane_run.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/run_pipeline.hpp"
 
@@ -47,12 +47,12 @@ std::vector<double> free_decay(const std::string& text, int dof, double offset, 
   study::PreparedRun prepared = study::prepare_run(scene, {scene::BoomKind::rigid, 1});
   Eigen::VectorXd z0 = prepared.initial_state;
   z0(dof) += offset;
-  coupling::IntegratorSettings settings;
+  multibody::RunSettings settings;
   settings.relative_tolerance = 1e-9;
   settings.absolute_tolerance = 1e-10;
   settings.duration = duration;
   settings.output_interval = 0.01;
-  const coupling::RunResult result = coupling::integrate(*prepared.equations, z0, settings);
+  const multibody::RunResult result = multibody::simulate(*prepared.equations, z0, settings);
   time = result.time;
   std::vector<double> x;
   for (const auto& sample : result.samples) x.push_back(sample.hull(dof) - prepared.initial_state(dof));
@@ -129,7 +129,7 @@ TEST(HullDamping, TheLinearisationKeepsTheLinearPartOnly) {
   const auto surge_damping = [](const std::string& text) {
     const scene::Scene scene = scene::load_scene_text(text, "hull_damping.toml");
     study::PreparedRun prepared = study::prepare_run(scene, {scene::BoomKind::rigid, 1});
-    return coupling::linearise_crane(*prepared.equations, prepared.statics.z).damping(0, 0);
+    return multibody::linearise_crane(*prepared.equations, prepared.statics.z).damping(0, 0);
   };
   const double none = surge_damping(surge_scene(""));
   EXPECT_NEAR(surge_damping(surge_scene(fmt::format("surge_linear = {}", b))) - none, b, 1e-6 * b);

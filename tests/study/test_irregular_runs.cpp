@@ -74,8 +74,8 @@ TEST(IrregularRuns, SameSeedSameRunOtherSeedOtherRun) {
 }
 
 // Crane outputs whose crane heave is `record` (all else static).
-std::vector<coupling::CraneOutputs> samples_with_heave(const std::vector<double>& record) {
-  std::vector<coupling::CraneOutputs> samples(record.size());
+std::vector<multibody::CraneOutputs> samples_with_heave(const std::vector<double>& record) {
+  std::vector<multibody::CraneOutputs> samples(record.size());
   for (std::size_t i = 0; i < record.size(); ++i) {
     samples[i].hull = Eigen::Vector3d(0.0, record[i], 0.0);
     samples[i].wire_tension = 1e7;
@@ -109,7 +109,7 @@ TEST(IrregularRuns, StatisticsOfANarrowBandGaussianRecordMatchRayleigh) {
       record[i] += amplitude * std::cos(w[static_cast<std::size_t>(h)] * time[i] + p[static_cast<std::size_t>(h)]);
     }
   }
-  coupling::CraneOutputs statics;
+  multibody::CraneOutputs statics;
   statics.wire_tension = 1e7;
   const auto stats = study::irregular_statistics(scene, time, samples_with_heave(record), statics, 0, dt);
   ASSERT_TRUE(stats.has_value());
@@ -145,7 +145,7 @@ TEST(IrregularRuns, SignificantValueOfASinusoidIsTwoRootTwoTimesItsAmplitude) {
     time.push_back(i * dt);
     record.push_back(amplitude * std::sin(2.0 * std::numbers::pi * time.back() / period));
   }
-  coupling::CraneOutputs statics;
+  multibody::CraneOutputs statics;
   const auto stats = study::irregular_statistics(scene, time, samples_with_heave(record), statics, 0, dt);
   ASSERT_TRUE(stats.has_value());
   EXPECT_NEAR(stats->responses[0].significant, 2.0 * std::sqrt(2.0) * amplitude, 1e-9);

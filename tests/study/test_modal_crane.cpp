@@ -9,7 +9,7 @@
 #include <Eigen/Eigenvalues>
 #include <cstdio>
 
-#include "coupling/error_metrics.hpp"
+#include "multibody/error_metrics.hpp"
 #include "study/error_measure.hpp"
 #include "../scene/crane_test_support.hpp"
 #include "linalg/dense_solvers.hpp"
@@ -17,18 +17,18 @@
 namespace modal_crane_test {
 
 using namespace ffrf;
-using coupling::OutputChannel;
+using multibody::OutputChannel;
 
-coupling::IntegratorSettings settings(double duration, double tolerance) {
-  coupling::IntegratorSettings s;
+multibody::RunSettings settings(double duration, double tolerance) {
+  multibody::RunSettings s;
   s.relative_tolerance = s.absolute_tolerance = tolerance;
   s.duration = duration;
   s.output_interval = 0.05;
   return s;
 }
 
-coupling::RunResult run_from_equilibrium(coupling::CraneEquations& equations, const coupling::IntegratorSettings& s) {
-  return coupling::integrate(equations, coupling::solve_static_equilibrium(equations, equations.initial_guess()).z, s);
+multibody::RunResult run_from_equilibrium(multibody::CraneEquations& equations, const multibody::RunSettings& s) {
+  return multibody::simulate(equations, multibody::solve_static_equilibrium(equations, equations.initial_guess()).z, s);
 }
 
 TEST(ModalCrane, FullModalBasisReproducesTheNodalTimeHistory) {
@@ -39,15 +39,15 @@ TEST(ModalCrane, FullModalBasisReproducesTheNodalTimeHistory) {
   modal::ModalBasis basis;
   basis.vectors = dense.eigenvectors();  // all 9 M-orthonormal modes
   basis.vibration_count = static_cast<int>(basis.vectors.cols());
-  auto modal_equations = coupling::make_crane_equations(scene::build_crane_model(scene, modal::ModalCoordinates(beam, basis)));
+  auto modal_equations = multibody::make_crane_equations(scene::build_crane_model(scene, modal::ModalCoordinates(beam, basis)));
   auto nodal_equations = scene::build_crane(scene, {scene::BoomKind::nodal, elements, 0, false});
   const auto s = settings(30.0, 1e-11);
   const auto modal_run = run_from_equilibrium(*modal_equations, s);
   const auto nodal_run = run_from_equilibrium(*nodal_equations, s);
   double worst = 0.0;
-  for (OutputChannel c : coupling::all_channels) {
-    const auto a = test::column(modal_run, [c](const coupling::CraneOutputs& o) { return coupling::channel_value(o, c); });
-    const auto b = test::column(nodal_run, [c](const coupling::CraneOutputs& o) { return coupling::channel_value(o, c); });
+  for (OutputChannel c : multibody::all_channels) {
+    const auto a = test::column(modal_run, [c](const multibody::CraneOutputs& o) { return multibody::channel_value(o, c); });
+    const auto b = test::column(nodal_run, [c](const multibody::CraneOutputs& o) { return multibody::channel_value(o, c); });
     worst = std::max(worst, test::relative_history_error(a, b));
   }
   std::printf("full modal basis vs nodal: worst relative history error %.3g\n", worst);
@@ -63,7 +63,7 @@ TEST(ModalCrane, ErrorFallsWithModeCountAndStaticModesCarryTheQuasiStaticLoad) {
   const auto reference = run_from_equilibrium(*nodal_equations, s);
   auto cargo_heave_error = [&](int k, bool with_static) {
     auto equations = scene::build_crane(scene, {scene::BoomKind::modal, 16, k, with_static});
-    return coupling::compare_runs(run_from_equilibrium(*equations, s), reference, window)[OutputChannel::cargo_heave].normalized_rms;
+    return multibody::compare_runs(run_from_equilibrium(*equations, s), reference, window)[OutputChannel::cargo_heave].normalized_rms;
   };
   const double e1 = cargo_heave_error(1, false), e2 = cargo_heave_error(2, false), e4 = cargo_heave_error(4, false);
   const double e8 = cargo_heave_error(8, false), e2s = cargo_heave_error(2, true);

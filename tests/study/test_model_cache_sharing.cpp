@@ -56,7 +56,7 @@ TEST(ModelCacheSharing, ARadiationAxisBuildsOneModelPerBoomAndRadiationModelWith
   for (const SweepConfig& config : configs) {
     const SweepResult row = run_configuration(shared, config);
     // The quick grid's explicit run past its stability limit must fail; every other one runs.
-    if (config.integrator != coupling::Integrator::arkode) {
+    if (config.integrator != solve::Integrator::arkode) {
       ASSERT_EQ(row.status, RunStatus::ok) << config.choice.label() << ": " << row.reason;
     }
     expect_same_result(row, run_configuration(own, config));
@@ -130,7 +130,7 @@ TEST(ModelCacheSharing, AStaticEquilibriumIsSolvedOncePerModelAndEqualsARunsOwnS
   // stiffness moves the tip: z differs).
   scene::BoomChoice stiffened = nodal;
   stiffened.stiffening = scene::Stiffening::static_load;
-  const coupling::StaticEquilibrium other = models.static_equilibrium(stiffened);
+  const multibody::StaticEquilibrium other = models.static_equilibrium(stiffened);
   EXPECT_EQ(models.equilibria_solved(), 3);
   EXPECT_NE(other.z, models.static_equilibrium(nodal).z);
   EXPECT_EQ(models.equilibria_solved(), 3);

@@ -1,4 +1,4 @@
-// The frequency domain (study/rao.hpp, coupling/linearisation.hpp) against independent results:
+// The frequency domain (study/rao.hpp, multibody/linearisation.hpp) against independent results:
 // (a) the complex LU response and the natural modes of 1- and 2-DOF oscillators against their
 // closed forms (Cramer's rule, the characteristic polynomial); (b) the hull's heave natural
 // frequency of a crane whose heave decouples against √(C33 / (m + A33)) and its damping ratio against
@@ -11,8 +11,8 @@
 #include <complex>
 #include <numbers>
 
-#include "coupling/crane_equations.hpp"
-#include "coupling/linearisation.hpp"
+#include "multibody/crane_equations.hpp"
+#include "multibody/linearisation.hpp"
 #include "study/rao.hpp"
 #include "study/run_pipeline.hpp"
 #include "study_test_support.hpp"
@@ -33,7 +33,7 @@ TEST(FrequencyResponse, OneDegreeOfFreedomMatchesTheClosedForm) {
     const cd x = study::frequency_response(mass, damping, stiffness, force, omega)(0);
     EXPECT_NEAR(std::abs(x - expected), 0.0, 1e-12 * std::abs(expected)) << omega;
   }
-  coupling::LinearisedCrane linear;
+  multibody::LinearisedCrane linear;
   linear.equilibrium = Eigen::VectorXd::Zero(1);
   linear.mass = mass;
   linear.damping = damping;
@@ -64,7 +64,7 @@ TEST(FrequencyResponse, TwoDegreesOfFreedomMatchCramersRuleAndTheCharacteristicP
     EXPECT_NEAR(std::abs(x(1) - x2), 0.0, 1e-12 * std::abs(x2)) << omega;
   }
   // Undamped: m1 m2 ω⁴ − (m1 k2 + m2 (k1 + k2)) ω² + k1 k2 = 0.
-  coupling::LinearisedCrane linear;
+  multibody::LinearisedCrane linear;
   linear.equilibrium = Eigen::VectorXd::Zero(2);
   linear.mass = mass;
   linear.damping = Eigen::MatrixXd::Zero(2, 2);
@@ -90,7 +90,7 @@ TEST(FrequencyResponse, HullHeaveNaturalFrequencyFollowsFromWaterplaneAndMasses)
   scene.radiation.heave_damping = 0.0;
   scene.wire->damping_ratio = 0.0;
   study::PreparedRun prepared = study::prepare_run(scene, {scene::BoomKind::rigid, 1});
-  const coupling::LinearisedCrane linear = coupling::linearise_crane(*prepared.equations, prepared.statics.z);
+  const multibody::LinearisedCrane linear = multibody::linearise_crane(*prepared.equations, prepared.statics.z);
   const double rho = scene.environment.water_density, g = scene.environment.gravity;
   const double restoring = rho * g * scene.hull->length * scene.hull->width;  // C33 of the box's waterplane
   const double cargo = scene.cargo->mass, wire = scene.wire->stiffness;
@@ -118,9 +118,9 @@ TEST(FrequencyResponse, LinearisedMassAndStiffnessMatchEnergyAndResidualDifferen
   scene::Scene scene = test::scene_file("paper_floating_crane.toml");
   scene.wave.reset();
   study::PreparedRun prepared = study::prepare_run(scene, {scene::BoomKind::modal, 16, 2, true});
-  coupling::CraneEquations& equations = *prepared.equations;
+  multibody::CraneEquations& equations = *prepared.equations;
   const Eigen::VectorXd z0 = prepared.statics.z;
-  const coupling::LinearisedCrane linear = coupling::linearise_crane(equations, z0);
+  const multibody::LinearisedCrane linear = multibody::linearise_crane(equations, z0);
   const int n = linear.size();
   const auto energy = [&](const Eigen::VectorXd& velocity) { return equations.minimal_outputs(0.0, z0, velocity).kinetic_energy; };
   Eigen::MatrixXd mass(n, n);
@@ -171,11 +171,11 @@ TEST(FrequencyResponse, HullHydrodynamicsProviderAddsToTheModelAndReplacesTheExc
   heavier.radiation.heave_damping *= std::sqrt((1.0 + scene.radiation.heave_added_mass) / (1.0 + heavier.radiation.heave_added_mass));
   request.hydrodynamics = {};
   const study::RaoResult rebuilt = study::response_amplitude_operators(heavier, request);
-  for (const auto output : {coupling::LinearOutput::hull_heave, coupling::LinearOutput::hull_pitch, coupling::LinearOutput::cargo_heave}) {
+  for (const auto output : {multibody::LinearOutput::hull_heave, multibody::LinearOutput::hull_pitch, multibody::LinearOutput::cargo_heave}) {
     for (std::size_t f = 0; f < 3; ++f) {
       const cd a = provided.models[0].response[static_cast<std::size_t>(output)][f];
       const cd b = rebuilt.models[0].response[static_cast<std::size_t>(output)][f];
-      EXPECT_NEAR(std::abs(a - b), 0.0, 1e-6 * std::abs(b)) << coupling::to_string(output) << " " << f;
+      EXPECT_NEAR(std::abs(a - b), 0.0, 1e-6 * std::abs(b)) << multibody::to_string(output) << " " << f;
     }
   }
   // A given excitation replaces the derived one.
@@ -189,15 +189,15 @@ TEST(FrequencyResponse, HullHydrodynamicsProviderAddsToTheModelAndReplacesTheExc
   scene::Scene calm = scene;
   calm.wave.reset();
   study::PreparedRun prepared = study::prepare_run(calm, {scene::BoomKind::rigid, 1});
-  const coupling::LinearisedCrane linear = coupling::linearise_crane(*prepared.equations, prepared.statics.z);
-  const coupling::OutputMap map = coupling::linear_outputs(*prepared.equations, linear);
+  const multibody::LinearisedCrane linear = multibody::linearise_crane(*prepared.equations, prepared.statics.z);
+  const multibody::OutputMap map = multibody::linear_outputs(*prepared.equations, linear);
   Eigen::VectorXcd force = Eigen::VectorXcd::Zero(linear.size());
   force.head<3>() = given;
   for (std::size_t f = 0; f < 3; ++f) {
     const double omega = request.angular_frequencies[f];
     const Eigen::VectorXcd x = study::frequency_response(linear.mass, linear.damping, linear.stiffness, force, omega);
     const Eigen::VectorXcd y = map.position.cast<cd>() * x + cd(0.0, omega) * (map.velocity.cast<cd>() * x);
-    for (int k = 0; k < coupling::linear_output_count; ++k) {
+    for (int k = 0; k < multibody::linear_output_count; ++k) {
       EXPECT_NEAR(std::abs(replaced.models[0].response[static_cast<std::size_t>(k)][f] - y(k)), 0.0, 1e-9 * std::abs(y(k)) + 1e-12);
     }
   }

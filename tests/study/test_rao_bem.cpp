@@ -21,7 +21,7 @@
 namespace ffrf {
 namespace {
 
-using coupling::LinearOutput;
+using multibody::LinearOutput;
 
 study::TimeDomainCheckRequest linear_check() {
   study::TimeDomainCheckRequest request;
@@ -37,7 +37,7 @@ void print(const study::TimeDomainCheck& check) {
     for (const auto& c : period.channels) {
       std::printf("%s T=%.0f s %-11s RAO %.6g (model %.6g) time domain %.6g: deviation %+.2e (model %+.2e), phase %+.1e rad, "
                   "residual %.1e, %d free modes, %ld steps\n",
-                  check.choice.label().c_str(), period.period, std::string(coupling::to_string(c.output)).c_str(),
+                  check.choice.label().c_str(), period.period, std::string(multibody::to_string(c.output)).c_str(),
                   c.frequency_domain, c.model_frequency_domain, c.time_domain, c.deviation(), c.model_deviation(),
                   c.phase_difference, c.fit_residual, period.fitted_modes, period.stats.steps);
     }
@@ -52,7 +52,7 @@ TEST(RaoBem, RegularWaveRunsReproduceTheBemRaosOfRigidNodalAndModalBooms) {
     print(check);
     for (const auto& period : check.periods) {
       for (const auto& c : period.channels) {
-        EXPECT_LT(std::abs(c.deviation()), 0.01) << choice.label() << " T = " << period.period << " " << coupling::to_string(c.output);
+        EXPECT_LT(std::abs(c.deviation()), 0.01) << choice.label() << " T = " << period.period << " " << multibody::to_string(c.output);
         EXPECT_LT(std::abs(c.model_deviation()), 0.01) << choice.label() << " " << period.period;
         EXPECT_LT(std::abs(c.phase_difference), 0.01) << choice.label() << " " << period.period;
       }
@@ -115,8 +115,8 @@ TEST(RaoBem, StateSpaceRadiationRunsReproduceTheirOwnRao) {
   print(check);
   for (const auto& period : check.periods) {
     for (const auto& c : period.channels) {
-      EXPECT_LT(std::abs(c.model_deviation()), 0.01) << period.period << " " << coupling::to_string(c.output);
-      EXPECT_LT(std::abs(c.deviation()), 0.02) << period.period << " " << coupling::to_string(c.output);
+      EXPECT_LT(std::abs(c.model_deviation()), 0.01) << period.period << " " << multibody::to_string(c.output);
+      EXPECT_LT(std::abs(c.deviation()), 0.02) << period.period << " " << multibody::to_string(c.output);
     }
   }
 }

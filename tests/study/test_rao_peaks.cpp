@@ -102,7 +102,7 @@ TEST(RaoPeaks, ReferenceCraneCargoSurgePeakMatchesABruteForceGrid) {
   study::RaoRequest request;
   request.models = {{scene::BoomKind::rigid, 1}};
   request.angular_frequencies = default_grid();
-  const auto surge = static_cast<std::size_t>(coupling::LinearOutput::cargo_surge);
+  const auto surge = static_cast<std::size_t>(multibody::LinearOutput::cargo_surge);
   const double coarse = largest(study::response_amplitude_operators(scene, request).models[0].response[surge]);
   request.refine_peaks = true;
   const study::RaoResult refined = study::response_amplitude_operators(scene, request);
@@ -146,8 +146,8 @@ TEST(RaoSpectrum, SignificantResponseEqualsAFineQuadratureOfTheResponseSpectrum)
   request.angular_frequencies.clear();
   for (int i = 0; i <= intervals; ++i) request.angular_frequencies.push_back(low + (high - low) * i / intervals);
   const study::RaoResult fine = study::response_amplitude_operators(scene, request);
-  for (const auto output : {coupling::LinearOutput::hull_heave, coupling::LinearOutput::hull_pitch, coupling::LinearOutput::cargo_surge,
-                            coupling::LinearOutput::cargo_heave, coupling::LinearOutput::wire_tension}) {
+  for (const auto output : {multibody::LinearOutput::hull_heave, multibody::LinearOutput::hull_pitch, multibody::LinearOutput::cargo_surge,
+                            multibody::LinearOutput::cargo_heave, multibody::LinearOutput::wire_tension}) {
     const auto k = static_cast<std::size_t>(output);
     double m0 = 0.0;
     for (int i = 0; i <= intervals; ++i) {
@@ -157,9 +157,9 @@ TEST(RaoSpectrum, SignificantResponseEqualsAFineQuadratureOfTheResponseSpectrum)
     }
     const double expected = 4.0 * std::sqrt(m0 * (high - low) / intervals / 3.0);
     const double significant = result.models[0].significant_response[k];
-    std::printf("%s: significant %.6g, Simpson on 4001 points %.6g (%+.2e)\n", std::string(coupling::to_string(output)).c_str(),
+    std::printf("%s: significant %.6g, Simpson on 4001 points %.6g (%+.2e)\n", std::string(multibody::to_string(output)).c_str(),
                 significant, expected, significant / expected - 1.0);
-    EXPECT_NEAR(significant / expected, 1.0, 5e-3) << coupling::to_string(output);
+    EXPECT_NEAR(significant / expected, 1.0, 5e-3) << multibody::to_string(output);
   }
 }
 

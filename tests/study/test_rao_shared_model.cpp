@@ -12,7 +12,7 @@
 #include <limits>
 #include <numbers>
 
-#include "coupling/linearisation.hpp"
+#include "multibody/linearisation.hpp"
 #include "study/rao.hpp"
 #include "study/rao_bem.hpp"
 #include "study/run_pipeline.hpp"
@@ -28,20 +28,20 @@ std::vector<double> frequencies(double shortest, double longest, int count) {
 }
 
 // The pre-sharing path: the crane built again in each frequency's regular wave.
-std::array<std::vector<std::complex<double>>, coupling::linear_output_count> per_frequency_builds(
+std::array<std::vector<std::complex<double>>, multibody::linear_output_count> per_frequency_builds(
     const scene::Scene& scene, const scene::BoomChoice& choice, const std::vector<double>& omegas, double a) {
   scene::Scene calm = scene;
   calm.wave.reset();
   calm.sea.reset();
   modal::ModeCache modes;
   study::PreparedRun prepared = study::prepare_run(calm, choice, &modes);
-  const coupling::LinearisedCrane linear = coupling::linearise_crane(*prepared.equations, prepared.statics.z);
-  const coupling::OutputMap outputs = coupling::linear_outputs(*prepared.equations, linear);
+  const multibody::LinearisedCrane linear = multibody::linearise_crane(*prepared.equations, prepared.statics.z);
+  const multibody::OutputMap outputs = multibody::linear_outputs(*prepared.equations, linear);
   const study::HullImpedance impedance = scene.bem ? study::bem_hull_impedance(scene, study::BemRadiationSource::file) : nullptr;
-  std::array<std::vector<std::complex<double>>, coupling::linear_output_count> response;
+  std::array<std::vector<std::complex<double>>, multibody::linear_output_count> response;
   for (const double omega : omegas) {
     const auto waved = scene::build_crane(study::with_regular_wave(scene, 2.0 * a, 2.0 * std::numbers::pi / omega, 0.0), choice, &modes);
-    const Eigen::VectorXcd force = coupling::wave_excitation(*waved, linear, omega, a);
+    const Eigen::VectorXcd force = multibody::wave_excitation(*waved, linear, omega, a);
     Eigen::MatrixXd mass = linear.mass, damping = linear.damping;
     if (impedance) {
       const Eigen::Matrix3cd z = impedance(std::complex<double>(0.0, omega));
@@ -51,7 +51,7 @@ std::array<std::vector<std::complex<double>>, coupling::linear_output_count> per
     const Eigen::VectorXcd x = study::frequency_response(mass, damping, linear.stiffness, force, omega);
     const Eigen::VectorXcd y = outputs.position.cast<std::complex<double>>() * x +
                                std::complex<double>(0.0, omega) * (outputs.velocity.cast<std::complex<double>>() * x);
-    for (int k = 0; k < coupling::linear_output_count; ++k) response[static_cast<std::size_t>(k)].push_back(y(k));
+    for (int k = 0; k < multibody::linear_output_count; ++k) response[static_cast<std::size_t>(k)].push_back(y(k));
   }
   return response;
 }
@@ -74,7 +74,7 @@ void expect_per_frequency_builds(const std::string& file, double shortest, doubl
         const double difference = std::abs(model.response[k][i] - before[k][i]);
         worst = std::max(worst, difference / std::abs(before[k][i]));
         EXPECT_LE(difference, 1e-12 * std::abs(before[k][i]))
-            << file << " " << model.choice.label() << " " << coupling::to_string(static_cast<coupling::LinearOutput>(k)) << " at ω = "
+            << file << " " << model.choice.label() << " " << multibody::to_string(static_cast<multibody::LinearOutput>(k)) << " at ω = "
             << request.angular_frequencies[i];
       }
     }
@@ -92,7 +92,7 @@ TEST(RaoSharedModel, OneModelPerBoomGivesThePerFrequencyBuildsRaosOnTheBemBarge)
 
 // The BEM barge's rigid crane linearised in calm water, and its hull impedance (the convolution's kernel).
 struct MemoryHull {
-  coupling::LinearisedCrane linear;
+  multibody::LinearisedCrane linear;
   study::HullImpedance impedance;
   double refine_below = 0.0;
 };
@@ -101,7 +101,7 @@ MemoryHull memory_hull() {
   scene.wave.reset();
   scene.sea.reset();
   study::PreparedRun prepared = study::prepare_run(scene, {scene::BoomKind::rigid, 1});
-  return {coupling::linearise_crane(*prepared.equations, prepared.statics.z),
+  return {multibody::linearise_crane(*prepared.equations, prepared.statics.z),
           study::bem_hull_impedance(scene, study::BemRadiationSource::model), 2.0 * scene.bem->radiation.frequency.back()};
 }
 

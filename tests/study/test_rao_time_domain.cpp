@@ -17,12 +17,12 @@ void expect_within_one_percent(const study::TimeDomainCheck& check) {
     for (const auto& channel : period.channels) {
       std::printf("%s T=%.1f s %s: RAO %.6g, time domain %.6g, deviation %+.3e, phase %+.2e rad, fit residual %.1e "
                   "(%d free modes, %ld steps, %.2f s)\n",
-                  check.choice.label().c_str(), period.period, std::string(coupling::to_string(channel.output)).c_str(),
+                  check.choice.label().c_str(), period.period, std::string(multibody::to_string(channel.output)).c_str(),
                   channel.frequency_domain, channel.time_domain, channel.deviation(), channel.phase_difference,
                   channel.fit_residual, period.fitted_modes, period.stats.steps, period.stats.wall_seconds);
       EXPECT_LT(std::abs(channel.deviation()), 0.01)
-          << check.choice.label() << " T = " << period.period << " s " << coupling::to_string(channel.output);
-      EXPECT_LT(std::abs(channel.phase_difference), 0.01) << period.period << " " << coupling::to_string(channel.output);
+          << check.choice.label() << " T = " << period.period << " s " << multibody::to_string(channel.output);
+      EXPECT_LT(std::abs(channel.phase_difference), 0.01) << period.period << " " << multibody::to_string(channel.output);
     }
   }
   EXPECT_TRUE(check.passed());

@@ -76,13 +76,13 @@ TEST(Recommend, CheapestPassingCandidateIsTheLeastSolverWork) {
   study::Candidate explicit_twin;
   explicit_twin.choice.kind = scene::BoomKind::modal;
   explicit_twin.choice.modes = 2;
-  explicit_twin.integrator = coupling::Integrator::arkode;
+  explicit_twin.integrator = solve::Integrator::arkode;
   explicit_twin.status = study::CandidateStatus::passed;
   explicit_twin.error = 0.009;
   explicit_twin.rhs_evaluations = 216542;
   explicit_twin.state_size = 16;                  // work 3.46e6
   study::Candidate bdf_twin = explicit_twin;
-  bdf_twin.integrator = coupling::Integrator::cvode;
+  bdf_twin.integrator = solve::Integrator::cvode;
   bdf_twin.rhs_evaluations = 20000;               // work 3.2e5
   study::Candidate larger = bdf_twin;
   larger.choice.modes = 4;
@@ -113,7 +113,7 @@ TEST(Recommend, LadderRanksByExpectedWorkWithStaticModeModelsInTheirPlace) {
   const scene::Scene scene = test::scene_file("paper_floating_crane.toml");
   const study::RecommendReasoning reasoning = study::reason_about(scene, 0.01, study::judged_outputs(scene));
   const std::vector<study::Candidate> ladder = study::candidate_ladder(scene, reasoning);
-  const auto index = [&](scene::BoomKind kind, int modes, bool static_modes, int elements, coupling::Integrator integrator) {
+  const auto index = [&](scene::BoomKind kind, int modes, bool static_modes, int elements, solve::Integrator integrator) {
     for (std::size_t i = 0; i < ladder.size(); ++i) {
       const scene::BoomChoice& c = ladder[i].choice;
       if (c.kind == kind && ladder[i].integrator == integrator && c.stiffening.value_or(scene::Stiffening::none) == scene::Stiffening::none &&
@@ -126,7 +126,7 @@ TEST(Recommend, LadderRanksByExpectedWorkWithStaticModeModelsInTheirPlace) {
   };
   for (std::size_t i = 1; i < ladder.size(); ++i) EXPECT_LE(ladder[i - 1].expected_work, ladder[i].expected_work) << i;
   using scene::BoomKind;
-  const auto cvode = coupling::Integrator::cvode, arkode = coupling::Integrator::arkode;
+  const auto cvode = solve::Integrator::cvode, arkode = solve::Integrator::arkode;
   // Static stiffening is required here, so the unstiffened variants are pruned but still ranked.
   const std::size_t k1_static = index(BoomKind::modal, 1, true, 0, cvode);
   const std::size_t k6 = index(BoomKind::modal, 6, false, 0, cvode);

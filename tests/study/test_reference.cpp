@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "coupling/error_metrics.hpp"
-#include "coupling/static_equilibrium.hpp"
+#include "multibody/error_metrics.hpp"
+#include "multibody/crane_statics.hpp"
 #include "study/recommend.hpp"
 #include "study/reference.hpp"
 #include "study_test_support.hpp"
@@ -38,10 +38,10 @@ TEST(Reference, ReferenceSceneReferenceIsConvergedByItsOwnCheck) {
   // Re-run the previous level independently and compare with the reference.
   const auto& previous = reference.levels[reference.levels.size() - 2];
   auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, previous.elements, 0, false});
-  coupling::IntegratorSettings settings = reference.settings;
+  multibody::RunSettings settings = reference.settings;
   settings.relative_tolerance = settings.absolute_tolerance = previous.relative_tolerance;
-  const auto run = coupling::integrate(*equations, coupling::solve_static_equilibrium(*equations, equations->initial_guess()).z, settings);
-  const double change = coupling::compare_runs(run, reference.run.result, reference.window_start).worst_normalized_rms();
+  const auto run = multibody::simulate(*equations, multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z, settings);
+  const double change = multibody::compare_runs(run, reference.run.result, reference.window_start).worst_normalized_rms();
   EXPECT_NEAR(change, reference.levels.back().change, 1e-6 + 1e-3 * change);
 }
 

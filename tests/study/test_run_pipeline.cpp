@@ -69,7 +69,7 @@ TEST(RunPipeline, CompareStartsTheReferenceFromTheLiftedStateLikeTheModels) {
   }
   // The same drop on the reference's mesh (N = 16) at a looser tolerance agrees closely.
   ASSERT_EQ(c.runs[2].choice.label(), "nodal N=16");
-  EXPECT_LT(c.errors[2][coupling::OutputChannel::cargo_heave].normalized_rms, 1e-3);
+  EXPECT_LT(c.errors[2][multibody::OutputChannel::cargo_heave].normalized_rms, 1e-3);
   EXPECT_LT(c.worst[2].error, 1e-3);
 }
 

@@ -1,5 +1,5 @@
 // Model and workspace apart: CraneEquations made from ONE shared crane model
-// (scene/crane_model_cache.hpp, coupling/crane_system.hpp) and integrated by several threads at
+// (scene/crane_model_cache.hpp, multibody/crane_system.hpp) and integrated by several threads at
 // once give, bit for bit, what a run on a model of its own gives serially (the second method: the
 // unshared path, build_crane → its own model). Nodal and modal booms on the reference scene, and
 // the BEM barge crane with Cummins convolution radiation, whose radiation memory is run state that
@@ -18,7 +18,7 @@ namespace {
 
 using namespace ffrf;
 
-void expect_identical(const coupling::RunResult& a, const coupling::RunResult& b, const std::string& what) {
+void expect_identical(const multibody::RunResult& a, const multibody::RunResult& b, const std::string& what) {
   SCOPED_TRACE(what);
   ASSERT_EQ(a.time.size(), b.time.size());
   ASSERT_EQ(a.samples.size(), b.samples.size());
@@ -27,7 +27,7 @@ void expect_identical(const coupling::RunResult& a, const coupling::RunResult& b
   EXPECT_EQ(a.stats.jacobian_evaluations, b.stats.jacobian_evaluations);
   EXPECT_EQ(a.stats.newton_iterations, b.stats.newton_iterations);
   for (std::size_t i = 0; i < a.samples.size(); ++i) {
-    const coupling::CraneOutputs &x = a.samples[i], &y = b.samples[i];
+    const multibody::CraneOutputs &x = a.samples[i], &y = b.samples[i];
     ASSERT_EQ(a.time[i], b.time[i]) << i;
     // Bitwise: == on every number (no tolerance); the first difference stops the comparison.
     const bool same = x.hull == y.hull && x.cargo == y.cargo && x.tip_deflection == y.tip_deflection &&
@@ -44,7 +44,7 @@ void expect_identical(const coupling::RunResult& a, const coupling::RunResult& b
 void check_concurrent_runs(const scene::Scene& scene, const scene::BoomChoice& choice, double duration, int threads) {
   study::DynamicsRequest request;
   request.duration = duration;
-  const coupling::IntegratorSettings settings = study::integrator_settings(scene, request);
+  const multibody::RunSettings settings = study::integrator_settings(scene, request);
   const study::ModelRun serial = study::run_model(scene, choice, settings);
 
   scene::CraneModelCache models(scene);

@@ -40,7 +40,7 @@ TEST(Stability, SpinUpUnstiffenedDivergesOnceTheSpinPassesTheFirstBendingFrequen
       continue;
     }
     ASSERT_TRUE(run.failure);
-    ASSERT_EQ(run.failure->kind, coupling::FailureKind::divergence);
+    ASSERT_EQ(run.failure->kind, solve::FailureKind::divergence);
     const double t = run.failure->time;
     EXPECT_NEAR(run.spin_rate_at_failure, spin_rate(run.spin, t), 1e-9);
     // The stiffness K(1 − Ω²/ω1²) collapses as Ω(t) reaches ω1; the 0.5 L bound is passed once the
@@ -58,7 +58,7 @@ TEST(Stability, SpinUpUnstiffenedDivergesOnceTheSpinPassesTheFirstBendingFrequen
   // BDF 3–5 on the undamped boom: the step size collapses (several times the steps of A-stable BDF 2).
   EXPECT_GT(map.bdf_order->step_ratio, 3.0);
   // Index-1 drifts; Baumgarte's feedback holds the clamp better; minimal coordinates have no constraint.
-  using coupling::Integrator;
+  using solve::Integrator;
   EXPECT_EQ(map.drift->max_drift(Integrator::cvode), 0.0);
   EXPECT_GT(map.drift->max_drift(Integrator::index1), 3.0 * map.drift->max_drift(Integrator::baumgarte));
   // The explicit limit falls as the mesh is refined (ω_max grows).

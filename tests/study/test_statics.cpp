@@ -14,8 +14,8 @@
 #include <numbers>
 #include <string>
 
-#include "coupling/planar.hpp"
-#include "coupling/simulation.hpp"
+#include "multibody/planar.hpp"
+#include "multibody/crane_run.hpp"
 #include "scene/crane_builder.hpp"
 #include "study/statics.hpp"
 #include "study_test_support.hpp"
@@ -73,29 +73,29 @@ void sweep_hull(const std::string& file, Tally& tally) {
       const scene::BoomChoice choice{scene::BoomKind::nodal, scene.boom.mesh.element_count, 0, false};
       try {
         const study::StaticsResult result = study::solve_statics(scene, choice);
-        const coupling::CraneOutputs& o = result.statics.outputs;
+        const multibody::CraneOutputs& o = result.statics.outputs;
         EXPECT_EQ(expect, Expect::equilibrium) << label << ": solved where the hand estimate says it cannot be";
         const double weight = scene.cargo->mass * g;
         EXPECT_NEAR(o.wire_tension, weight, 1e-7 * weight) << label;
         EXPECT_NEAR(result.wire_stretch, weight / stiffness, 1e-7 * weight / stiffness + 1e-12) << label;
         const Eigen::Vector2d keel_mid =
-            o.hull.head<2>() + coupling::rotation(o.hull.z()) * Eigen::Vector2d(hull.g1_aft_of_mid_length, -hull.g1_above_keel);
+            o.hull.head<2>() + multibody::rotation(o.hull.z()) * Eigen::Vector2d(hull.g1_aft_of_mid_length, -hull.g1_above_keel);
         const double displaced = rho * hull.length * hull.width * (-keel_mid.y()) / std::cos(o.hull.z());
         const double total = hull.mass + scene.boom.mesh.total_mass() + scene.cargo->mass;
         EXPECT_NEAR(displaced, total, 1e-9 * total) << label;
         EXPECT_LT(result.statics.scaled_residual, 1e-9) << label;
         ++tally.solved;
-      } catch (const coupling::SolverFailure& failure) {
+      } catch (const solve::SolverFailure& failure) {
         ++tally.refused;
         const std::string said = failure.cause();
         switch (expect) {
           case Expect::deck_under:
-            EXPECT_TRUE(failure.kind() == coupling::FailureKind::deck_submerged ||
-                        (failure.kind() == coupling::FailureKind::newton_divergence && said.find("the hull's") != std::string::npos))
+            EXPECT_TRUE(failure.kind() == solve::FailureKind::deck_submerged ||
+                        (failure.kind() == solve::FailureKind::newton_divergence && said.find("the hull's") != std::string::npos))
                 << label << ": " << failure.what();
             break;
           case Expect::cargo_in_water:
-            EXPECT_EQ(failure.kind(), coupling::FailureKind::cargo_in_water) << label << ": " << failure.what();
+            EXPECT_EQ(failure.kind(), solve::FailureKind::cargo_in_water) << label << ": " << failure.what();
             break;
           default:
             ADD_FAILURE() << label << ": no equilibrium where the hand estimate finds one: " << failure.what();
@@ -140,11 +140,11 @@ TEST(Statics, AHullThatCannotFloatTheLoadIsNamed) {
   auto model = scene::build_crane_model(scene, nodal::NodalCoordinates(scene::boom_beam(scene, 4)));
   const scene::Hull& hull = *scene.hull;
   model.hull.mass = 1.2 * scene.environment.water_density * hull.length * hull.width * hull.depth;
-  auto equations = coupling::make_crane_equations(std::move(model));
+  auto equations = multibody::make_crane_equations(std::move(model));
   try {
-    coupling::solve_static_equilibrium(*equations, equations->initial_guess());
+    multibody::solve_static_equilibrium(*equations, equations->initial_guess());
     ADD_FAILURE() << "a hull heavier than its buoyancy found an equilibrium";
-  } catch (const coupling::SolverFailure& failure) {
+  } catch (const solve::SolverFailure& failure) {
     const std::string said = failure.what();
     EXPECT_NE(said.find("the hull's heave force"), std::string::npos) << said;
     EXPECT_NE(said.find("cannot float the load"), std::string::npos) << said;
@@ -158,14 +158,14 @@ TEST(Statics, AHullThatCannotFloatTheLoadIsNamed) {
 TEST(Statics, ContinuationFromAPoorStartReachesTheSameEquilibrium) {
   const scene::Scene scene = test::scene_file("paper_floating_crane.toml");
   auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, 16, 0, false});
-  coupling::StaticSolvePath direct_path, poor_path;
-  const coupling::StaticEquilibrium direct =
-      coupling::solve_static_equilibrium(*equations, equations->initial_guess(), direct_path);
+  multibody::StaticSolvePath direct_path, poor_path;
+  const multibody::StaticEquilibrium direct =
+      multibody::solve_static_equilibrium(*equations, equations->initial_guess(), direct_path);
   Eigen::VectorXd poor = equations->initial_guess();
   poor(1) -= 3.0;
   poor(2) += 0.05;
   poor(equations->cargo_offset() + 1) += 20.0;
-  const coupling::StaticEquilibrium reached = coupling::solve_static_equilibrium(*equations, poor, poor_path);
+  const multibody::StaticEquilibrium reached = multibody::solve_static_equilibrium(*equations, poor, poor_path);
   EXPECT_FALSE(direct_path.by_continuation());
   EXPECT_TRUE(poor_path.by_continuation());
   EXPECT_NEAR(reached.outputs.cargo.y(), direct.outputs.cargo.y(), 1e-8);
@@ -181,8 +181,8 @@ TEST(Statics, CargoBelowTheWaterIsNamed) {
   try {
     study::solve_statics(scene, {scene::BoomKind::nodal, 16, 0, false});
     ADD_FAILURE() << "a cargo in the water was accepted";
-  } catch (const coupling::SolverFailure& failure) {
-    EXPECT_EQ(failure.kind(), coupling::FailureKind::cargo_in_water) << failure.what();
+  } catch (const solve::SolverFailure& failure) {
+    EXPECT_EQ(failure.kind(), solve::FailureKind::cargo_in_water) << failure.what();
   }
 }
 

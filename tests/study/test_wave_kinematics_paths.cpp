@@ -9,7 +9,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "coupling/error_metrics.hpp"
+#include "multibody/error_metrics.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/error_measure.hpp"
 #include "study/run_pipeline.hpp"
@@ -48,13 +48,13 @@ TEST(WaveKinematicsPaths, RecordedSeaRunsAsTheComponentSums) {
   const long recorded_loads = a.wave_kinematics.hull_loads.recorded, fallbacks = a.wave_kinematics.hull_loads.exact;
   EXPECT_GT(recorded_loads, 20 * fallbacks);  // nearly every load from the record
   EXPECT_EQ(b.wave_kinematics.hull_loads.recorded, 0);
-  const coupling::RunErrors errors = coupling::compare_runs(a.result, b.result, study::error_window(recorded, 600.0));
-  for (const coupling::OutputChannel channel : study::judged_outputs(recorded)) {
-    EXPECT_LE(errors[channel].normalized_rms, 1e-4) << coupling::channel_name(channel);
+  const multibody::RunErrors errors = multibody::compare_runs(a.result, b.result, study::error_window(recorded, 600.0));
+  for (const multibody::OutputChannel channel : study::judged_outputs(recorded)) {
+    EXPECT_LE(errors[channel].normalized_rms, 1e-4) << multibody::channel_name(channel);
   }
   const study::WorstError worst = study::worst_error(errors, study::judged_outputs(recorded));
   std::printf("recorded vs exact sea, 600 s rigid: worst judged error %.2g (%s); %ld loads recorded, %ld exact\n",
-              worst.error, std::string(coupling::channel_name(worst.channel)).c_str(), recorded_loads, fallbacks);
+              worst.error, std::string(multibody::channel_name(worst.channel)).c_str(), recorded_loads, fallbacks);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // Work and memory limits (study/work_limits.hpp) against the models they guard: the elastic
 // coordinate count and state size estimates against the built crane, the memory limit's edge, the
 // output-sample and fixed-step limits of the integrator settings, the reference's finest level;
-// and a run whose cargo dips into the sea is named by the monitor (coupling/run_monitor.hpp).
+// and a run whose cargo dips into the sea is named by the monitor (multibody/run_monitor.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -61,7 +61,7 @@ TEST(WorkLimits, OutputSamplesAndFixedStepsAreLimitedBeforeAnyRun) {
     EXPECT_NE(error.problem().find("valid range [0.05, 50000] s"), std::string::npos) << error.problem();
   }
   request.duration = 100.0;
-  request.integrator = coupling::Integrator::generalized_alpha;
+  request.integrator = solve::Integrator::generalized_alpha;
   request.fixed_step = 1e-6;  // 1e8 steps
   try {
     (void)integrator_settings(scene, request);
@@ -95,14 +95,14 @@ TEST(WaterDetection, CargoOnALongWireDipsIntoTheWave) {
   request.duration = 40.0;
   const ModelRun run = run_model(scene, {scene::BoomKind::rigid, 1}, integrator_settings(scene, request));
   const auto found = std::find_if(run.result.detections.begin(), run.result.detections.end(),
-                                  [](const coupling::Detection& d) { return d.kind == coupling::FailureKind::cargo_in_water; });
+                                  [](const solve::Detection& d) { return d.kind == solve::FailureKind::cargo_in_water; });
   ASSERT_NE(found, run.result.detections.end());
   EXPECT_GT(found->time, 0.0);
   EXPECT_GT(found->value, 0.0);
   // The same scene with the 20 m wire stays dry.
   scene.wire->unstretched_length = 20.0;
   const ModelRun dry = run_model(scene, {scene::BoomKind::rigid, 1}, integrator_settings(scene, request));
-  for (const coupling::Detection& d : dry.result.detections) EXPECT_NE(d.kind, coupling::FailureKind::cargo_in_water);
+  for (const solve::Detection& d : dry.result.detections) EXPECT_NE(d.kind, solve::FailureKind::cargo_in_water);
 }
 
 }  // namespace

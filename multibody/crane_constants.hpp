@@ -1,0 +1,140 @@
+// The immutable half of the crane equations (Pinocchio's Model; multibody/crane_system.hpp): the
+// CraneModel and the constant data derived from it alone, computed once and shared read-only by
+// every CraneEquations made from it (any thread):
+//  * the factorization of the constant elastic mass M_ff (sparse LDLᵀ for nodal coordinates, dense
+//    for modal ones), M_ff as a dense block, and M_ff⁻¹S̄ᵀ, M_ff⁻¹cᵀ (the constant columns of
+//    M_ff⁻¹M_fR in the Schur complement, crane_system_minimal.ipp);
+//  * the Newton blocks' structure (bordered band for a nodal boom, dense otherwise) and the elastic
+//    coordinates that move the wire's attachment (crane_system_jacobian.ipp);
+//  * the coordinates' typical sizes (tolerances and difference increments).
+// Template definitions; included only through multibody/crane_system_impl.hpp.
+#pragma once
+
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cstdlib>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "multibody/crane_system.hpp"
+
+namespace ffrf::multibody::detail {
+
+template <class Matrix>
+using MassFactor = std::conditional_t<std::is_base_of_v<Eigen::SparseMatrixBase<Matrix>, Matrix>,
+                                      Eigen::SimplicialLDLT<Matrix>, Eigen::LDLT<Eigen::MatrixXd>>;
+
+template <fem::ElasticCoordinates Coords>
+class CraneConstants final : public SharedCraneModel, public std::enable_shared_from_this<CraneConstants<Coords>> {
+ public:
+  explicit CraneConstants(CraneModel<Coords> crane);
+
+  std::unique_ptr<CraneEquations> equations() const override;  // multibody/crane_system.cpp
+  std::shared_ptr<const SharedCraneModel> in_waters(const HullModel& hull,
+                                                    const std::optional<sea::WaveField>& wave) const override;  // ditto
+  int elastic_size() const override { return n; }
+
+  bool hull_free() const { return !model.hull.fixed; }
+  bool has_cargo() const { return model.cargo.present; }
+  int minimal_size() const { return elastic_at + n; }
+  int full_size() const { return elastic_at + 3 + n; }
+
+  CraneModel<Coords> model;
+  int n;           // elastic coordinates
+  int cargo_at;    // index of the cargo block (0 with a fixed hull, 3 otherwise)
+  int elastic_at;  // minimal: index of η; full: index of the boom frame (R_B, θ_B) (cargo_at + 3 or + 0)
+  MassFactor<typename Coords::Matrix> elastic_mass_factor;
+  Eigen::MatrixXd elastic_mass_dense;  // M_ff as a dense block of the full mass matrix
+  Eigen::Matrix<double, Eigen::Dynamic, 2> mass_inverse_shape;  // M_ff⁻¹ S̄ᵀ
+  Eigen::VectorXd mass_inverse_cross;                           // M_ff⁻¹ cᵀ (c = u0_cross_shape)
+  BandStructure minimal_structure, full_structure;
+  std::vector<int> tip_columns;  // nonzero columns of the tip's shape rows
+  // Typical sizes: of each elastic coordinate, and of every minimal and full coordinate (the
+  // difference increments' floor).
+  Eigen::VectorXd elastic_scale, minimal_scale, full_scale;
+
+ private:
+  void find_structures();
+};
+
+template <fem::ElasticCoordinates Coords>
+CraneConstants<Coords>::CraneConstants(CraneModel<Coords> crane)
+    : model(std::move(crane)),
+      n(static_cast<int>(model.boom.elastic_size())),
+      cargo_at(model.hull.fixed ? 0 : 3),
+      elastic_at(cargo_at + (model.cargo.present ? 3 : 0)) {
+  // The hull's mass is read whole by the residual and the Jacobian but by its lower triangle in the
+  // LDLᵀ of the minimal-coordinate accelerations: one matrix for every path needs a symmetric added
+  // mass (scene/scene_loader.cpp makes the BEM files' symmetric when they are read).
+  if (model.hull.radiation_memory) {
+    const Eigen::Matrix3d& added = model.hull.radiation_memory->added_mass;
+    const double asymmetry = (added - added.transpose()).cwiseAbs().maxCoeff();
+    if (!(asymmetry <= 1e-12 * added.cwiseAbs().maxCoeff())) {
+      throw std::invalid_argument("the hull's radiation added mass is not symmetric (largest |A_ij − A_ji| = " +
+                                  std::to_string(asymmetry) + "): give its symmetric part (hydro::symmetrise_added_mass)");
+    }
+  }
+  // Typical size of each elastic coordinate: the η_i that moves some nodal DOF by 1 cm (1 cm or
+  // 0.01 rad for nodal coordinates; 0.01 / max|Φ e_i| for mass-normalized modal ones, whose units
+  // are m·√kg), so tolerances mean the same physical displacement in every coordinate set.
+  elastic_scale.resize(n);
+  for (int i = 0; i < n; ++i) {
+    const double largest = model.boom.coords().to_nodal(Eigen::VectorXd::Unit(n, i)).cwiseAbs().maxCoeff();
+    elastic_scale(i) = largest > 0.0 ? 0.01 / largest : 0.01;
+  }
+  elastic_mass_dense = Eigen::MatrixXd(model.boom.coords().mass_ff());
+  if (n > 0) {
+    elastic_mass_factor.compute(model.boom.coords().mass_ff());
+    if (elastic_mass_factor.info() != Eigen::Success) {
+      throw std::runtime_error("the boom's elastic mass matrix is not positive definite: check the section's mass per length");
+    }
+    const Eigen::MatrixXd shape_t = model.boom.coords().shape_integral().transpose();
+    mass_inverse_shape = elastic_mass_factor.solve(shape_t);
+    const Eigen::VectorXd cross_t = model.boom.coords().u0_cross_shape().transpose();
+    mass_inverse_cross = elastic_mass_factor.solve(cross_t);
+  }
+  find_structures();
+}
+
+template <fem::ElasticCoordinates Coords>
+void CraneConstants<Coords>::find_structures() {
+  for (int j = 0; j < n; ++j) {
+    if (model.boom_tip.shape.col(j).squaredNorm() > 0.0) tip_columns.push_back(j);
+  }
+  int bandwidth = 0;
+  bool banded = false;
+  if constexpr (std::is_base_of_v<Eigen::SparseMatrixBase<typename Coords::Matrix>, typename Coords::Matrix>) {
+    const auto widen = [&bandwidth](const typename Coords::Matrix& m) {
+      for (int k = 0; k < m.outerSize(); ++k) {
+        for (typename Coords::Matrix::InnerIterator it(m, k); it; ++it) {
+          bandwidth = std::max(bandwidth, static_cast<int>(std::abs(it.row() - it.col())));
+        }
+      }
+    };
+    widen(model.boom.coords().mass_ff());
+    widen(model.boom.coords().stiffness());
+    widen(model.boom.coords().skew_ff());
+    if (model.boom.has_prestress()) widen(model.boom.prestress_stiffness());
+    if (model.boom.has_centrifugal_stiffening()) widen(model.boom.centrifugal_stiffness());
+    if (!tip_columns.empty()) bandwidth = std::max(bandwidth, tip_columns.back() - tip_columns.front());
+    banded = 2 * bandwidth + 1 < n;  // otherwise the band saves nothing
+  }
+  minimal_structure = banded ? BandStructure{elastic_at, n, bandwidth, bandwidth} : BandStructure{elastic_at + n, 0, 0, 0};
+  full_structure = banded ? BandStructure{elastic_at + 3, n, bandwidth, bandwidth} : BandStructure{elastic_at + 3 + n, 0, 0, 0};
+  // Minimal coordinates: 1 m for positions, 0.01 rad for the hull's and the cargo's pitch, then the
+  // elastic ones. Full coordinates: hull and cargo as in minimal coordinates, the boom frame like
+  // the hull (1 m, 0.01 rad), then the elastic coordinates.
+  minimal_scale = Eigen::VectorXd::Constant(minimal_size(), 1.0);
+  if (hull_free()) minimal_scale(2) = 0.01;
+  if (has_cargo()) minimal_scale(cargo_at + 2) = 0.01;
+  minimal_scale.tail(n) = elastic_scale;
+  full_scale.resize(full_size());
+  full_scale.head(elastic_at) = minimal_scale.head(elastic_at);
+  full_scale.segment<3>(elastic_at) = Eigen::Vector3d(1.0, 1.0, 0.01);
+  full_scale.tail(n) = minimal_scale.tail(n);
+}
+
+}  // namespace ffrf::multibody::detail

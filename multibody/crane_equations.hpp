@@ -1,0 +1,97 @@
+// The crane's equations as the solvers see them (solve/second_order_system.hpp), and what the crane
+// adds for its own recorders, detectors and studies: the outputs of a state, the wire's stretch, the
+// layout of its coordinates and the hull loads' counters.
+//  * Minimal coordinates z = (hull x, y, θ | cargo x, y, θ | η): the boom frame is eliminated by
+//    the clamp at B. Without hull DOFs when the hull is held fixed.
+//  * Full coordinates q = (hull | cargo | boom R_B, θ_B, η) with the clamp as 3 constraints
+//    C(q, t) = 0 and Lagrange multipliers: M(q) q̈ = Q(q, q̇, t) − C_qᵀ λ (paper eqs. 17, 22, 31–34).
+//    With a driven base (prescribed motion) C depends on t: C_q v + C_t = 0 at velocity level.
+// The hull block is absent when the base is held or driven, the cargo block when there is no cargo.
+// The one event function is the wire's stretch ℓ − L0 (slack below zero), present with a cargo.
+#pragma once
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "solve/second_order_system.hpp"
+
+namespace ffrf::sea {
+class IncidentWaveRecord;  // sea/incident_wave_record.hpp
+}  // namespace ffrf::sea
+
+namespace ffrf::multibody {
+
+using solve::BandStructure;
+using solve::BorderedBandMatrix;
+using solve::ConstraintMatrix;
+using solve::ConstraintVector;
+using solve::MassMatrixError;
+using solve::SecondOrderJacobian;
+
+// One output sample: what a time-series row and the static report show.
+struct CraneOutputs {
+  Eigen::Vector3d hull = Eigen::Vector3d::Zero();        // G1 (or hub) x [m], y [m], pitch [rad]
+  Eigen::Vector3d cargo = Eigen::Vector3d::Zero();       // G2 x [m], y [m], pitch [rad]
+  Eigen::Vector2d tip_deflection = Eigen::Vector2d::Zero();  // elastic (u, v) at A′ in the boom frame [m]
+  double wire_tension = 0.0;                             // [N]
+  double wire_length = 0.0;                              // [m]
+  Eigen::Vector3d joint_reaction = Eigen::Vector3d::Zero();  // on the boom at B: Fx, Fy [N] (global), M [N m]
+  double root_axial_force = 0.0;                         // boom axial force at B, tension > 0 [N]
+  double constraint_residual = 0.0;                      // |C(q)| (0 in minimal coordinates) [m]
+  double kinetic_energy = 0.0;                           // [J] (added mass included)
+  double gravity_energy = 0.0;                           // [J]
+  double strain_energy = 0.0;                            // [J]
+  double wire_energy = 0.0;                              // [J]
+  double spring_energy = 0.0;                            // mooring + support springs [J]
+};
+
+// How this system's hull loads read the incident wave so far: from the record of the sea, or by
+// the exact component sums where the record could not answer (outside its patches or its time).
+struct HullLoadCounts {
+  long recorded = 0;
+  long exact = 0;  // with a record: the fallbacks
+};
+
+class CraneEquations : public solve::SecondOrderSystem {
+ public:
+  // The outputs at a state: minimal coordinates (the joint reaction solved from the equations of
+  // motion), full coordinates with the multipliers λ, or minimal coordinates with the accelerations
+  // z̈ known (an integrator's interpolant: the reaction from them, without solving; by default
+  // minimal_outputs(t, z, ż)). Sampling also records the hull's velocity for the radiation memory.
+  virtual CraneOutputs minimal_outputs(double t, ConstRef z, ConstRef z_dot) = 0;
+  virtual CraneOutputs full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) = 0;
+  virtual CraneOutputs minimal_outputs_with_accelerations(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot) {
+    (void)z_ddot;
+    return minimal_outputs(t, z, z_dot);
+  }
+  double minimal_kinetic_energy(double t, ConstRef z, ConstRef z_dot) override {
+    return minimal_outputs(t, z, z_dot).kinetic_energy;
+  }
+
+  // Wire slack indicator ℓ − L0 [m]; 1 m when there is no wire.
+  virtual double wire_stretch_minimal(double t, ConstRef z) = 0;
+  virtual double wire_stretch_full(ConstRef q) = 0;
+  // The event function: the wire's stretch, with a cargo on the wire.
+  int event_count() const override { return cargo_offset() >= 0 ? 1 : 0; }
+  void minimal_events(double t, ConstRef z, Ref g) override { g(0) = wire_stretch_minimal(t, z); }
+  void full_events(double, ConstRef q, Ref g) override { g(0) = wire_stretch_full(q); }
+
+  // Index of the cargo's (x, y, θ) in the minimal coordinates; −1 without a cargo.
+  virtual int cargo_offset() const = 0;
+  // Elastic coordinate count (0 for the rigid boom).
+  virtual int elastic_size() const = 0;
+  // Hull-load evaluations in a wave so far, by path (zeros without a wave).
+  virtual HullLoadCounts hull_load_counts() const { return {}; }
+  // The record of the sea the hull loads read (nullptr: component sums), and why not when absent.
+  virtual const sea::IncidentWaveRecord* wave_record() const { return nullptr; }
+  virtual std::string exact_kinematics_reason() const { return {}; }
+
+  // The static solver's view of the rows: hull (surge, heave, pitch) when it floats, cargo (x, y, θ),
+  // then the boom's elastic coordinates, each with what to check when it stays out of balance.
+  solve::ResidualRow residual_row(int row) const override;
+  std::string static_model_check() const override;
+  std::vector<int> rigid_body_blocks() const override;
+};
+
+}  // namespace ffrf::multibody

@@ -1,0 +1,261 @@
+// Crane equations, part 3: the structured linearizations the Newton solvers use
+// (solve/second_order_jacobian.hpp) and the outputs from known accelerations.
+// Columns of K = −∂(Q − M a)/∂x and D = −∂(Q − M a)/∂ẋ by three means:
+//  * the elastic columns analytically: the boom's own terms (FloatingFrameBody::add_elastic_derivatives:
+//    stiffness, damping, stiffening, quadratic velocity, gravity, inertia), mapped to the hull rows
+//    by J_rᵀ in minimal coordinates — no evaluation of the equations;
+//  * the wire's share of the columns whose coordinates move the tip (the nonzero columns of the tip's
+//    shape rows: the last node's DOFs of a nodal boom, every modal coordinate) by forward differences
+//    of the wire's loads alone;
+//  * the dense columns (hull, cargo and, in full coordinates, the boom frame) by forward differences
+//    of the whole residual: 12 (minimal) or 18 (full) evaluations whatever the element count.
+// Increments: δ = f·s_j for positions and f·max(|ẋ_j|, s_j) for velocities, s_j the coordinate's
+// typical size (coordinate_scale(): 1 m, 0.01 rad, the elastic ones' 1 cm), f = 10⁻⁷ for the whole
+// residual and 10⁻⁶ for the wire's loads alone (fewer large terms, so less round-off). These keep the
+// Newton matrix within ~10⁻⁶ of central differences (tests/coupling/test_newton_jacobians.cpp); larger
+// increments for the whole residual made IDA's step-size control wander (twice the error-test
+// failures at N = 64).
+#pragma once
+
+#include <algorithm>
+
+namespace ffrf::multibody::detail {
+
+template <fem::ElasticCoordinates Coords>
+Eigen::Matrix3d CraneSystem<Coords>::mount_jacobian() const {
+  Eigen::Matrix3d jr = Eigen::Matrix3d::Identity();
+  jr(0, 2) = -mount_offset_.y();
+  jr(1, 2) = mount_offset_.x();
+  return jr;
+}
+
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::minimal_residual(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, Ref out) {
+  minimal_forces(t, z, z_dot, true);
+  const auto eta_ddot = z_ddot.tail(n_);
+  out.tail(n_) = elastic_rhs_;
+  out.tail(n_).noalias() -= m_.boom.coords().mass_ff() * eta_ddot;
+  if (hull_free()) {
+    const Eigen::Matrix3d jr = mount_jacobian();
+    const Eigen::Matrix3d hull_mass = hull_rigid_inertia() + jr.transpose() * boom_reference_mass_ * jr;
+    const Eigen::Vector3d hull_a = z_ddot.head<3>();
+    out.head<3>() = hull_rhs_ - hull_mass * hull_a;
+    out.head<3>().noalias() -= hull_elastic_mass_ * eta_ddot;
+    out.tail(n_).noalias() -= hull_elastic_mass_.transpose() * hull_a;
+  }
+  if (has_cargo()) out.segment<3>(cargo_at_) = cargo_force_ - cargo_inertia().cwiseProduct(z_ddot.segment<3>(cargo_at_));
+}
+
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::minimal_wire_residual(double t, ConstRef z, ConstRef z_dot, Ref out) {
+  out.setZero();
+  if (!has_cargo()) return;
+  Eigen::Vector3d hull_q, hull_v;
+  split_minimal(t, z, z_dot, hull_q, hull_v);
+  mount_boom(hull_q, hull_v);
+  boom_q_.tail(n_) = z.tail(n_);
+  boom_v_.tail(n_) = z_dot.tail(n_);
+  wire_boom_force_.setZero();
+  Eigen::Vector3d cargo = Eigen::Vector3d::Zero();
+  add_wire_loads(z.segment<3>(cargo_at_), z_dot.segment<3>(cargo_at_), false, wire_boom_force_, cargo);
+  if (hull_free()) out.head<3>() = mount_jacobian().transpose() * wire_boom_force_.head<3>();
+  out.segment<3>(cargo_at_) = cargo;
+  out.tail(n_) = wire_boom_force_.tail(n_);
+}
+
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::full_residual(double t, ConstRef q, ConstRef v, ConstRef v_dot, Ref out) {
+  full_forces(t, q, v, out);
+  full_mass_times(q, v_dot, full_inertia_);
+  out -= full_inertia_;
+}
+
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::full_wire_residual(ConstRef q, ConstRef v, Ref out) {
+  out.setZero();
+  if (!has_cargo()) return;
+  boom_q_ = q.tail(3 + n_);
+  boom_v_ = v.tail(3 + n_);
+  Eigen::Vector3d cargo = Eigen::Vector3d::Zero();
+  add_wire_loads(q.segment<3>(cargo_at_), v.segment<3>(cargo_at_), false, out.tail(3 + n_), cargo);
+  out.segment<3>(cargo_at_) = cargo;
+}
+
+// The shared steps of both Jacobians: difference the wire's share over the tip columns (added) and
+// the whole residual over the dense leading columns (assigned). `residual(x, x_dot, out)` and
+// `wire(x, x_dot, out)` evaluate at the given state; `x`, `x_dot` are the state (restored on return).
+constexpr double dense_increment = 1e-7;  // × size: the whole residual (hull loads ~1e8 N)
+constexpr double wire_increment = 1e-6;   // × size: the wire's loads alone
+
+template <class Residual, class Wire>
+void difference_columns(int size, int dense_columns, int elastic_offset, const std::vector<int>& tip_columns, bool wire_present,
+                        const Eigen::VectorXd& scale, Eigen::VectorXd& x, Eigen::VectorXd& x_dot, Eigen::VectorXd& base,
+                        Eigen::VectorXd& shifted, Residual residual, Wire wire, SecondOrderJacobian& out) {
+  // Positions: a fraction of the coordinate's typical size, not of its value (the loads depend on
+  // differences of positions ~100 m from the origin; an increment ∝ |x| would be 100× too coarse for
+  // the 20 m wire). Velocities: of their value or typical size.
+  const auto position_increment = [&scale](int j, double factor) { return factor * scale(j); };
+  const auto rate_increment = [&scale](int j, double value, double factor) { return factor * std::max(std::abs(value), scale(j)); };
+  const auto column = [&](BorderedBandMatrix& target, int col, double delta, bool assign) {
+    for (int i = 0; i < size; ++i) {
+      const double value = -(shifted(i) - base(i)) / delta;
+      if (assign) {
+        target.at(i, col) = value;
+      } else if (value != 0.0 && target.in_structure(i, col)) {  // the wire moves only tip and border rows
+        target.at(i, col) += value;
+      }
+    }
+  };
+  if (wire_present && !tip_columns.empty()) {
+    wire(x, x_dot, base);
+    for (const int j : tip_columns) {
+      const int col = elastic_offset + j;
+      const double saved = x(col), saved_rate = x_dot(col);
+      const double dz = position_increment(col, wire_increment), dv = rate_increment(col, saved_rate, wire_increment);
+      x(col) = saved + dz;
+      wire(x, x_dot, shifted);
+      x(col) = saved;
+      column(out.stiffness, col, dz, false);
+      x_dot(col) = saved_rate + dv;
+      wire(x, x_dot, shifted);
+      x_dot(col) = saved_rate;
+      column(out.damping, col, dv, false);
+    }
+  }
+  residual(x, x_dot, base);
+  for (int col = 0; col < dense_columns; ++col) {
+    const double saved = x(col), saved_rate = x_dot(col);
+    const double dz = position_increment(col, dense_increment), dv = rate_increment(col, saved_rate, dense_increment);
+    x(col) = saved + dz;
+    residual(x, x_dot, shifted);
+    x(col) = saved;
+    column(out.stiffness, col, dz, true);
+    x_dot(col) = saved_rate + dv;
+    residual(x, x_dot, shifted);
+    x_dot(col) = saved_rate;
+    column(out.damping, col, dv, true);
+  }
+}
+
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::minimal_jacobian(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, SecondOrderJacobian& out) {
+  const int size = minimal_size(), e = elastic_at_;
+  out.set_zero();
+  minimal_forces(t, z, z_dot, true);  // mounts the boom, its mass blocks and hull_elastic_mass_
+  const Eigen::Matrix3d jr = mount_jacobian();
+  Eigen::Vector3d frame_a = frame_known_acc_;
+  if (hull_free()) {
+    const Eigen::Matrix3d hull_mass = hull_rigid_inertia() + jr.transpose() * boom_reference_mass_ * jr;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) out.mass.at(i, j) = hull_mass(i, j);
+      for (int j = 0; j < n_; ++j) out.mass.at(i, e + j) = out.mass.at(e + j, i) = hull_elastic_mass_(i, j);
+    }
+    frame_a += jr * z_ddot.head<3>();
+  }
+  if (has_cargo()) {
+    for (int i = 0; i < 3; ++i) out.mass.at(cargo_at_ + i, cargo_at_ + i) = cargo_inertia()(i);
+  }
+  if (n_ > 0) {
+    FloatingFrameBody<Coords>::add_scaled(m_.boom.coords().mass_ff(), 1.0, false, out.mass, e);
+    boom_a_.head<3>() = frame_a;
+    boom_a_.tail(n_) = z_ddot.tail(n_);
+    m_.boom.add_elastic_derivatives(boom_q_, boom_v_, boom_a_, Eigen::Vector2d(0.0, -m_.gravity), reference_stiffness_,
+                                    reference_damping_, out.stiffness, out.damping, e, boom_work_);
+    if (hull_free()) {
+      const Eigen::Matrix<double, 3, Eigen::Dynamic> hull_k = jr.transpose() * reference_stiffness_;
+      const Eigen::Matrix<double, 3, Eigen::Dynamic> hull_d = jr.transpose() * reference_damping_;
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < n_; ++j) {
+          out.stiffness.at(i, e + j) = hull_k(i, j);
+          out.damping.at(i, e + j) = hull_d(i, j);
+        }
+      }
+    }
+  }
+  Eigen::VectorXd& state = jacobian_x_;
+  Eigen::VectorXd& rate = jacobian_x_dot_;
+  state.head(size) = z;
+  rate.head(size) = z_dot;
+  difference_columns(
+      size, e, e, shared_->tip_columns, has_cargo(), shared_->minimal_scale, state, rate, jacobian_base_, jacobian_shifted_,
+      [&](const Eigen::VectorXd& s, const Eigen::VectorXd& s_dot, Eigen::VectorXd& r) {
+        minimal_residual(t, s.head(size), s_dot.head(size), z_ddot, r.head(size));
+      },
+      [&](const Eigen::VectorXd& s, const Eigen::VectorXd& s_dot, Eigen::VectorXd& r) {
+        minimal_wire_residual(t, s.head(size), s_dot.head(size), r.head(size));
+      },
+      out);
+}
+
+template <fem::ElasticCoordinates Coords>
+void CraneSystem<Coords>::full_jacobian(double t, ConstRef q, ConstRef v, ConstRef v_dot, SecondOrderJacobian& out) {
+  const int size = full_size(), b = elastic_at_, e = elastic_at_ + 3;
+  out.set_zero();
+  if (hull_free()) {
+    const Eigen::Matrix3d hull_mass = hull_rigid_inertia();
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) out.mass.at(i, j) = hull_mass(i, j);
+    }
+  }
+  if (has_cargo()) {
+    for (int i = 0; i < 3; ++i) out.mass.at(cargo_at_ + i, cargo_at_ + i) = cargo_inertia()(i);
+  }
+  boom_q_ = q.tail(3 + n_);
+  boom_v_ = v.tail(3 + n_);
+  m_.boom.mass_blocks(boom_q_, boom_reference_mass_, boom_coupling_, boom_work_);
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) out.mass.at(b + i, b + j) = boom_reference_mass_(i, j);
+    for (int j = 0; j < n_; ++j) out.mass.at(b + i, e + j) = out.mass.at(e + j, b + i) = boom_coupling_(i, j);
+  }
+  if (n_ > 0) {
+    FloatingFrameBody<Coords>::add_scaled(m_.boom.coords().mass_ff(), 1.0, false, out.mass, e);
+    boom_a_ = v_dot.tail(3 + n_);
+    m_.boom.add_elastic_derivatives(boom_q_, boom_v_, boom_a_, Eigen::Vector2d(0.0, -m_.gravity), reference_stiffness_,
+                                    reference_damping_, out.stiffness, out.damping, e, boom_work_);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < n_; ++j) {
+        out.stiffness.at(b + i, e + j) = reference_stiffness_(i, j);
+        out.damping.at(b + i, e + j) = reference_damping_(i, j);
+      }
+    }
+  }
+  Eigen::VectorXd& state = jacobian_x_;
+  Eigen::VectorXd& rate = jacobian_x_dot_;
+  state.head(size) = q;
+  rate.head(size) = v;
+  difference_columns(
+      size, e, e, shared_->tip_columns, has_cargo(), shared_->full_scale, state, rate, jacobian_base_, jacobian_shifted_,
+      [&](const Eigen::VectorXd& s, const Eigen::VectorXd& s_dot, Eigen::VectorXd& r) {
+        full_residual(t, s.head(size), s_dot.head(size), v_dot, r.head(size));
+      },
+      [&](const Eigen::VectorXd& s, const Eigen::VectorXd& s_dot, Eigen::VectorXd& r) {
+        full_wire_residual(s.head(size), s_dot.head(size), r.head(size));
+      },
+      out);
+}
+
+template <fem::ElasticCoordinates Coords>
+CraneOutputs CraneSystem<Coords>::minimal_outputs_with_accelerations(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot) {
+  Eigen::Vector3d hull_q, hull_v;
+  split_minimal(t, z, z_dot, hull_q, hull_v);
+  record_hull_velocity(t, hull_v);
+  mount_boom(hull_q, hull_v);
+  boom_q_.tail(n_) = z.tail(n_);
+  boom_v_.tail(n_) = z_dot.tail(n_);
+  const Eigen::Vector3d no_cargo = Eigen::Vector3d::Zero();
+  const Eigen::Vector3d cargo_q = has_cargo() ? Eigen::Vector3d(z.segment<3>(cargo_at_)) : no_cargo;
+  const Eigen::Vector3d cargo_v = has_cargo() ? Eigen::Vector3d(z_dot.segment<3>(cargo_at_)) : no_cargo;
+  boom_and_wire_loads(cargo_q, cargo_v, false);  // and the mass blocks
+  Eigen::Vector3d frame_a = frame_known_acceleration(t, hull_v);
+  if (hull_free()) frame_a += mount_jacobian() * z_ddot.head<3>();
+  // Joint reaction on the boom at B: M_B q̈_B − Q_B over the frame rows, with q̈ from the caller.
+  joint_reaction_ = boom_reference_mass_ * frame_a - boom_force_.head<3>();
+  if (n_ > 0) joint_reaction_.noalias() += boom_coupling_ * z_ddot.tail(n_);
+  CraneOutputs out = common_outputs(hull_q, hull_v, cargo_q, cargo_v);
+  out.joint_reaction = joint_reaction_;
+  out.root_axial_force = root_axial_force(joint_reaction_, boom_q_(2));
+  out.constraint_residual = 0.0;
+  return out;
+}
+
+}  // namespace ffrf::multibody::detail

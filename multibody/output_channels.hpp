@@ -1,0 +1,33 @@
+// The crane's output channels, declared once: the model's table from which the time-series
+// columns (study/output_series.hpp: CSV, JSON statistics, charts), the judged outputs of the
+// verdicts (multibody/error_metrics.hpp) and the regression baselines' columns are derived. A row
+// says the channel's name, its CSV column (display unit in the name), its title, its SI and display
+// units, whether it is measured about the static value, and how its SI value is taken from a
+// CraneOutputs sample (filled from the state; the joint reaction also from the accelerations).
+#pragma once
+
+#include <span>
+#include <string_view>
+
+#include "multibody/crane_equations.hpp"
+
+namespace ffrf::multibody {
+
+struct OutputChannelSpec {
+  std::string_view name;     // "cargo_heave": the channel (judged outputs, baselines, JSON)
+  std::string_view column;   // "cargo_heave_m": the CSV column, display unit in the name
+  std::string_view title;    // "cargo heave": for tables and charts
+  std::string_view unit;     // display unit ("m", "deg", "N", "N m", "J")
+  std::string_view si_unit;  // unit of the extracted value ("m", "rad", ...)
+  double display_scale;      // display value = SI value × this (180/π for angles)
+  bool about_static;         // time series and statistics hold value − static value (body motions)
+  bool judged;               // a judged output: the verdicts' errors, irregular-sea statistics
+  double (*extract)(const CraneOutputs&);  // the SI value from a sample
+  // The value in the display unit (the CSV's).
+  double value(const CraneOutputs& sample) const { return display_scale * extract(sample); }
+};
+
+// Every channel, in the time series' column order.
+std::span<const OutputChannelSpec> output_channels();
+
+}  // namespace ffrf::multibody
