@@ -167,7 +167,7 @@ void run_case(benchmark::State& state, Context* context, Case c) {
   std::unique_ptr<ffrf::multibody::CraneEquations> equations;
   Eigen::VectorXd z0;
   try {
-    equations = scene_library::build_crane(scene, c.choice);
+    equations = scene_library::build_crane_equations(scene, c.choice);
     const auto statics = ffrf::multibody::solve_static_equilibrium(*equations, equations->initial_guess());
     z0 = scene.simulation.initial_state == scene_library::InitialState::static_equilibrium ? statics.z : equations->initial_guess();
   } catch (const std::exception& error) {
@@ -332,7 +332,7 @@ int main(int argc, char** argv) {
     for (const Case& c : cases()) {
       if (key_of(c) != target.key) continue;
       const auto& scene = context.scenes.at(c.scene);
-      auto eq = scene_library::build_crane(scene, c.choice);
+      auto eq = scene_library::build_crane_equations(scene, c.choice);
       const Eigen::VectorXd z0 = ffrf::multibody::solve_static_equilibrium(*eq, eq->initial_guess()).z;
       const auto settings = settings_for(context, c, scene);
       const auto result = ffrf::multibody::simulate(*eq, z0, settings);

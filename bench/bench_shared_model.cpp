@@ -1,5 +1,5 @@
 // What sharing the crane model saves a sweep, per configuration: building the model of
-// a boom choice (scene::build_shared_crane with the modes already cached — what every sweep
+// a boom choice (scene::build_crane_model with the modes already cached — what every sweep
 // configuration paid before models were shared) against making equations from a shared model (what it pays now),
 // beside the static equilibrium every configuration still solves. Reference scene, static
 // stiffening (as the sweep models it), the medium grid's largest models. docs/performance.md.
@@ -32,15 +32,15 @@ void BM_BuildModel(benchmark::State& state) {
   const scene::Scene scene = bench_scene();
   const scene::BoomChoice choice = choice_of(state.range(0));
   modal::ModeCache modes;
-  (void)scene::build_shared_crane(scene, choice, &modes);  // the eigen solve, outside the timing
-  for (auto _ : state) benchmark::DoNotOptimize(scene::build_shared_crane(scene, choice, &modes));
+  (void)scene::build_crane_model(scene, choice, &modes);  // the eigen solve, outside the timing
+  for (auto _ : state) benchmark::DoNotOptimize(scene::build_crane_model(scene, choice, &modes));
   state.SetLabel(choice.label());
 }
 
 void BM_EquationsFromSharedModel(benchmark::State& state) {
   const scene::Scene scene = bench_scene();
   const scene::BoomChoice choice = choice_of(state.range(0));
-  const auto model = scene::build_shared_crane(scene, choice);
+  const auto model = scene::build_crane_model(scene, choice);
   for (auto _ : state) benchmark::DoNotOptimize(model->equations());
   state.SetLabel(choice.label());
 }
@@ -48,7 +48,7 @@ void BM_EquationsFromSharedModel(benchmark::State& state) {
 void BM_StaticEquilibrium(benchmark::State& state) {
   const scene::Scene scene = bench_scene();
   const scene::BoomChoice choice = choice_of(state.range(0));
-  auto equations = scene::build_crane(scene, choice);
+  auto equations = scene::build_crane_equations(scene, choice);
   for (auto _ : state) benchmark::DoNotOptimize(multibody::solve_static_equilibrium(*equations, equations->initial_guess()));
   state.SetLabel(choice.label());
 }

@@ -12,12 +12,12 @@ namespace {
 template <class ElementFn>
 SparseMatrix assemble(const BeamMesh& mesh, ElementFn element_matrix) {
   std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(static_cast<std::size_t>(36 * mesh.element_count));
+  entries.reserve(static_cast<std::size_t>(element_dofs * element_dofs * mesh.element_count));
   for (int e = 0; e < mesh.element_count; ++e) {
     const ElementMatrix local = element_matrix(e);
     for (int i = 0; i < 6; ++i) {
       for (int j = 0; j < 6; ++j) {
-        if (local(i, j) != 0.0) entries.emplace_back(3 * e + i, 3 * e + j, local(i, j));
+        if (local(i, j) != 0.0) entries.emplace_back(node_dofs * e + i, node_dofs * e + j, local(i, j));
       }
     }
   }

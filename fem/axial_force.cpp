@@ -69,7 +69,7 @@ Eigen::SparseMatrix<double> assemble_geometric_stiffness(const BeamMesh& mesh, c
     }
     for (int i = 0; i < 6; ++i) {
       for (int j = 0; j < 6; ++j) {
-        if (local(i, j) != 0.0) entries.emplace_back(3 * e + i, 3 * e + j, local(i, j));
+        if (local(i, j) != 0.0) entries.emplace_back(node_dofs * e + i, node_dofs * e + j, local(i, j));
       }
     }
   }

@@ -8,12 +8,13 @@
 
 #include <Eigen/Dense>
 
+#include "fem/element_space.hpp"
 #include "fem/section.hpp"
 
 namespace ffrf::fem {
 
-using ElementMatrix = Eigen::Matrix<double, 6, 6>;
-using ElementShape = Eigen::Matrix<double, 2, 6>;  // rows: axial u, transverse v
+using ElementMatrix = Eigen::Matrix<double, element_dofs, element_dofs>;
+using ElementShape = Eigen::Matrix<double, Space::dimension, element_dofs>;  // rows: axial u, transverse v
 
 // Shape matrix S(ξ) of paper eq. 4 (transposed to 2×6), ξ = x/l in [0, 1].
 ElementShape element_shape(double xi, double element_length);

@@ -4,13 +4,17 @@
 // body needs about η: its size, the inertia invariants projected on Φ, the stiffness ΦᵀKΦ, the
 // geometric stiffness ΦᵀK_gΦ per unit axial force, the shape rows of a point, the map back
 // to nodal DOFs, and the projection Φᵀ A Φ of any free-DOF matrix (e.g. a geometric stiffness).
-// nodal/ (Φ = I, sparse) and modal/ (dense, small) implement it; the body is written once as a
+// Each says the space it lives in (`Space`: linalg/space.hpp; planar today, so the first moment is a
+// 2-vector, the second a scalar and the skew matrix one). nodal/ (Φ = I, sparse) and modal/ (dense,
+// small) implement it; the body is written once as a
 // template over this concept.
 #pragma once
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 #include <concepts>
+
+#include "linalg/space.hpp"
 
 namespace ffrf::fem {
 
@@ -19,8 +23,9 @@ concept ElasticCoordinates = requires(const C& coords, double x, const Eigen::Ve
                                       const Eigen::SparseMatrix<double>& nodal_matrix) {
   { coords.size() } -> std::convertible_to<Eigen::Index>;
   { coords.mass() } -> std::convertible_to<double>;
-  { coords.first_moment() } -> std::convertible_to<Eigen::Vector2d>;
-  { coords.second_moment() } -> std::convertible_to<double>;
+  requires linalg::Space<typename C::Space>;  // the space the body lives in (linalg/space.hpp)
+  { coords.first_moment() } -> std::convertible_to<typename C::Space::Vector>;
+  { coords.second_moment() } -> std::convertible_to<typename C::Space::SecondMoment>;
   coords.shape_integral();   // 2×n  ∫ρ S Φ
   coords.u0_dot_shape();     // 1×n  ∫ρ ū0ᵀ S Φ
   coords.u0_cross_shape();   // 1×n  ∫ρ ū0ᵀ Ĩ S Φ

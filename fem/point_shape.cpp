@@ -32,7 +32,7 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> scatter_rows(const Eigen::MatrixXd&
   std::vector<Eigen::Triplet<double>> entries;
   for (int r = 0; r < local.rows(); ++r) {
     for (int i = 0; i < 6; ++i) {
-      const int fi = dofs.full_to_free[static_cast<std::size_t>(3 * element + i)];
+      const int fi = dofs.full_to_free[static_cast<std::size_t>(node_dofs * element + i)];
       if (fi >= 0 && local(r, i) != 0.0) entries.emplace_back(r, fi, local(r, i));
     }
   }
@@ -63,13 +63,13 @@ Eigen::VectorXd point_load(const BeamMesh& mesh, const DofMap& dofs, double x, c
 Eigen::VectorXd distributed_load(const BeamMesh& mesh, const DofMap& dofs, const Eigen::Vector2d& load_per_length) {
   // ∫ Sᵀ w dx per element: axial l/2 per node; transverse (l/2, l²/12, l/2, −l²/12).
   const double l = mesh.element_length();
-  Eigen::Matrix<double, 6, 1> local;
+  Eigen::Matrix<double, element_dofs, 1> local;
   local << 0.5 * l * load_per_length(0), 0.5 * l * load_per_length(1), l * l / 12.0 * load_per_length(1),
       0.5 * l * load_per_length(0), 0.5 * l * load_per_length(1), -l * l / 12.0 * load_per_length(1);
   Eigen::VectorXd load = Eigen::VectorXd::Zero(dofs.free_count());
   for (int e = 0; e < mesh.element_count; ++e) {
     for (int i = 0; i < 6; ++i) {
-      const int fi = dofs.full_to_free[static_cast<std::size_t>(3 * e + i)];
+      const int fi = dofs.full_to_free[static_cast<std::size_t>(node_dofs * e + i)];
       if (fi >= 0) load(fi) += local(i);
     }
   }

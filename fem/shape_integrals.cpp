@@ -45,8 +45,8 @@ NodalInvariants nodal_invariants(const BeamMesh& mesh, const DofMap& dofs) {
     Eigen::Matrix<double, 2, 6> s_bar = Eigen::Matrix<double, 2, 6>::Zero();    // ∫ρ S
     Eigen::Matrix<double, 1, 6> d_bar = Eigen::Matrix<double, 1, 6>::Zero();    // ∫ρ x S_u
     Eigen::Matrix<double, 1, 6> c_bar = Eigen::Matrix<double, 1, 6>::Zero();    // ∫ρ ū0ᵀĨS
-    Eigen::Matrix<double, 6, 6> m_bar = Eigen::Matrix<double, 6, 6>::Zero();    // ∫ρ SᵀS
-    Eigen::Matrix<double, 6, 6> k_bar = Eigen::Matrix<double, 6, 6>::Zero();    // ∫ρ SᵀĨS
+    ElementMatrix m_bar = ElementMatrix::Zero();    // ∫ρ SᵀS
+    ElementMatrix k_bar = ElementMatrix::Zero();    // ∫ρ SᵀĨS
     for (const GaussPoint& gp : points) {
       const ElementShape s = element_shape(gp.xi, l);
       const double w = rho * l * gp.weight;
@@ -61,13 +61,13 @@ NodalInvariants nodal_invariants(const BeamMesh& mesh, const DofMap& dofs) {
     inv.first_moment(0) += rho * (x0 * l + 0.5 * l * l);
     inv.second_moment += rho * ((x0 + l) * (x0 + l) * (x0 + l) - x0 * x0 * x0) / 3.0;
     for (int i = 0; i < 6; ++i) {
-      const int fi = dofs.full_to_free[static_cast<std::size_t>(3 * e + i)];
+      const int fi = dofs.full_to_free[static_cast<std::size_t>(node_dofs * e + i)];
       if (fi < 0) continue;
       inv.shape_integral.col(fi) += s_bar.col(i);
       inv.u0_dot_shape(fi) += d_bar(i);
       inv.u0_cross_shape(fi) += c_bar(i);
       for (int j = 0; j < 6; ++j) {
-        const int fj = dofs.full_to_free[static_cast<std::size_t>(3 * e + j)];
+        const int fj = dofs.full_to_free[static_cast<std::size_t>(node_dofs * e + j)];
         if (fj < 0) continue;
         if (m_bar(i, j) != 0.0) mass_entries.emplace_back(fi, fj, m_bar(i, j));
         if (k_bar(i, j) != 0.0) skew_entries.emplace_back(fi, fj, k_bar(i, j));

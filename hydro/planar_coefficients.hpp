@@ -9,13 +9,16 @@
 
 #include <Eigen/Dense>
 
+#include "linalg/space.hpp"
+
 #include <complex>
 #include <string>
 #include <vector>
 
 namespace ffrf::hydro {
 
-inline constexpr int kPlanarDofs = 3;  // 0 surge, 1 heave, 2 pitch
+// A planar rigid body's degrees of freedom (linalg/space.hpp): 0 surge, 1 heave, 2 pitch.
+inline constexpr int kPlanarDofs = linalg::Planar::body_dofs;
 using PlanarMatrix = Eigen::Matrix3d;
 using PlanarVector = Eigen::Vector3d;
 using PlanarComplexVector = Eigen::Vector3cd;

@@ -16,14 +16,15 @@ namespace ffrf::modal {
 class ModalCoordinates {
  public:
   using Matrix = Eigen::MatrixXd;
+  using Space = fem::Space;  // the beam mesh's (fem/element_space.hpp)
   using Rows = Eigen::MatrixXd;
 
   ModalCoordinates(std::shared_ptr<const fem::BeamModel> beam, ModalBasis basis);
 
   Eigen::Index size() const { return basis_.vectors.cols(); }
   double mass() const { return beam_->invariants.mass; }
-  Eigen::Vector2d first_moment() const { return beam_->invariants.first_moment; }
-  double second_moment() const { return beam_->invariants.second_moment; }
+  Space::Vector first_moment() const { return beam_->invariants.first_moment; }
+  Space::SecondMoment second_moment() const { return beam_->invariants.second_moment; }
   const Eigen::Matrix<double, 2, Eigen::Dynamic>& shape_integral() const { return shape_integral_; }
   const Eigen::RowVectorXd& u0_dot_shape() const { return u0_dot_shape_; }
   const Eigen::RowVectorXd& u0_cross_shape() const { return u0_cross_shape_; }

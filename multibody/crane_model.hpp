@@ -1,93 +1,51 @@
-// The floating crane as constant data (the "model", Pinocchio style): hull G1, elastic boom on a
-// floating frame clamped to the hull at B, cargo G2 on a wire rope from the boom tip A′ to the hook
-// C, and the environment. Built once from a scene (scene/crane_builder.hpp); read-only in a run:
-// it becomes part of a SharedCraneModel (multibody/crane_system.hpp) that threads share.
-// Planar, SI units, y up, angles counter-clockwise (docs/architecture.md, "Conventions").
+// The crane's model and its equations, one name per role (Pinocchio's Model/Data, so threads share
+// one model):
+//  * CraneParameters<Coords> (multibody/crane_parameters.hpp): what the crane is — hull, boom over
+//    its elastic coordinates, mount, cargo, wire, waters — as built from a scene;
+//  * CraneModel (here): the immutable model — the parameters and what follows from them alone (the
+//    factorization of M_ff, M_ff⁻¹S̄ᵀ and M_ff⁻¹cᵀ, the Newton blocks' structure, the wire's tip
+//    columns, coordinate scales), computed once by make_crane_model and shared by any number of
+//    threads; implemented by CraneModelOf<Coords> (multibody/crane_model_of.hpp);
+//  * CraneEquations (multibody/crane_equations.hpp): the equations on one workspace (what one
+//    evaluation fills) and one run state (the radiation memory's history), made by
+//    CraneModel::equations(); implemented by CraneEquationsOf<Coords>
+//    (multibody/crane_equations_of.hpp: loads on the three bodies, the minimal-coordinate ODE with
+//    the boom frame eliminated through the clamp at B — velocity transformation q̇_B = J ż,
+//    M_z = JᵀMJ, Q_z = Jᵀ(Q − M J̇ż); Shabana 2005 §6 — solved by a Schur complement on the constant
+//    elastic mass M_ff, and the full-coordinate DAE pieces, paper eqs. 22, 31–34).
+// scene/crane_builder.hpp makes each from a scene: build_crane_parameters, build_crane_model,
+// build_crane_equations.
 #pragma once
 
-#include <Eigen/Dense>
 #include <memory>
 #include <optional>
-#include <string>
 
-#include "sea/bem_excitation.hpp"
-#include "multibody/floating_frame_body.hpp"
-#include "sea/hull_pressure.hpp"
-#include "multibody/prescribed_motion.hpp"
-#include "sea/wave_field.hpp"
-#include "hydro/radiation_memory.hpp"
-
-namespace ffrf::sea {
-class IncidentWaveRecord;  // sea/incident_wave_record.hpp
-class ExcitationRecord;    // sea/excitation_record.hpp
-}  // namespace ffrf::sea
+#include "multibody/crane_equations.hpp"
+#include "multibody/crane_parameters.hpp"
 
 namespace ffrf::multibody {
 
-struct HullModel {
-  double mass = 0.0;                                        // without the boom [kg]
-  double pitch_inertia = 0.0;                               // about G1 [kg m²]
-  sea::BoxHullSection section{};                                 // box, hull frame at G1
-  Eigen::Vector3d added_mass = Eigen::Vector3d::Zero();     // A11, A33, A55 (surge, heave, pitch)
-  Eigen::Vector3d radiation_damping = Eigen::Vector3d::Zero();  // B11, B33, B55 [N s/m, N m s/rad]
-  // Damping beside the radiation (viscous, skin friction), per DOF at G1: F_i = −b_i v_i − q_i |v_i| v_i;
-  // kept whatever the radiation model ([radiation] or [bem]).
-  Eigen::Vector3d added_linear_damping = Eigen::Vector3d::Zero();  // b [N s/m, N s/m, N m s/rad]
-  Eigen::Vector3d quadratic_damping = Eigen::Vector3d::Zero();     // q [N s²/m², N s²/m², N m s²/rad²]
-  // Radiation from BEM coefficients, referred to G1 (hydro/radiation_memory.hpp): constant A(ω_c),
-  // B(ω_c), Cummins convolution or its state-space fit; its 3 × 3 added mass joins the hull's mass.
-  // Empty: the diagonal added_mass and radiation_damping above.
-  std::shared_ptr<const hydro::RadiationMemoryModel> radiation_memory;
-  // First-order excitation from BEM (Froude–Krylov + diffraction) at G1; when set, the pressure is
-  // integrated in calm water (hydrostatics only), so Froude–Krylov is counted once.
-  std::shared_ptr<const sea::BemExcitation> bem_excitation;
-  // The same excitation recorded once per record (sea/excitation_record.hpp); empty: summed.
-  std::shared_ptr<const sea::ExcitationRecord> bem_excitation_record;
-  // The incident sea of this record evaluated once (sea/incident_wave_record.hpp): the hull
-  // pressure reads the wave from it, and takes the exact component sums wherever it cannot answer.
-  // Empty: every evaluation sums the components (regular waves, exact kinematics, finite depth).
-  std::shared_ptr<const sea::IncidentWaveRecord> wave_record;
-  std::string exact_kinematics_reason;  // without a record in a wave: why (for reports)
-  double mooring_stiffness = 0.0;                           // surge spring [N/m], anchored at x = 0
-  bool hydrostatics = true;                                 // pressure integration on/off
-  // Linear support springs towards `support_pose` (surge, heave, pitch): test scenes that hold the
-  // hull without water. Zero = none.
-  Eigen::Vector3d support_stiffness = Eigen::Vector3d::Zero();
-  Eigen::Vector3d support_pose = Eigen::Vector3d::Zero();  // also the pose of a fixed hull
-  bool fixed = false;  // hull held at its initial pose (its coordinates removed)
-  // A driven base (hub): fixed = true and the pose follows this driving constraint instead of support_pose.
-  std::optional<PrescribedMotion> prescribed;
+class CraneModel {
+ public:
+  virtual ~CraneModel() = default;
+  // A new set of equations on this model: its own workspace and run state, no factorization redone.
+  // Thread-safe (the model is read-only); each returned object belongs to one thread at a time.
+  virtual std::unique_ptr<CraneEquations> equations() const = 0;
+  virtual int elastic_size() const = 0;
+  // The same crane — boom and its elastic coordinates, mount, cargo, wire — with another hull (its
+  // hydrodynamics) and wave: a new model (this one unchanged) whose constants are derived again from
+  // the copied coordinates (the boom's matrices, modes and projections are not rebuilt). The frequency
+  // domain's one crane in a regular wave per frequency (study/rao.cpp).
+  virtual std::shared_ptr<const CraneModel> in_waters(const HullModel& hull, const std::optional<sea::WaveField>& wave) const = 0;
 };
 
-struct BoomMountModel {
-  Eigen::Vector2d root = Eigen::Vector2d::Zero();  // B relative to G1, hull frame [m]
-  double angle = 0.0;                              // boom frame angle relative to the hull [rad]
-};
-
-struct CargoModel {
-  bool present = true;                            // false: no cargo and no wire (coordinates removed)
-  double mass = 0.0;                              // [kg]
-  double pitch_inertia = 0.0;                     // about G2 [kg m²]
-  Eigen::Vector2d hook = Eigen::Vector2d::Zero(); // C relative to G2, cargo frame [m]
-};
-
-struct WireModel {
-  double unstretched_length = 0.0;  // L0 [m]
-  double stiffness = 0.0;           // [N/m]
-  double damping = 0.0;             // [N s/m]
-};
-
+// Computes the model's constant data (factorizes M_ff; throws std::runtime_error when it is not
+// positive definite).
 template <fem::ElasticCoordinates Coords>
-struct CraneModel {
-  HullModel hull;
-  BoomMountModel mount;
-  FloatingFrameBody<Coords> boom;
-  BodyPoint boom_tip;  // A′ (x = L)
-  CargoModel cargo;
-  WireModel wire;
-  double gravity = 9.81;
-  double water_density = 1025.0;
-  std::optional<sea::WaveField> wave;  // empty: calm water
-};
+std::shared_ptr<const CraneModel> make_crane_model(CraneParameters<Coords> model);
+
+// make_crane_model(model)->equations(): a model used by one run alone.
+template <fem::ElasticCoordinates Coords>
+std::unique_ptr<CraneEquations> make_crane_equations(CraneParameters<Coords> model);
 
 }  // namespace ffrf::multibody

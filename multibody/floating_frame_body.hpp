@@ -46,6 +46,11 @@ struct BodyWorkspace {
 template <fem::ElasticCoordinates Coords>
 class FloatingFrameBody {
  public:
+  // The planar body (frame pose (R, θ), q(2) the angle); a spatial body is a second class for the
+  // spatial space's coordinates.
+  using Space = typename Coords::Space;
+  static_assert(std::is_same_v<Space, linalg::Planar>, "FloatingFrameBody is the planar floating frame");
+
   using ElasticMatrix = typename Coords::Matrix;
   using Vector = Eigen::VectorXd;
   using ConstRef = Eigen::Ref<const Eigen::VectorXd>;

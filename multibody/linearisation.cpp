@@ -15,10 +15,10 @@ namespace {
 // Central-difference step of the outputs: this fraction of each coordinate's typical size.
 constexpr double output_step_fraction = 1e-6;
 
+// The linear outputs' SI values in a sample (the output-channel table's rows with a linear name).
 Eigen::VectorXd output_vector(const CraneOutputs& o) {
   Eigen::VectorXd y(linear_output_count);
-  y << o.hull.x(), o.hull.y(), o.hull.z(), o.cargo.x(), o.cargo.y(), o.cargo.z(), o.tip_deflection.x(),
-      o.tip_deflection.y(), o.wire_tension;
+  for (int i = 0; i < linear_output_count; ++i) y(i) = linear_channel(static_cast<LinearOutput>(i)).extract(o);
   return y;
 }
 
@@ -67,30 +67,6 @@ Eigen::VectorXcd wave_excitation(CraneEquations& waved, const LinearisedCrane& l
   excitation.real() = real;
   excitation.imag() = imaginary;
   return excitation;
-}
-
-std::string_view to_string(LinearOutput output) {
-  switch (output) {
-    case LinearOutput::hull_surge: return "hull_surge";
-    case LinearOutput::hull_heave: return "hull_heave";
-    case LinearOutput::hull_pitch: return "hull_pitch";
-    case LinearOutput::cargo_surge: return "cargo_surge";
-    case LinearOutput::cargo_heave: return "cargo_heave";
-    case LinearOutput::cargo_pitch: return "cargo_pitch";
-    case LinearOutput::tip_axial: return "tip_axial";
-    case LinearOutput::tip_transverse: return "tip_transverse";
-    case LinearOutput::wire_tension: return "wire_tension";
-  }
-  return "?";
-}
-
-std::string_view unit_per_amplitude(LinearOutput output) {
-  switch (output) {
-    case LinearOutput::hull_pitch:
-    case LinearOutput::cargo_pitch: return "rad/m";
-    case LinearOutput::wire_tension: return "N/m";
-    default: return "m/m";
-  }
 }
 
 OutputMap linear_outputs(CraneEquations& calm, const LinearisedCrane& linear) {

@@ -18,6 +18,8 @@
 #include <array>
 #include <string_view>
 
+#include "multibody/output_channels.hpp"
+
 namespace ffrf::multibody {
 
 class CraneEquations;
@@ -41,15 +43,8 @@ LinearisedCrane linearise_crane(CraneEquations& calm, const Eigen::VectorXd& equ
 Eigen::VectorXcd wave_excitation(CraneEquations& waved, const LinearisedCrane& linear, double angular_frequency,
                                  double amplitude);
 
-// The output channels of the linear responses.
-enum class LinearOutput {
-  hull_surge, hull_heave, hull_pitch, cargo_surge, cargo_heave, cargo_pitch, tip_axial, tip_transverse, wire_tension
-};
-inline constexpr int linear_output_count = 9;
-std::string_view to_string(LinearOutput output);  // "hull_heave", ...
-std::string_view unit_per_amplitude(LinearOutput output);  // "m/m", "rad/m", "N/m"
-
-// y = G δz + H δż for every LinearOutput (rows in enum order), at the equilibrium.
+// y = G δz + H δż for every LinearOutput (rows in enum order: the output-channel table's rows with a
+// linear name, multibody/output_channels.hpp), at the equilibrium.
 struct OutputMap {
   Eigen::MatrixXd position;  // G (linear_output_count × n)
   Eigen::MatrixXd velocity;  // H

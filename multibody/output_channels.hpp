@@ -22,6 +22,7 @@ struct OutputChannelSpec {
   double display_scale;      // display value = SI value × this (180/π for angles)
   bool about_static;         // time series and statistics hold value − static value (body motions)
   bool judged;               // a judged output: the verdicts' errors, irregular-sea statistics
+  std::string_view linear_name;  // its name as a linear (frequency-domain) output ("hull_heave"); empty: none
   double (*extract)(const CraneOutputs&);  // the SI value from a sample
   // The value in the display unit (the CSV's).
   double value(const CraneOutputs& sample) const { return display_scale * extract(sample); }
@@ -29,5 +30,15 @@ struct OutputChannelSpec {
 
 // Every channel, in the time series' column order.
 std::span<const OutputChannelSpec> output_channels();
+
+// The linear outputs of the frequency domain (multibody/linearisation.hpp): the rows with a linear
+// name, in table order; the enum names them for the studies that pick one.
+enum class LinearOutput {
+  hull_surge, hull_heave, hull_pitch, cargo_surge, cargo_heave, cargo_pitch, tip_axial, tip_transverse, wire_tension
+};
+inline constexpr int linear_output_count = 9;  // checked against the table (output_channels.cpp)
+const OutputChannelSpec& linear_channel(LinearOutput output);
+std::string_view to_string(LinearOutput output);           // the row's linear name: "hull_heave", ...
+std::string_view unit_per_amplitude(LinearOutput output);  // the row's SI unit per metre of amplitude: "m/m", "rad/m", "N/m"
 
 }  // namespace ffrf::multibody

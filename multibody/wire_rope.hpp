@@ -4,7 +4,7 @@
 
 #include <Eigen/Dense>
 
-#include "multibody/crane_model.hpp"
+#include "multibody/crane_parameters.hpp"
 
 namespace ffrf::multibody {
 

@@ -15,14 +15,15 @@ namespace ffrf::nodal {
 class NodalCoordinates {
  public:
   using Matrix = Eigen::SparseMatrix<double>;
+  using Space = fem::Space;  // the beam mesh's (fem/element_space.hpp)
   using Rows = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
   explicit NodalCoordinates(std::shared_ptr<const fem::BeamModel> beam);
 
   Eigen::Index size() const { return beam_->dofs.free_count(); }
   double mass() const { return beam_->invariants.mass; }
-  Eigen::Vector2d first_moment() const { return beam_->invariants.first_moment; }
-  double second_moment() const { return beam_->invariants.second_moment; }
+  Space::Vector first_moment() const { return beam_->invariants.first_moment; }
+  Space::SecondMoment second_moment() const { return beam_->invariants.second_moment; }
   const Eigen::Matrix<double, 2, Eigen::Dynamic>& shape_integral() const { return beam_->invariants.shape_integral; }
   const Eigen::RowVectorXd& u0_dot_shape() const { return beam_->invariants.u0_dot_shape; }
   const Eigen::RowVectorXd& u0_cross_shape() const { return beam_->invariants.u0_cross_shape; }

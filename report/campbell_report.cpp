@@ -9,11 +9,11 @@
 
 #include "report/json.hpp"
 #include "fem/analytic_rotating_beam.hpp"
+#include "report/quantities.hpp"
 
 namespace ffrf::report {
 namespace {
 
-double hertz(double angular_frequency) { return angular_frequency / (2.0 * std::numbers::pi); }
 double rate(double omega2) { return std::sqrt(std::abs(omega2)); }  // ω or the growth rate
 
 std::string rate_cell(double omega2) {

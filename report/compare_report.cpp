@@ -11,6 +11,7 @@
 #include "report/compare_tables.hpp"
 #include "report/crane_charts.hpp"
 #include "report/irregular_report.hpp"
+#include "report/quantities.hpp"
 #include "report/verdict_report.hpp"
 #include "report/reference_report.hpp"
 
@@ -22,7 +23,6 @@ using study::Comparison;
 using study::ModelRun;
 using multibody::channel_name;
 
-std::string sci(double value) { return std::isfinite(value) ? fmt::format("{:.2e}", value) : "-"; }
 
 std::string window_text(double start) {
   return start > 0.0 ? fmt::format("after the wave ramp (t ≥ {:g} s)", start)

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "report/quantities.hpp"
 #include "report/reference_report.hpp"
 #include "report/run_report.hpp"
 #include "report/verdict_report.hpp"
@@ -18,9 +19,7 @@ using multibody::channel_name;
 using study::Comparison;
 using study::ModelRun;
 
-constexpr double degrees = 180.0 / std::numbers::pi;
 
-std::string sci(double value) { return std::isfinite(value) ? fmt::format("{:.2e}", value) : "-"; }
 
 // Every run of the report, the reference last, with its label.
 std::vector<std::pair<const ModelRun*, std::string>> all_runs(const Comparison& c) {

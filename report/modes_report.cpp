@@ -10,11 +10,11 @@
 #include "report/gnuplot.hpp"
 #include "report/json.hpp"
 #include "fem/point_shape.hpp"
+#include "report/quantities.hpp"
 
 namespace ffrf::report {
 namespace {
 
-double hertz(double angular_frequency) { return angular_frequency / (2.0 * std::numbers::pi); }
 
 std::optional<double> relative_error(const modal::ClassifiedMode& mode) {
   if (!mode.analytic_frequency || *mode.analytic_frequency <= 0.0) return std::nullopt;

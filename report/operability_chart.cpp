@@ -11,6 +11,7 @@
 #include <string>
 
 #include "report/gnuplot.hpp"
+#include "report/quantities.hpp"
 
 namespace ffrf::report {
 namespace {
@@ -18,7 +19,6 @@ namespace {
 using study::CellResult;
 using study::CellStatus;
 
-std::string heading_name(hydro::WaveHeading heading) { return heading == hydro::WaveHeading::head ? "head" : "following"; }
 
 // Half the spacing of an evenly spaced axis (1 for a single value): the half-width of a cell's box.
 double half_step(const std::vector<double>& axis) {

@@ -13,6 +13,7 @@
 #include "report/gnuplot.hpp"
 #include "report/json.hpp"
 #include "report/operability_chart.hpp"
+#include "report/quantities.hpp"
 
 namespace ffrf::report {
 namespace {
@@ -20,7 +21,6 @@ namespace {
 using study::CellResult;
 using study::Criterion;
 
-std::string heading_name(hydro::WaveHeading heading) { return heading == hydro::WaveHeading::head ? "head" : "following"; }
 
 std::string verdict_word(bool pass) { return pass ? "pass" : "FAIL"; }
 

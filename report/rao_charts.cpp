@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "report/gnuplot.hpp"
+#include "report/quantities.hpp"
 #include "report/rao_report.hpp"
 
 namespace ffrf::report {
@@ -36,7 +37,6 @@ const Chart& chart_named(const std::string& name) {
   return *chart;
 }
 
-double period_of(double omega) { return 2.0 * std::numbers::pi / omega; }
 
 // The band's periods [s]: shortest, longest.
 std::pair<double, double> period_range(const study::RaoResult& result) {

@@ -11,6 +11,7 @@
 
 #include "report/gnuplot.hpp"
 #include "report/json.hpp"
+#include "report/quantities.hpp"
 #include "report/rao_charts.hpp"
 #include "report/rao_resonance.hpp"
 
@@ -27,8 +28,7 @@ std::string unit_slug(LinearOutput output) {  // "m/m" → "m_per_m"
   std::string unit(multibody::unit_per_amplitude(output));
   return unit.replace(unit.find('/'), 1, "_per_");
 }
-double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
-double period_of(double omega) { return 2.0 * std::numbers::pi / omega; }
+double phase_degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
 // The boom's element count as the model uses it ("rigid" for the rigid boom).
 std::string boom_elements(const scene::BoomChoice& choice) {
   return choice.kind == scene::BoomKind::rigid ? std::string("rigid") : std::to_string(choice.elements);
@@ -68,7 +68,7 @@ std::string rao_csv(const study::RaoResult& result, std::size_t model) {
     out += fmt::format("{:.10g},{:.10g}", period_of(omega), omega);
     for (int k = 0; k < multibody::linear_output_count; ++k) {
       const std::complex<double> value = m.response[static_cast<std::size_t>(k)][f];
-      out += fmt::format(",{:.10g},{:.6f}", std::abs(value), degrees(std::arg(value)));
+      out += fmt::format(",{:.10g},{:.6f}", std::abs(value), phase_degrees(std::arg(value)));
     }
     out += '\n';
   }
@@ -283,7 +283,7 @@ std::string rao_json(const study::RaoResult& result, const std::vector<study::Ti
       Json amplitude = Json::array(), phase = Json::array();
       for (const auto& value : m.response[static_cast<std::size_t>(k)]) {
         amplitude.push_back(std::abs(value));
-        phase.push_back(degrees(std::arg(value)));
+        phase.push_back(phase_degrees(std::arg(value)));
       }
       raos[name_of(output_at(k))] = {{"unit", multibody::unit_per_amplitude(output_at(k))}, {"amplitude", amplitude}, {"phase_deg", phase}};
     }

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <vector>
 
+#include "report/quantities.hpp"
 #include "report/rao_charts.hpp"
 
 namespace ffrf::report {
@@ -19,7 +20,6 @@ std::string name_of(int output) { return std::string(multibody::to_string(static
 std::string unit_of(int output) { return std::string(multibody::unit_per_amplitude(static_cast<LinearOutput>(output))); }
 // The unit of a response in a sea: "m/m" per metre of wave → "m".
 std::string response_unit(int output) { return unit_of(output).substr(0, unit_of(output).find('/')); }
-double period_of(double omega) { return 2.0 * std::numbers::pi / omega; }
 
 std::size_t unconverged(const study::ModelRao& model) {
   std::size_t count = 0;

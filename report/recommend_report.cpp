@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "fem/mesh.hpp"
 #include "report/json.hpp"
 #include "report/reference_report.hpp"
 #include "report/verdict_report.hpp"
@@ -101,7 +102,7 @@ std::string recommend_text(const RecommendContext& ctx, const Recommendation& re
                      outcome(c));
   }
   t += fmt::format("{:<50} {:>5} {:>9} {:>9} {:>9} {:>7} {:>9} {:>8}  reference\n", reference_label(rec.reference),
-                   3 * rec.reference.choice.elements, "-", "-", "-", rec.reference.run.result.stats.steps,
+                   fem::clamped_free_dof_count(rec.reference.choice.elements), "-", "-", "-", rec.reference.run.result.stats.steps,
                    number(rec.reference.run.work()), number(rec.reference.run.result.stats.wall_seconds));
   t += "\n" + decision_sentence(ctx, rec) + "\n";
   if (rec.chosen) t += "\nrun it with\n  " + run_line(ctx, rec) + "\n";

@@ -1,6 +1,7 @@
 // Static report, human summary, JSON summary, time series and warnings of a crane run (see
 // run_report.hpp).
 #include "report/run_report.hpp"
+#include "report/quantities.hpp"
 #include "study/radiation_compare.hpp"
 
 #include <fmt/format.h>
@@ -14,12 +15,12 @@
 #include <optional>
 
 #include "hydro/infinite_frequency.hpp"
+#include "multibody/output_channels.hpp"
 #include "report/irregular_report.hpp"
 
 namespace ffrf::report {
 namespace {
 
-constexpr double degrees = 180.0 / std::numbers::pi;
 
 const char* initial_state_name(const study::ModelRun& run) {
   return run.from_static_equilibrium ? "static-equilibrium" : "as-built";
@@ -126,27 +127,23 @@ Json settings_json(const RunContext& c) {
 
 Json static_equilibrium_json(const scene::Scene& scene, const scene::BoomChoice& choice, const multibody::StaticEquilibrium& s) {
   const multibody::CraneOutputs& o = s.outputs;
-  return Json{
+  // Every output channel at rest by its column (display unit in the name), then what follows from
+  // them and the scene, and how KINSOL got there.
+  Json json;
+  for (const multibody::OutputChannelSpec& channel : multibody::output_channels()) {
+    json[std::string(channel.column)] = channel.value(o);
+  }
+  json.update(Json{
       {"hull_draft_mid_length_m", study::draft_at_mid_length(scene, o)},
       {"hull_trim_deg", o.hull.z() * degrees},
-      {"hull_x_m", o.hull.x()},
-      {"hull_y_m", o.hull.y()},
-      {"cargo_x_m", o.cargo.x()},
-      {"cargo_y_m", o.cargo.y()},
-      {"cargo_pitch_deg", o.cargo.z() * degrees},
-      {"tip_axial_m", o.tip_deflection.x()},
-      {"tip_transverse_m", o.tip_deflection.y()},
       {"wire_stretch_m", scene.wire ? o.wire_length - scene.wire->unstretched_length : NAN},
-      {"wire_tension_N", o.wire_tension},
-      {"joint_force_x_N", o.joint_reaction.x()},
-      {"joint_force_y_N", o.joint_reaction.y()},
-      {"joint_moment_Nm", o.joint_reaction.z()},
       {"newton_iterations", s.newton_iterations},
       {"function_evaluations", s.function_evaluations},
       {"scaled_residual", s.scaled_residual},
       {"wall_time_s", s.wall_seconds},
       {"root_axial_force_N", o.root_axial_force},
-      {"geometric_stiffening", scene::to_string(choice.stiffening.value_or(scene.boom.stiffening))}};
+      {"geometric_stiffening", scene::to_string(choice.stiffening.value_or(scene.boom.stiffening))}});
+  return json;
 }
 
 Json wave_kinematics_json(const study::WaveKinematicsUse& use) {

@@ -8,15 +8,10 @@
 #include <numbers>
 
 #include "report/json.hpp"
+#include "report/quantities.hpp"
 #include "report/run_report.hpp"
 
 namespace ffrf::report {
-namespace {
-
-constexpr double degrees = 180.0 / std::numbers::pi;
-
-}  // namespace
-
 std::string statics_text(const std::string& scene_file, const scene::Scene& scene, const study::StaticsResult& result) {
   const multibody::StaticEquilibrium& s = result.statics;
   const multibody::CraneOutputs& o = s.outputs;

@@ -14,7 +14,7 @@
 
 #include <optional>
 
-#include "multibody/crane_model.hpp"
+#include "multibody/crane_parameters.hpp"
 #include "scene/scene.hpp"
 
 namespace ffrf::scene {

@@ -167,13 +167,13 @@ SceneWaters scene_waters(const Scene& scene) {
   return waters;
 }
 
-std::shared_ptr<const multibody::SharedCraneModel> with_waters(const multibody::SharedCraneModel& model, const Scene& scene) {
+std::shared_ptr<const multibody::CraneModel> with_waters(const multibody::CraneModel& model, const Scene& scene) {
   const SceneWaters waters = scene_waters(scene);
   return model.in_waters(waters.hull, waters.wave);
 }
 
 template <fem::ElasticCoordinates Coords>
-multibody::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords, Stiffening stiffening) {
+multibody::CraneParameters<Coords> build_crane_parameters(const Scene& scene, Coords coords, Stiffening stiffening) {
   if (!scene.has_base() || !scene.boom.mount || (scene.is_crane() && (!scene.cargo || !scene.wire))) {
     scene_problem(scene, "hull", "", "a crane run needs [hull] (with [cargo], [wire] and boom.angle/root_x/root_y) or [hub]");
   }
@@ -195,7 +195,7 @@ multibody::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coord
   multibody::BodyPoint tip = boom.point(scene.boom.mesh.length);
   const BoomMount& mount = *scene.boom.mount;
   SceneWaters waters = scene_waters(scene);
-  multibody::CraneModel<Coords> model{std::move(waters.hull),
+  multibody::CraneParameters<Coords> model{std::move(waters.hull),
                                      {Eigen::Vector2d(mount.root_x, mount.root_y), mount.angle},
                                      std::move(boom), std::move(tip), {}, {}, env.gravity, env.water_density,
                                      std::move(waters.wave)};
@@ -210,8 +210,8 @@ multibody::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coord
   return model;
 }
 
-template multibody::CraneModel<nodal::NodalCoordinates> build_crane_model(const Scene&, nodal::NodalCoordinates, Stiffening);
-template multibody::CraneModel<modal::ModalCoordinates> build_crane_model(const Scene&, modal::ModalCoordinates, Stiffening);
+template multibody::CraneParameters<nodal::NodalCoordinates> build_crane_parameters(const Scene&, nodal::NodalCoordinates, Stiffening);
+template multibody::CraneParameters<modal::ModalCoordinates> build_crane_parameters(const Scene&, modal::ModalCoordinates, Stiffening);
 
 modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {
   auto beam = boom_beam(scene, choice.kind == BoomKind::rigid ? 1 : choice.elements);
@@ -233,18 +233,18 @@ modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& 
   return modal::ModalCoordinates(beam, std::move(basis));
 }
 
-std::shared_ptr<const multibody::SharedCraneModel> build_shared_crane(const Scene& scene, const BoomChoice& choice,
+std::shared_ptr<const multibody::CraneModel> build_crane_model(const Scene& scene, const BoomChoice& choice,
                                                                      modal::ModeCache* cache) {
   const Stiffening stiffening = choice.stiffening.value_or(scene.boom.stiffening);
   if (choice.kind == BoomKind::nodal) {
-    return multibody::make_shared_crane_model(
-        build_crane_model(scene, nodal::NodalCoordinates(boom_beam(scene, choice.elements)), stiffening));
+    return multibody::make_crane_model(
+        build_crane_parameters(scene, nodal::NodalCoordinates(boom_beam(scene, choice.elements)), stiffening));
   }
-  return multibody::make_shared_crane_model(build_crane_model(scene, modal_coordinates(scene, choice, cache), stiffening));
+  return multibody::make_crane_model(build_crane_parameters(scene, modal_coordinates(scene, choice, cache), stiffening));
 }
 
-std::unique_ptr<multibody::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {
-  return build_shared_crane(scene, choice, cache)->equations();
+std::unique_ptr<multibody::CraneEquations> build_crane_equations(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {
+  return build_crane_model(scene, choice, cache)->equations();
 }
 
 }  // namespace ffrf::scene

@@ -11,8 +11,8 @@
 
 #include "modal/mode_cache.hpp"
 #include "scene/scene.hpp"
+#include "multibody/crane_parameters.hpp"
 #include "multibody/crane_model.hpp"
-#include "multibody/crane_system.hpp"
 #include "fem/axial_force.hpp"
 #include "modal/eigen_solver.hpp"
 #include "modal/modal_coordinates.hpp"
@@ -56,20 +56,20 @@ fem::AxialForce static_reference_axial_force(const Scene& scene);
 // A hub scene becomes a held or driven base (multibody::PrescribedMotion) without water; a scene
 // without [cargo] has no cargo coordinates. `stiffening` adds the geometric stiffness matrices.
 template <fem::ElasticCoordinates Coords>
-multibody::CraneModel<Coords> build_crane_model(const Scene& scene, Coords coords, Stiffening stiffening = Stiffening::none);
+multibody::CraneParameters<Coords> build_crane_parameters(const Scene& scene, Coords coords, Stiffening stiffening = Stiffening::none);
 
 // Elastic coordinates for a choice (the rigid boom is modal coordinates with an empty basis).
 // The vibration modes come from the cache (computed once per mesh) or, without one, from a
 // cache of this call alone: the same solve either way (modal/mode_cache.hpp).
 modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache = nullptr);
 
-// The immutable model of a choice (multibody/crane_system.hpp), shared by the runs (and threads)
+// The immutable model of a choice (multibody/crane_model.hpp), shared by the runs (and threads)
 // that use it: scene/crane_model_cache.hpp builds each once.
-std::shared_ptr<const multibody::SharedCraneModel> build_shared_crane(const Scene& scene, const BoomChoice& choice,
+std::shared_ptr<const multibody::CraneModel> build_crane_model(const Scene& scene, const BoomChoice& choice,
                                                                      modal::ModeCache* cache = nullptr);
 
 // The hull (or hub) of a scene with its hydrodynamics, and the wave: what a crane model takes from
-// the scene's waters (build_crane_model). Throws SceneError (a hull that cannot float the load).
+// the scene's waters (build_crane_parameters). Throws SceneError (a hull that cannot float the load).
 struct SceneWaters {
   multibody::HullModel hull;
   std::optional<sea::WaveField> wave;  // empty: calm water (or a hub)
@@ -77,12 +77,12 @@ struct SceneWaters {
 SceneWaters scene_waters(const Scene& scene);
 
 // `model` (built from a scene that differs from `scene` at most in its waters: wave, sea, [bem]
-// radiation model) with the waters of `scene`: equal to build_shared_crane(scene, its choice)
-// without rebuilding the boom (multibody::SharedCraneModel::in_waters).
-std::shared_ptr<const multibody::SharedCraneModel> with_waters(const multibody::SharedCraneModel& model, const Scene& scene);
+// radiation model) with the waters of `scene`: equal to build_crane_model(scene, its choice)
+// without rebuilding the boom (multibody::CraneModel::in_waters).
+std::shared_ptr<const multibody::CraneModel> with_waters(const multibody::CraneModel& model, const Scene& scene);
 
-// The whole system for a choice, ready for static equilibrium and integration: build_shared_crane's
+// The whole system for a choice, ready for static equilibrium and integration: build_crane_model's
 // model with its own workspace.
-std::unique_ptr<multibody::CraneEquations> build_crane(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache = nullptr);
+std::unique_ptr<multibody::CraneEquations> build_crane_equations(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache = nullptr);
 
 }  // namespace ffrf::scene

@@ -48,13 +48,13 @@ CraneModelCache::Entry& CraneModelCache::built_entry(const BoomChoice& choice, s
   }
   lock = std::unique_lock(entry->building);  // one build per model; other models build meanwhile
   if (!entry->model) {
-    entry->model = build_shared_crane(modelled, choice, modes_);
+    entry->model = build_crane_model(modelled, choice, modes_);
     ++built_;
   }
   return *entry;
 }
 
-std::shared_ptr<const multibody::SharedCraneModel> CraneModelCache::model(const BoomChoice& choice,
+std::shared_ptr<const multibody::CraneModel> CraneModelCache::model(const BoomChoice& choice,
                                                                          std::optional<hydro::RadiationKind> radiation) {
   std::unique_lock<std::mutex> lock;
   return built_entry(choice, radiation, lock).model;

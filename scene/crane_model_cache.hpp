@@ -1,7 +1,7 @@
 // The shared crane models of one scene, built once and shared by threads: each distinct model — boom kind × mesh ×
 // coordinates × mode set × solver × stiffening × the [bem] hull's radiation model — is built once,
 // on its first request, and handed to every run and thread that asks for it; each run makes its own
-// CraneEquations from it (workspace and run state, multibody/crane_system.hpp). The vibration modes
+// CraneEquations from it (workspace and run state, multibody/crane_model.hpp). The vibration modes
 // come from a modal::ModeCache (one eigen solve per mesh). A model's static equilibrium in calm water
 // (multibody/crane_statics.hpp) depends on the model alone — KINSOL from the rest-pose guess at
 // its fixed tolerance, a deterministic solve — so it is solved once per model too and handed out as
@@ -17,7 +17,7 @@
 #include <optional>
 #include <tuple>
 
-#include "multibody/crane_system.hpp"
+#include "multibody/crane_model.hpp"
 #include "multibody/crane_statics.hpp"
 #include "modal/mode_cache.hpp"
 #include "scene/crane_builder.hpp"
@@ -41,9 +41,9 @@ class CraneModelCache {
   const Scene& scene(std::optional<hydro::RadiationKind> radiation);
   modal::ModeCache& modes() { return *modes_; }
 
-  // The model of `choice` on scene(radiation) (build_shared_crane), built on the first request.
-  // Throws what build_shared_crane throws (SceneError, EigenSolverError, std::runtime_error).
-  std::shared_ptr<const multibody::SharedCraneModel> model(const BoomChoice& choice,
+  // The model of `choice` on scene(radiation) (build_crane_model), built on the first request.
+  // Throws what build_crane_model throws (SceneError, EigenSolverError, std::runtime_error).
+  std::shared_ptr<const multibody::CraneModel> model(const BoomChoice& choice,
                                                           std::optional<hydro::RadiationKind> radiation = std::nullopt);
   // The static equilibrium of that model (solve_static_equilibrium from its initial guess), solved on
   // the first request. Throws what model() throws and solve::SolverFailure.
@@ -58,7 +58,7 @@ class CraneModelCache {
   using Key = std::tuple<int, int, int, bool, int, int, int>;
   struct Entry {
     std::mutex building;
-    std::shared_ptr<const multibody::SharedCraneModel> model;
+    std::shared_ptr<const multibody::CraneModel> model;
     std::optional<multibody::StaticEquilibrium> statics;
   };
   std::optional<hydro::RadiationKind> effective(std::optional<hydro::RadiationKind> radiation) const;

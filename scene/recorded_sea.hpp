@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "multibody/crane_model.hpp"
+#include "multibody/crane_parameters.hpp"
 #include "scene/scene.hpp"
 
 namespace ffrf::scene {

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "fem/mesh.hpp"
 #include "study/run_pipeline.hpp"
 #include "study/work_limits.hpp"
 
@@ -36,7 +37,7 @@ scene::BoomChoice boom_choice(const BoomRequest& request, scene::BoomChoice choi
       throw SettingError(Setting::stiffening, request.stiffening, "unknown stiffening; choose one of none, static, centrifugal, both");
   }
   if (choice.kind == scene::BoomKind::modal) {
-    const int dof = 3 * choice.elements;  // planar beam: (u, v, φ) per node, the root node clamped
+    const int dof = fem::clamped_free_dof_count(choice.elements);
     if (choice.modes < 1 || choice.modes >= dof) {
       throw SettingError(Setting::modes, std::to_string(choice.modes),
                          fmt::format("not a valid mode count for N = {} elements ({} elastic DOFs) (valid range [1, {}])",

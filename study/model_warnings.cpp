@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fem/mesh.hpp"
 #include "study/error_measure.hpp"
 #include "study/recommend_reasoning.hpp"
 
@@ -17,7 +18,7 @@ int retained_modes(const scene::BoomChoice& choice) {
   switch (choice.kind) {
     case scene::BoomKind::rigid: return 0;
     case scene::BoomKind::modal: return choice.modes;
-    case scene::BoomKind::nodal: return 3 * choice.elements;
+    case scene::BoomKind::nodal: return fem::clamped_free_dof_count(choice.elements);
   }
   return 0;
 }

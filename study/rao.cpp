@@ -255,7 +255,7 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
     if (progress) progress(choice.label());
     const auto start = std::chrono::steady_clock::now();
     PreparedRun prepared = prepare_run(models, choice);
-    const std::shared_ptr<const multibody::SharedCraneModel> calm_model = models.model(choice);
+    const std::shared_ptr<const multibody::CraneModel> calm_model = models.model(choice);
     const LinearisedCrane linear = multibody::linearise_crane(*prepared.equations, prepared.statics.z);
     const multibody::OutputMap outputs = multibody::linear_outputs(*prepared.equations, linear);
     ModelRao model;

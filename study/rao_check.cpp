@@ -23,19 +23,9 @@ constexpr double samples_per_period = 40.0;
 // its frequency is below half the sampling's Nyquist frequency (faster modes are gone by then).
 constexpr double dead_mode_exponent = -30.0;
 
+// The output's SI value in a time-domain sample (its row of the output-channel table).
 double sample_value(LinearOutput output, const multibody::CraneOutputs& sample) {
-  switch (output) {
-    case LinearOutput::hull_surge: return sample.hull.x();
-    case LinearOutput::hull_heave: return sample.hull.y();
-    case LinearOutput::hull_pitch: return sample.hull.z();
-    case LinearOutput::cargo_surge: return sample.cargo.x();
-    case LinearOutput::cargo_heave: return sample.cargo.y();
-    case LinearOutput::cargo_pitch: return sample.cargo.z();
-    case LinearOutput::tip_axial: return sample.tip_deflection.x();
-    case LinearOutput::tip_transverse: return sample.tip_deflection.y();
-    case LinearOutput::wire_tension: return sample.wire_tension;
-  }
-  return 0.0;
+  return multibody::linear_channel(output).extract(sample);
 }
 
 double wrapped(double angle) {

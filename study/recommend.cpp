@@ -7,6 +7,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "fem/mesh.hpp"
 #include "study/error_measure.hpp"
 #include "study/expected_work.hpp"
 #include "study/run_pipeline.hpp"
@@ -85,7 +86,7 @@ std::vector<Candidate> candidate_ladder(const scene::Scene& scene, const Recomme
   scene::BoomChoice rigid;
   rigid.kind = scene::BoomKind::rigid;
   const WorkForecast forecast =
-      work_forecast(scene, r, scene.simulation.duration, scene::build_crane(scene, rigid, modes)->minimal_size());
+      work_forecast(scene, r, scene.simulation.duration, scene::build_crane_equations(scene, rigid, modes)->minimal_size());
   const double tau = r.tolerance;
   const auto too_large = [&](double estimate) { return std::isfinite(estimate) && estimate > estimate_margin * tau; };
   const auto estimate_reason = [&](double estimate) {
@@ -96,7 +97,7 @@ std::vector<Candidate> candidate_ladder(const scene::Scene& scene, const Recomme
   choice.kind = scene::BoomKind::rigid;
   add_model(scene, r, forecast, choice, 0, r.rigid_error, estimate_reason(r.rigid_error), modes, ladder);
 
-  const int dof = 3 * scene.boom.mesh.element_count;
+  const int dof = fem::clamped_free_dof_count(scene.boom.mesh.element_count);
   const int static_count = static_cast<int>(modal::tip_and_body_unit_loads(scene.boom.mesh).size());
   choice.kind = scene::BoomKind::modal;
   for (int k = 1; k <= std::min(max_plain_modes, dof - 1); ++k) {

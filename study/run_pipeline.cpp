@@ -146,7 +146,7 @@ PreparedRun prepare_equations(const scene::Scene& scene, const scene::BoomChoice
 
 PreparedRun prepare_run(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes) {
   check_run_memory(choice);
-  std::unique_ptr<multibody::CraneEquations> equations = scene::build_crane(scene, choice, modes);
+  std::unique_ptr<multibody::CraneEquations> equations = scene::build_crane_equations(scene, choice, modes);
   multibody::StaticEquilibrium statics = multibody::solve_static_equilibrium(*equations, equations->initial_guess());
   return prepare_equations(scene, choice, std::move(equations), std::move(statics));
 }

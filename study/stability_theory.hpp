@@ -2,7 +2,7 @@
 // (solve/explicit_stability.hpp) and with the coupled system's Jacobian bound
 // (solve::explicit_stable_step):
 //  * the boom's elastic coordinates alone, clamped at the root: ω_i² the eigenvalues of
-//    M_ff⁻¹ K in the coordinates build_crane uses (nodal: the FE mesh's free DOFs; modal: the
+//    M_ff⁻¹ K in the coordinates build_crane_equations uses (nodal: the FE mesh's free DOFs; modal: the
 //    retained vibration modes and the Rayleigh frequencies of the static correction modes);
 //    undamped bound h = β_I / ω_max (β_I the table's imaginary-axis boundary); with the boom's
 //    stiffness-proportional damping D = βK each mode is an oscillator λ² + βω²λ + ω² = 0, ζ = βω/2,

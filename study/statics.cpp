@@ -15,7 +15,7 @@ namespace ffrf::study {
 StaticsResult solve_statics(const scene::Scene& scene, const scene::BoomChoice& choice, modal::ModeCache* modes) {
   // prepare_run's model and solve (its initial state aside), with how the solve went.
   check_run_memory(choice);
-  const std::unique_ptr<multibody::CraneEquations> equations = scene::build_crane(scene, choice, modes);
+  const std::unique_ptr<multibody::CraneEquations> equations = scene::build_crane_equations(scene, choice, modes);
   const Eigen::VectorXd guess = equations->initial_guess();
   StaticsResult result;
   result.choice = choice;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "fem/mesh.hpp"
 #include "study/run_pipeline.hpp"
 
 namespace ffrf::study {
@@ -15,7 +16,7 @@ constexpr double gibibyte = 1024.0 * 1024.0 * 1024.0;
 int elastic_coordinates(const scene::BoomChoice& choice) {
   switch (choice.kind) {
     case scene::BoomKind::rigid: return 0;
-    case scene::BoomKind::nodal: return 3 * choice.elements;
+    case scene::BoomKind::nodal: return fem::clamped_free_dof_count(choice.elements);
     case scene::BoomKind::modal: return choice.modes + (choice.static_modes ? 6 : 0);
   }
   return 0;

@@ -23,11 +23,11 @@ inline std::unique_ptr<multibody::CraneEquations> build_with(
     const scene::Scene& scene, const scene::BoomChoice& choice,
     const std::function<void(multibody::HullModel&, multibody::WireModel&)>& tweak) {
   if (choice.kind == scene::BoomKind::nodal) {
-    auto model = scene::build_crane_model(scene, nodal::NodalCoordinates(scene::boom_beam(scene, choice.elements)));
+    auto model = scene::build_crane_parameters(scene, nodal::NodalCoordinates(scene::boom_beam(scene, choice.elements)));
     tweak(model.hull, model.wire);
     return multibody::make_crane_equations(std::move(model));
   }
-  auto model = scene::build_crane_model(scene, scene::modal_coordinates(scene, choice));
+  auto model = scene::build_crane_parameters(scene, scene::modal_coordinates(scene, choice));
   tweak(model.hull, model.wire);
   return multibody::make_crane_equations(std::move(model));
 }

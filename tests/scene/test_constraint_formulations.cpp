@@ -43,10 +43,10 @@ struct ReferenceCrane {
   scene::Scene scene = test::reference_scene();
   scene::BoomChoice choice{scene::BoomKind::rigid, 1, 0, false};
   multibody::EquationsFactory factory() const {
-    return [this] { return scene::build_crane(scene, choice); };
+    return [this] { return scene::build_crane_equations(scene, choice); };
   }
   Eigen::VectorXd equilibrium() const {
-    auto equations = scene::build_crane(scene, choice);
+    auto equations = scene::build_crane_equations(scene, choice);
     return multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   }
 };

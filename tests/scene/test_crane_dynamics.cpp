@@ -53,7 +53,7 @@ TEST(CraneDynamics, HeavePeriodOfTheHullAloneMatchesHydrostatics) {
   scene.cargo->mass = 1.0;
   scene.wire->stiffness = 1.0e3;
   scene.radiation.surge_damping = scene.radiation.heave_damping = scene.radiation.pitch_damping = 0.0;
-  auto equations = scene::build_crane(scene, {scene::BoomKind::rigid, 1, 0, false});
+  auto equations = scene::build_crane_equations(scene, {scene::BoomKind::rigid, 1, 0, false});
   Eigen::VectorXd z = multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   z(1) += 0.2;  // heave release: the hull, and the tiny cargo with it (the wire keeps its stretch)
   z(4) += 0.2;
@@ -104,7 +104,7 @@ TEST(CraneDynamics, CargoOnRigidBoomSwingsAsARigidBodyOnAString) {
 
 TEST(CraneDynamics, LagrangeMultipliersAndMinimalCoordinatesAgree) {
   const scene::Scene scene = test::reference_scene();
-  auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, 4, 0, false});
+  auto equations = scene::build_crane_equations(scene, {scene::BoomKind::nodal, 4, 0, false});
   const Eigen::VectorXd z0 = multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   multibody::RunSettings settings = tight(40.0);
   settings.output_interval = 0.05;
@@ -128,8 +128,8 @@ TEST(CraneDynamics, LagrangeMultipliersAndMinimalCoordinatesAgree) {
 TEST(CraneDynamics, VeryStiffBoomReproducesTheRigidBoom) {
   scene::Scene scene = test::reference_scene();
   scene.boom.mesh.section.youngs_modulus *= 1e6;
-  auto stiff = scene::build_crane(scene, {scene::BoomKind::nodal, 2, 0, false});
-  auto rigid = scene::build_crane(scene, {scene::BoomKind::rigid, 1, 0, false});
+  auto stiff = scene::build_crane_equations(scene, {scene::BoomKind::nodal, 2, 0, false});
+  auto rigid = scene::build_crane_equations(scene, {scene::BoomKind::rigid, 1, 0, false});
   multibody::RunSettings settings = tight(30.0);  // ramp (20 s) plus one full wave period
   settings.relative_tolerance = settings.absolute_tolerance = 1e-8;
   const auto a = multibody::simulate(*stiff, multibody::solve_static_equilibrium(*stiff, stiff->initial_guess()).z, settings);

@@ -17,7 +17,7 @@ TEST(CraneStatics, ReferenceSceneEquilibriumMatchesStatics) {
   scene::BoomChoice choice;
   choice.kind = scene::BoomKind::nodal;
   choice.elements = 32;
-  auto equations = scene::build_crane(scene, choice);
+  auto equations = scene::build_crane_equations(scene, choice);
   const multibody::StaticEquilibrium eq = multibody::solve_static_equilibrium(*equations, equations->initial_guess());
   const multibody::CraneOutputs& out = eq.outputs;
   const auto& hull = *scene.hull;
@@ -57,8 +57,8 @@ TEST(CraneStatics, RigidAndModalBoomsReachTheSameFloatingPose) {
   const scene::Scene scene = test::reference_scene();
   scene::BoomChoice nodal{scene::BoomKind::nodal, 16, 0, false};
   scene::BoomChoice modal{scene::BoomKind::modal, 16, 0, true};  // static modes only: exact static tip
-  auto nodal_eq = scene::build_crane(scene, nodal);
-  auto modal_eq = scene::build_crane(scene, modal);
+  auto nodal_eq = scene::build_crane_equations(scene, nodal);
+  auto modal_eq = scene::build_crane_equations(scene, modal);
   const auto a = multibody::solve_static_equilibrium(*nodal_eq, nodal_eq->initial_guess());
   const auto b = multibody::solve_static_equilibrium(*modal_eq, modal_eq->initial_guess());
   EXPECT_NEAR(a.outputs.tip_deflection.y(), b.outputs.tip_deflection.y(), 1e-10 * std::abs(a.outputs.tip_deflection.y()));

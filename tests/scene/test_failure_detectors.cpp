@@ -48,7 +48,7 @@ TEST(FailureDetectors, BucklingMarginFromBeamStatics) {
     const multibody::MonitorLimits limits = limits_of(scene);
     const double ratio = compression / limits.buckling_load;
 
-    auto equations = scene::build_crane(scene, {scene::BoomKind::rigid, 1, 0, false});
+    auto equations = scene::build_crane_equations(scene, {scene::BoomKind::rigid, 1, 0, false});
     const auto statics = multibody::solve_static_equilibrium(*equations, equations->initial_guess());
     EXPECT_NEAR(statics.outputs.root_axial_force / -compression, 1.0, 1e-6) << "cargo " << cargo_mass << " kg";
 
@@ -72,7 +72,7 @@ TEST(FailureDetectors, BucklingMarginFromBeamStatics) {
 
 TEST(FailureDetectors, IndefiniteMassMatrixStopsTheRunAtTheStart) {
   const scene::Scene scene = test::reference_scene();
-  auto model = scene::build_crane_model(scene, scene::modal_coordinates(scene, {scene::BoomKind::rigid, 1, 0, false}));
+  auto model = scene::build_crane_parameters(scene, scene::modal_coordinates(scene, {scene::BoomKind::rigid, 1, 0, false}));
   // The crane's pitch inertia about G1 is at most the hull's plus the boom's and cargo's masses at
   // the boom tip's distance: a negative added inertia ten times that makes the hull–boom block indefinite.
   const double reach = scene.boom.mesh.length + std::hypot(scene.boom.mount->root_x, scene.boom.mount->root_y) + 50.0;
@@ -100,7 +100,7 @@ TEST(FailureDetectors, IndefiniteMassMatrixStopsTheRunAtTheStart) {
 
 TEST(FailureDetectors, UnstabilizedIndexOneDriftsAndBaumgarteDoesNot) {
   const scene::Scene scene = test::reference_scene();
-  auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, 2, 0, false});
+  auto equations = scene::build_crane_equations(scene, {scene::BoomKind::nodal, 2, 0, false});
   const auto statics = multibody::solve_static_equilibrium(*equations, equations->initial_guess());
   multibody::RunSettings settings;
   settings.duration = 60.0;
@@ -146,7 +146,7 @@ scene::Scene spinning_beam() {
 
 TEST(FailureDetectors, DivergenceWatchStopsWithAFinitePartialResult) {
   const scene::Scene scene = spinning_beam();
-  auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, 10, 0, false});
+  auto equations = scene::build_crane_equations(scene, {scene::BoomKind::nodal, 10, 0, false});
   multibody::RunSettings settings;
   settings.duration = 10.0;
   settings.output_interval = 0.01;

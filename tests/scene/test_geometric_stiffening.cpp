@@ -38,7 +38,7 @@ scene::Scene prestressed_boom(double fraction) {
 }
 
 double static_tip_deflection(const scene::Scene& scene, scene::BoomChoice choice) {
-  auto equations = scene::build_crane(scene, choice);
+  auto equations = scene::build_crane_equations(scene, choice);
   return multibody::solve_static_equilibrium(*equations, equations->initial_guess()).outputs.tip_deflection.y();
 }
 
@@ -93,7 +93,7 @@ TEST(GeometricStiffening, CentrifugalStiffeningPreventsTheSpinDivergence) {
   const double sigma = std::sqrt(spin * spin - omega1 * omega1);
   double measured = 0.0;
   {
-    auto equations = scene::build_crane(soft, {scene::BoomKind::nodal, 4, 0, false});
+    auto equations = scene::build_crane_equations(soft, {scene::BoomKind::nodal, 4, 0, false});
     // Seed the bending mode with a 1 µm transverse tip deflection (free DOFs (u, v, φ) per node: the
     // tip's v is the second last), so the divergence does not rest on round-off and Coriolis coupling.
     Eigen::VectorXd start = equations->initial_guess();
@@ -108,7 +108,7 @@ TEST(GeometricStiffening, CentrifugalStiffeningPreventsTheSpinDivergence) {
     }
   }
   const scene::Scene stiff = constant_spin(spin, scene::Stiffening::centrifugal);
-  auto equations = scene::build_crane(stiff, {scene::BoomKind::nodal, 4, 0, false});
+  auto equations = scene::build_crane_equations(stiff, {scene::BoomKind::nodal, 4, 0, false});
   const multibody::RunSettings settings = spin_settings(stiff);
   const multibody::RunResult run = multibody::simulate(*equations, equations->initial_guess(), settings);
   ASSERT_NEAR(run.time.back(), settings.duration, 1e-9);

@@ -23,7 +23,7 @@ using solve::Solver;
 // The reference scene, nodal N = 2, at static equilibrium.
 struct Crane {
   scene::Scene scene = test::reference_scene();
-  std::unique_ptr<multibody::CraneEquations> equations = scene::build_crane(scene, {scene::BoomKind::nodal, 2, 0, false});
+  std::unique_ptr<multibody::CraneEquations> equations = scene::build_crane_equations(scene, {scene::BoomKind::nodal, 2, 0, false});
   Eigen::VectorXd z0 = multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
 };
 

@@ -22,7 +22,7 @@ struct Crane {
   scene::Scene scene;
   std::unique_ptr<multibody::CraneEquations> equations;
   Eigen::VectorXd z0;
-  Crane(scene::Scene s, scene::BoomChoice choice) : scene(std::move(s)), equations(scene::build_crane(scene, choice)) {
+  Crane(scene::Scene s, scene::BoomChoice choice) : scene(std::move(s)), equations(scene::build_crane_equations(scene, choice)) {
     z0 = multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   }
 };

@@ -38,7 +38,7 @@ double max_difference(const multibody::RunResult& a, const multibody::RunResult&
 // The reference scene, nodal N = 2, at static equilibrium.
 struct Reference {
   scene::Scene scene = test::reference_scene();
-  std::unique_ptr<multibody::CraneEquations> equations = scene::build_crane(scene, {scene::BoomKind::nodal, 2, 0, false});
+  std::unique_ptr<multibody::CraneEquations> equations = scene::build_crane_equations(scene, {scene::BoomKind::nodal, 2, 0, false});
   Eigen::VectorXd z0 = multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
 };
 
@@ -118,7 +118,7 @@ TEST(Integrators, GeneralizedAlphaWithoutDissipationKeepsTheEnergy) {
 
 TEST(Integrators, ArkodeAdaptiveAgreesWithCvodeOnTheRigidBoom) {
   const scene::Scene scene = test::reference_scene();
-  auto equations = scene::build_crane(scene, {scene::BoomKind::rigid, 1, 0, false});
+  auto equations = scene::build_crane_equations(scene, {scene::BoomKind::rigid, 1, 0, false});
   const Eigen::VectorXd z0 = multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   const auto cvode = multibody::simulate(*equations, z0, settings(solve::Integrator::cvode, 30.0, 1e-10));
   const auto arkode = multibody::simulate(*equations, z0, settings(solve::Integrator::arkode, 30.0, 1e-8));
@@ -133,7 +133,7 @@ TEST(Integrators, ArkodeAdaptiveAgreesWithCvodeOnTheRigidBoom) {
 
 TEST(Integrators, ArkodeBeyondTheStabilityLimitIsReportedUnstable) {
   const scene::Scene scene = test::reference_scene();
-  auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, 8, 0, false});
+  auto equations = scene::build_crane_equations(scene, {scene::BoomKind::nodal, 8, 0, false});
   const Eigen::VectorXd z0 = multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   const double limit = solve::explicit_stable_step(*equations, z0);
   std::printf("nodal N = 8: linearized ERK stability limit %.4e s (imaginary-axis boundary %.4f)\n", limit,
@@ -141,7 +141,7 @@ TEST(Integrators, ArkodeBeyondTheStabilityLimitIsReportedUnstable) {
   {  // the same boom without structural damping: only the imaginary-axis boundary matters
     scene::Scene undamped_scene = scene;
     undamped_scene.boom.damping_ratio = 0.0;
-    auto undamped = scene::build_crane(undamped_scene, {scene::BoomKind::nodal, 8, 0, false});
+    auto undamped = scene::build_crane_equations(undamped_scene, {scene::BoomKind::nodal, 8, 0, false});
     const double undamped_limit =
         solve::explicit_stable_step(*undamped, multibody::solve_static_equilibrium(*undamped, undamped->initial_guess()).z);
     std::printf("without structural damping: limit %.4e s (ω_max ≈ %.4g rad/s)\n", undamped_limit,

@@ -36,7 +36,7 @@ struct Case {
 
 std::unique_ptr<CraneEquations> build(const Case& c) {
   scene::Scene scene = scene::load_scene(std::string(FFRF_SOURCE_DIR "/cases/") + c.scene);
-  return scene::build_crane(scene, c.choice);
+  return scene::build_crane_equations(scene, c.choice);
 }
 
 // A moving, deformed state: the static equilibrium plus deterministic offsets of 2 % of each
@@ -53,7 +53,7 @@ void moving_state(CraneEquations& eq, Eigen::VectorXd& z, Eigen::VectorXd& z_dot
 }
 
 // Tolerance of the Newton matrices: the dense columns are forward differences (increments 1e-6 of each
-// coordinate's size, multibody/crane_system_jacobian.ipp), exact to ~1e-6 of the matrix's diagonal
+// coordinate's size, multibody/crane_equations_jacobian.ipp), exact to ~1e-6 of the matrix's diagonal
 // scaling; 1e-5 leaves room and still catches any missing or wrong term (those are O(1)).
 constexpr double kNewtonMatrixTolerance = 1e-5;
 
@@ -306,12 +306,12 @@ TEST_P(NewtonJacobians, IndexTwoNewtonStepMatchesTheDenseSystem) {
 
 TEST(NewtonJacobians, NodalBoomsAreBandedModalOnesDense) {
   scene::Scene scene = scene::load_scene(FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml");
-  const auto nodal = scene::build_crane(scene, {.kind = scene::BoomKind::nodal, .elements = 32});
+  const auto nodal = scene::build_crane_equations(scene, {.kind = scene::BoomKind::nodal, .elements = 32});
   EXPECT_EQ(nodal->minimal_structure().border, 6);
   EXPECT_EQ(nodal->minimal_structure().band_size, 96);
   EXPECT_LE(nodal->minimal_structure().lower, 5);  // element couples two nodes of 3 DOFs
   EXPECT_EQ(nodal->full_structure().border, 9);
-  const auto modal = scene::build_crane(scene, {.kind = scene::BoomKind::modal, .elements = 16, .modes = 2, .static_modes = true});
+  const auto modal = scene::build_crane_equations(scene, {.kind = scene::BoomKind::modal, .elements = 16, .modes = 2, .static_modes = true});
   EXPECT_EQ(modal->minimal_structure().band_size, 0);
   EXPECT_EQ(modal->minimal_structure().border, modal->minimal_size());
 }

@@ -46,7 +46,7 @@ TEST(OutputSampling, OutputsFromGivenAccelerationsEqualThoseThatSolveForThem) {
       {&crane, {.kind = scene::BoomKind::modal, .elements = 16, .modes = 2, .static_modes = true}},
       {&hub, {.kind = scene::BoomKind::nodal, .elements = 6}}};
   for (const auto& [scene, choice] : models) {
-    auto eq = scene::build_crane(*scene, choice);
+    auto eq = scene::build_crane_equations(*scene, choice);
     const int n = eq->minimal_size();
     Eigen::VectorXd z = multibody::solve_static_equilibrium(*eq, eq->initial_guess()).z, z_dot(n), z_ddot(n);
     const Eigen::VectorXd scale = eq->coordinate_scale();
@@ -64,7 +64,7 @@ TEST(OutputSampling, OutputsFromGivenAccelerationsEqualThoseThatSolveForThem) {
 
 TEST(OutputSampling, InterpolatedAccelerationsKeepTheJointReactionAtTheIntegrationError) {
   const auto scene = scene::load_scene(FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml");
-  auto eq = scene::build_crane(scene, {.kind = scene::BoomKind::nodal, .elements = 4});
+  auto eq = scene::build_crane_equations(scene, {.kind = scene::BoomKind::nodal, .elements = 4});
   const Eigen::VectorXd z0 = multibody::solve_static_equilibrium(*eq, eq->initial_guess()).z;
   multibody::RunSettings settings;
   settings.duration = 40.0;

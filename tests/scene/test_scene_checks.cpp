@@ -63,7 +63,7 @@ TEST(SceneChecks, RestingHydrostaticsAgreeWithTheStaticEquilibrium) {
   const Scene scene = load_scene(kCrane);
   const RestingHydrostatics rest = resting_hydrostatics(scene);
   // The checks take the boom as built (rigid): compare with the rigid boom's equilibrium.
-  auto crane = build_crane(scene, BoomChoice{BoomKind::rigid, 1});
+  auto crane = build_crane_equations(scene, BoomChoice{BoomKind::rigid, 1});
   const auto statics = multibody::solve_static_equilibrium(*crane, crane->initial_guess());
   const Hull& hull = *scene.hull;
   // The box's draft at mid-length is the mean draft for any small trim: exact.
@@ -144,7 +144,7 @@ TEST(SceneChecks, NoMooringMeansNoSurgeEquilibrium) {
   // ...and it is real: without the spring KINSOL finds no equilibrium (the surge row is singular).
   Scene scene = load_scene(kCrane);
   scene.mooring.surge_stiffness = 0.0;
-  auto crane = build_crane(scene, BoomChoice{BoomKind::nodal, 2});
+  auto crane = build_crane_equations(scene, BoomChoice{BoomKind::nodal, 2});
   EXPECT_THROW((void)multibody::solve_static_equilibrium(*crane, crane->initial_guess()), solve::SolverFailure);
 }
 
@@ -154,7 +154,7 @@ TEST(SceneChecks, DeckUnderWaterAtRestIsNamedBeforeKinsolFails) {
   expect_problem(text, "cargo.mass", "the deck would be under water at rest");
   Scene scene = load_scene(kCrane);
   scene.cargo->mass = 14.0e6;
-  auto crane = build_crane(scene, BoomChoice{BoomKind::nodal, 2});
+  auto crane = build_crane_equations(scene, BoomChoice{BoomKind::nodal, 2});
   EXPECT_THROW((void)multibody::solve_static_equilibrium(*crane, crane->initial_guess()), solve::SolverFailure);
 }
 

@@ -62,7 +62,7 @@ struct DropRun {
 };
 
 DropRun drop(const scene::Scene& scene, const scene::BoomChoice& choice) {
-  auto equations = scene::build_crane(scene, choice);
+  auto equations = scene::build_crane_equations(scene, choice);
   const multibody::StaticEquilibrium statics = multibody::solve_static_equilibrium(*equations, equations->initial_guess());
   Eigen::VectorXd z0 = statics.z;
   z0(equations->cargo_offset() + 1) += scene.simulation.cargo_lift;  // raised, released at rest
@@ -151,7 +151,7 @@ TEST(SnapLoads, ElasticBoomFirstSnapAfterTheSameFreeFallButSofter) {
   scene::Scene unloaded = scene;
   unloaded.cargo.reset();
   unloaded.wire.reset();
-  auto boom_alone = scene::build_crane(unloaded, elastic);
+  auto boom_alone = scene::build_crane_equations(unloaded, elastic);
   const int m = boom_alone->minimal_size();
   Eigen::VectorXd eta = Eigen::VectorXd::Zero(m), r0(m), r1(m);
   boom_alone->static_residual(eta, r0);
@@ -172,10 +172,10 @@ TEST(SnapLoads, ElasticBoomFirstSnapAfterTheSameFreeFallButSofter) {
   const double q = mesh.section.mass_per_length * scene.environment.gravity * std::cos(scene::boom_angle_at_rest(scene));
   EXPECT_NEAR(self_weight.tip_deflection.y() / (-q * std::pow(mesh.length, 4) / (8.0 * mesh.section.bending_rigidity())), 1.0, 1e-6);
 
-  auto rigid = scene::build_crane(scene, {scene::BoomKind::rigid, 1, 0, false});
+  auto rigid = scene::build_crane_equations(scene, {scene::BoomKind::rigid, 1, 0, false});
   const auto rigid_statics = multibody::solve_static_equilibrium(*rigid, rigid->initial_guess());
 
-  auto equations = scene::build_crane(scene, elastic);
+  auto equations = scene::build_crane_equations(scene, elastic);
   const int n = equations->elastic_size(), c = equations->cargo_offset();
   ASSERT_EQ(n, boom_alone->elastic_size());
   Eigen::VectorXd z0 = equations->initial_guess();

@@ -43,7 +43,7 @@ multibody::RunSettings spin_settings(const scene::Scene& scene, solve::Integrato
 }
 
 multibody::RunResult run(const scene::Scene& scene, const scene::BoomChoice& choice, const multibody::RunSettings& settings) {
-  auto equations = scene::build_crane(scene, choice);
+  auto equations = scene::build_crane_equations(scene, choice);
   const Eigen::VectorXd z0 = multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z;
   return multibody::simulate(*equations, z0, settings);
 }

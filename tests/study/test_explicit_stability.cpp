@@ -33,7 +33,7 @@ struct Measured {
 };
 
 Measured measure(const scene::Scene& scene, const scene::BoomChoice& choice) {
-  Measured m{scene::build_crane(scene, choice), {}, 0.0, {}};
+  Measured m{scene::build_crane_equations(scene, choice), {}, 0.0, {}};
   m.z0 = multibody::solve_static_equilibrium(*m.equations, m.equations->initial_guess()).z;
   m.jacobian_limit = solve::explicit_stable_step(*m.equations, m.z0);
   // Start the bracket away from the theory so the search has to find the limit itself.

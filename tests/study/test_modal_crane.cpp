@@ -39,8 +39,8 @@ TEST(ModalCrane, FullModalBasisReproducesTheNodalTimeHistory) {
   modal::ModalBasis basis;
   basis.vectors = dense.eigenvectors();  // all 9 M-orthonormal modes
   basis.vibration_count = static_cast<int>(basis.vectors.cols());
-  auto modal_equations = multibody::make_crane_equations(scene::build_crane_model(scene, modal::ModalCoordinates(beam, basis)));
-  auto nodal_equations = scene::build_crane(scene, {scene::BoomKind::nodal, elements, 0, false});
+  auto modal_equations = multibody::make_crane_equations(scene::build_crane_parameters(scene, modal::ModalCoordinates(beam, basis)));
+  auto nodal_equations = scene::build_crane_equations(scene, {scene::BoomKind::nodal, elements, 0, false});
   const auto s = settings(30.0, 1e-11);
   const auto modal_run = run_from_equilibrium(*modal_equations, s);
   const auto nodal_run = run_from_equilibrium(*nodal_equations, s);
@@ -58,11 +58,11 @@ TEST(ModalCrane, ErrorFallsWithModeCountAndStaticModesCarryTheQuasiStaticLoad) {
   const scene::Scene scene = test::reference_scene();
   const double duration = 50.0;  // ramp (20 s) + three wave periods
   const double window = study::ramp_end(scene);
-  auto nodal_equations = scene::build_crane(scene, {scene::BoomKind::nodal, 16, 0, false});
+  auto nodal_equations = scene::build_crane_equations(scene, {scene::BoomKind::nodal, 16, 0, false});
   const auto s = settings(duration, 1e-9);
   const auto reference = run_from_equilibrium(*nodal_equations, s);
   auto cargo_heave_error = [&](int k, bool with_static) {
-    auto equations = scene::build_crane(scene, {scene::BoomKind::modal, 16, k, with_static});
+    auto equations = scene::build_crane_equations(scene, {scene::BoomKind::modal, 16, k, with_static});
     return multibody::compare_runs(run_from_equilibrium(*equations, s), reference, window)[OutputChannel::cargo_heave].normalized_rms;
   };
   const double e1 = cargo_heave_error(1, false), e2 = cargo_heave_error(2, false), e4 = cargo_heave_error(4, false);

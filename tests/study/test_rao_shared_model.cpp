@@ -1,7 +1,7 @@
 // `ffrf rao` on one model per boom (study/rao.cpp): each boom model is built and linearised once,
 // and the excitation at each ω comes from that model in the regular wave (scene::with_waters). The
 // second method is the path it replaced, written out here: a crane built from scratch in the regular
-// wave at every frequency (scene::build_crane), its excitation, the [bem] hull's Z(iω), and the
+// wave at every frequency (scene::build_crane_equations), its excitation, the [bem] hull's Z(iω), and the
 // response — equal within 1e-12 on the reference scene and on the BEM barge.
 // Also the memory hull's natural modes: a Newton start that cannot converge (no steps allowed, or an
 // impedance that is not finite) keeps the constant system's root and says so (NaturalMode::unrefined).
@@ -40,7 +40,7 @@ std::array<std::vector<std::complex<double>>, multibody::linear_output_count> pe
   const study::HullImpedance impedance = scene.bem ? study::bem_hull_impedance(scene, study::BemRadiationSource::file) : nullptr;
   std::array<std::vector<std::complex<double>>, multibody::linear_output_count> response;
   for (const double omega : omegas) {
-    const auto waved = scene::build_crane(study::with_regular_wave(scene, 2.0 * a, 2.0 * std::numbers::pi / omega, 0.0), choice, &modes);
+    const auto waved = scene::build_crane_equations(study::with_regular_wave(scene, 2.0 * a, 2.0 * std::numbers::pi / omega, 0.0), choice, &modes);
     const Eigen::VectorXcd force = multibody::wave_excitation(*waved, linear, omega, a);
     Eigen::MatrixXd mass = linear.mass, damping = linear.damping;
     if (impedance) {

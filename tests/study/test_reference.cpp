@@ -37,7 +37,7 @@ TEST(Reference, ReferenceSceneReferenceIsConvergedByItsOwnCheck) {
   }
   // Re-run the previous level independently and compare with the reference.
   const auto& previous = reference.levels[reference.levels.size() - 2];
-  auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, previous.elements, 0, false});
+  auto equations = scene::build_crane_equations(scene, {scene::BoomKind::nodal, previous.elements, 0, false});
   multibody::RunSettings settings = reference.settings;
   settings.relative_tolerance = settings.absolute_tolerance = previous.relative_tolerance;
   const auto run = multibody::simulate(*equations, multibody::solve_static_equilibrium(*equations, equations->initial_guess()).z, settings);

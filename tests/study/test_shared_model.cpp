@@ -1,7 +1,7 @@
 // Model and workspace apart: CraneEquations made from ONE shared crane model
-// (scene/crane_model_cache.hpp, multibody/crane_system.hpp) and integrated by several threads at
+// (scene/crane_model_cache.hpp, multibody/crane_model.hpp) and integrated by several threads at
 // once give, bit for bit, what a run on a model of its own gives serially (the second method: the
-// unshared path, build_crane → its own model). Nodal and modal booms on the reference scene, and
+// unshared path, build_crane_equations → its own model). Nodal and modal booms on the reference scene, and
 // the BEM barge crane with Cummins convolution radiation, whose radiation memory is run state that
 // each set of equations must own. Also: making more equations from a model repeats no eigen
 // solve and no model build.

@@ -137,7 +137,7 @@ TEST(Statics, LightCargoOnTheLargeCraneSolvesDirectly) {
 // checks' back): the failure names the hull's heave force, not slack or buckling.
 TEST(Statics, AHullThatCannotFloatTheLoadIsNamed) {
   const scene::Scene scene = test::scene_file("large_crane.toml");
-  auto model = scene::build_crane_model(scene, nodal::NodalCoordinates(scene::boom_beam(scene, 4)));
+  auto model = scene::build_crane_parameters(scene, nodal::NodalCoordinates(scene::boom_beam(scene, 4)));
   const scene::Hull& hull = *scene.hull;
   model.hull.mass = 1.2 * scene.environment.water_density * hull.length * hull.width * hull.depth;
   auto equations = multibody::make_crane_equations(std::move(model));
@@ -157,7 +157,7 @@ TEST(Statics, AHullThatCannotFloatTheLoadIsNamed) {
 // equilibrium Newton finds from the rest pose.
 TEST(Statics, ContinuationFromAPoorStartReachesTheSameEquilibrium) {
   const scene::Scene scene = test::scene_file("paper_floating_crane.toml");
-  auto equations = scene::build_crane(scene, {scene::BoomKind::nodal, 16, 0, false});
+  auto equations = scene::build_crane_equations(scene, {scene::BoomKind::nodal, 16, 0, false});
   multibody::StaticSolvePath direct_path, poor_path;
   const multibody::StaticEquilibrium direct =
       multibody::solve_static_equilibrium(*equations, equations->initial_guess(), direct_path);

@@ -1,13 +1,13 @@
-// The immutable half of the crane equations (Pinocchio's Model; multibody/crane_system.hpp): the
-// CraneModel and the constant data derived from it alone, computed once and shared read-only by
+// The immutable half of the crane equations (Pinocchio's Model; multibody/crane_model.hpp): the
+// CraneParameters and the constant data derived from it alone, computed once and shared read-only by
 // every CraneEquations made from it (any thread):
 //  * the factorization of the constant elastic mass M_ff (sparse LDLᵀ for nodal coordinates, dense
 //    for modal ones), M_ff as a dense block, and M_ff⁻¹S̄ᵀ, M_ff⁻¹cᵀ (the constant columns of
-//    M_ff⁻¹M_fR in the Schur complement, crane_system_minimal.ipp);
+//    M_ff⁻¹M_fR in the Schur complement, crane_equations_minimal.ipp);
 //  * the Newton blocks' structure (bordered band for a nodal boom, dense otherwise) and the elastic
-//    coordinates that move the wire's attachment (crane_system_jacobian.ipp);
+//    coordinates that move the wire's attachment (crane_equations_jacobian.ipp);
 //  * the coordinates' typical sizes (tolerances and difference increments).
-// Template definitions; included only through multibody/crane_system_impl.hpp.
+// Template definitions; included only through multibody/crane_equations_of.hpp.
 #pragma once
 
 #include <Eigen/SparseCholesky>
@@ -19,7 +19,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "multibody/crane_system.hpp"
+#include "multibody/crane_model.hpp"
 
 namespace ffrf::multibody::detail {
 
@@ -28,12 +28,12 @@ using MassFactor = std::conditional_t<std::is_base_of_v<Eigen::SparseMatrixBase<
                                       Eigen::SimplicialLDLT<Matrix>, Eigen::LDLT<Eigen::MatrixXd>>;
 
 template <fem::ElasticCoordinates Coords>
-class CraneConstants final : public SharedCraneModel, public std::enable_shared_from_this<CraneConstants<Coords>> {
+class CraneModelOf final : public CraneModel, public std::enable_shared_from_this<CraneModelOf<Coords>> {
  public:
-  explicit CraneConstants(CraneModel<Coords> crane);
+  explicit CraneModelOf(CraneParameters<Coords> crane);
 
-  std::unique_ptr<CraneEquations> equations() const override;  // multibody/crane_system.cpp
-  std::shared_ptr<const SharedCraneModel> in_waters(const HullModel& hull,
+  std::unique_ptr<CraneEquations> equations() const override;  // multibody/crane_model.cpp
+  std::shared_ptr<const CraneModel> in_waters(const HullModel& hull,
                                                     const std::optional<sea::WaveField>& wave) const override;  // ditto
   int elastic_size() const override { return n; }
 
@@ -42,7 +42,7 @@ class CraneConstants final : public SharedCraneModel, public std::enable_shared_
   int minimal_size() const { return elastic_at + n; }
   int full_size() const { return elastic_at + 3 + n; }
 
-  CraneModel<Coords> model;
+  CraneParameters<Coords> model;
   int n;           // elastic coordinates
   int cargo_at;    // index of the cargo block (0 with a fixed hull, 3 otherwise)
   int elastic_at;  // minimal: index of η; full: index of the boom frame (R_B, θ_B) (cargo_at + 3 or + 0)
@@ -61,7 +61,7 @@ class CraneConstants final : public SharedCraneModel, public std::enable_shared_
 };
 
 template <fem::ElasticCoordinates Coords>
-CraneConstants<Coords>::CraneConstants(CraneModel<Coords> crane)
+CraneModelOf<Coords>::CraneModelOf(CraneParameters<Coords> crane)
     : model(std::move(crane)),
       n(static_cast<int>(model.boom.elastic_size())),
       cargo_at(model.hull.fixed ? 0 : 3),
@@ -100,7 +100,7 @@ CraneConstants<Coords>::CraneConstants(CraneModel<Coords> crane)
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneConstants<Coords>::find_structures() {
+void CraneModelOf<Coords>::find_structures() {
   for (int j = 0; j < n; ++j) {
     if (model.boom_tip.shape.col(j).squaredNorm() > 0.0) tip_columns.push_back(j);
   }

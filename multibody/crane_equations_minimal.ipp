@@ -11,7 +11,7 @@
 namespace ffrf::multibody::detail {
 
 template <fem::ElasticCoordinates Coords>
-CraneSystem<Coords>::CraneSystem(std::shared_ptr<const CraneConstants<Coords>> shared)
+CraneEquationsOf<Coords>::CraneEquationsOf(std::shared_ptr<const CraneModelOf<Coords>> shared)
     : shared_(std::move(shared)),
       m_(shared_->model),
       n_(shared_->n),
@@ -31,14 +31,14 @@ CraneSystem<Coords>::CraneSystem(std::shared_ptr<const CraneConstants<Coords>> s
 }
 
 template <fem::ElasticCoordinates Coords>
-Eigen::Matrix3d CraneSystem<Coords>::hull_rigid_inertia() const {
+Eigen::Matrix3d CraneEquationsOf<Coords>::hull_rigid_inertia() const {
   Eigen::Matrix3d inertia = (Eigen::Vector3d(m_.hull.mass, m_.hull.mass, m_.hull.pitch_inertia) + m_.hull.added_mass).asDiagonal();
   if (radiation_.active()) inertia += radiation_.added_mass();
   return inertia;
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::mount_boom(const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v) {
+void CraneEquationsOf<Coords>::mount_boom(const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v) {
   mount_offset_ = rotation(hull_q(2)) * m_.mount.root;
   boom_q_.head<2>() = hull_q.head<2>() + mount_offset_;
   boom_q_(2) = hull_q(2) + m_.mount.angle;
@@ -47,7 +47,7 @@ void CraneSystem<Coords>::mount_boom(const Eigen::Vector3d& hull_q, const Eigen:
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v,
+void CraneEquationsOf<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v,
                                          const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool with_wave) {
   const double g = m_.gravity;
   const HullModel& hull = m_.hull;
@@ -80,7 +80,7 @@ void CraneSystem<Coords>::evaluate_loads(double t, const Eigen::Vector3d& hull_q
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::boom_and_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v,
+void CraneEquationsOf<Coords>::boom_and_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v,
                                               bool bilateral_wire) {
   const double g = m_.gravity;
   m_.boom.loads_and_mass_blocks(boom_q_, boom_v_, Eigen::Vector2d(0.0, -g), boom_force_, boom_reference_mass_, boom_coupling_,
@@ -95,7 +95,7 @@ void CraneSystem<Coords>::boom_and_wire_loads(const Eigen::Vector3d& cargo_q, co
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::add_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool bilateral,
+void CraneEquationsOf<Coords>::add_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool bilateral,
                                          Ref boom, Eigen::Vector3d& cargo) {
   const auto tip = m_.boom.point_motion(boom_q_, boom_v_, m_.boom_tip);
   const Eigen::Vector2d hook_arm = rotation(cargo_q(2)) * m_.cargo.hook;
@@ -109,7 +109,7 @@ void CraneSystem<Coords>::add_wire_loads(const Eigen::Vector3d& cargo_q, const E
 }
 
 template <fem::ElasticCoordinates Coords>
-Eigen::Vector3d CraneSystem<Coords>::frame_known_acceleration(double t, const Eigen::Vector3d& hull_v) const {
+Eigen::Vector3d CraneEquationsOf<Coords>::frame_known_acceleration(double t, const Eigen::Vector3d& hull_v) const {
   Eigen::Vector3d known;
   known.head<2>() = -hull_v(2) * hull_v(2) * mount_offset_;
   known(2) = 0.0;
@@ -122,7 +122,7 @@ Eigen::Vector3d CraneSystem<Coords>::frame_known_acceleration(double t, const Ei
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::split_minimal(double t, ConstRef z, ConstRef z_dot, Eigen::Vector3d& hull_q,
+void CraneEquationsOf<Coords>::split_minimal(double t, ConstRef z, ConstRef z_dot, Eigen::Vector3d& hull_q,
                                         Eigen::Vector3d& hull_v) const {
   if (hull_free()) {
     hull_q = z.head<3>();
@@ -134,7 +134,7 @@ void CraneSystem<Coords>::split_minimal(double t, ConstRef z, ConstRef z_dot, Ei
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::minimal_forces(double t, ConstRef z, ConstRef z_dot, bool with_wave) {
+void CraneEquationsOf<Coords>::minimal_forces(double t, ConstRef z, ConstRef z_dot, bool with_wave) {
   Eigen::Vector3d hull_q, hull_v;
   split_minimal(t, z, z_dot, hull_q, hull_v);
   mount_boom(hull_q, hull_v);
@@ -154,7 +154,7 @@ void CraneSystem<Coords>::minimal_forces(double t, ConstRef z, ConstRef z_dot, b
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z_dot, Ref z_ddot) {
+void CraneEquationsOf<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z_dot, Ref z_ddot) {
   minimal_forces(t, z, z_dot, true);
   if (has_cargo()) z_ddot.segment<3>(cargo_at_) = cargo_force_.cwiseQuotient(cargo_inertia());
   Eigen::Vector3d hull_a = Eigen::Vector3d::Zero();
@@ -179,7 +179,7 @@ void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z
       rhs -= hull_elastic_mass_ * schur_rhs_;
     }
     // LDLᵀ reads the lower triangle: the hull block is symmetric because the added mass is (checked
-    // when the model is made, multibody/crane_constants.hpp), so this is the matrix the residual uses.
+    // when the model is made, multibody/crane_model_of.hpp), so this is the matrix the residual uses.
     const Eigen::LDLT<Eigen::Matrix3d> schur_factor(schur);
     // A non-finite state is a divergence for the integrator to report, not a mass-matrix failure.
     if (schur.allFinite() &&
@@ -201,27 +201,27 @@ void CraneSystem<Coords>::minimal_accelerations(double t, ConstRef z, ConstRef z
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::gather_minimal_forces(Ref forces) const {
+void CraneEquationsOf<Coords>::gather_minimal_forces(Ref forces) const {
   if (hull_free()) forces.head<3>() = hull_rhs_;
   if (has_cargo()) forces.segment<3>(cargo_at_) = cargo_force_;
   forces.tail(n_) = elastic_rhs_;
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::static_residual(ConstRef z, Ref residual) {
+void CraneEquationsOf<Coords>::static_residual(ConstRef z, Ref residual) {
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(z.size());
   minimal_forces(0.0, z, zero, false);
   gather_minimal_forces(residual);
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::minimal_generalized_forces(double t, ConstRef z, ConstRef z_dot, Ref forces) {
+void CraneEquationsOf<Coords>::minimal_generalized_forces(double t, ConstRef z, ConstRef z_dot, Ref forces) {
   minimal_forces(t, z, z_dot, true);
   gather_minimal_forces(forces);
 }
 
 template <fem::ElasticCoordinates Coords>
-Eigen::VectorXd CraneSystem<Coords>::initial_guess() const {
+Eigen::VectorXd CraneEquationsOf<Coords>::initial_guess() const {
   Eigen::VectorXd z = Eigen::VectorXd::Zero(minimal_size());
   const Eigen::Vector3d hull_q = base_pose(0.0);
   if (hull_free()) z.head<3>() = hull_q;
@@ -236,7 +236,7 @@ Eigen::VectorXd CraneSystem<Coords>::initial_guess() const {
 }
 
 template <fem::ElasticCoordinates Coords>
-Eigen::VectorXd CraneSystem<Coords>::static_residual_scale() const {
+Eigen::VectorXd CraneEquationsOf<Coords>::static_residual_scale() const {
   // 1 / (weight of the inertia on each row over 1 m): forces of order M_ii g.
   Eigen::VectorXd scale(minimal_size());
   const double g = m_.gravity;
@@ -256,18 +256,18 @@ Eigen::VectorXd CraneSystem<Coords>::static_residual_scale() const {
 }
 
 template <fem::ElasticCoordinates Coords>
-Eigen::VectorXd CraneSystem<Coords>::coordinate_scale() const {
-  return shared_->minimal_scale;  // 1 m, 0.01 rad for the pitches, the elastic ones' 1 cm (crane_constants.hpp)
+Eigen::VectorXd CraneEquationsOf<Coords>::coordinate_scale() const {
+  return shared_->minimal_scale;  // 1 m, 0.01 rad for the pitches, the elastic ones' 1 cm (crane_model_of.hpp)
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::boom_tip_kinematics(const Eigen::Vector3d& cargo_q, Eigen::Vector2d& tip, Eigen::Vector2d& hook) const {
+void CraneEquationsOf<Coords>::boom_tip_kinematics(const Eigen::Vector3d& cargo_q, Eigen::Vector2d& tip, Eigen::Vector2d& hook) const {
   tip = m_.boom.position(boom_q_, m_.boom_tip);
   hook = cargo_q.head<2>() + rotation(cargo_q(2)) * m_.cargo.hook;
 }
 
 template <fem::ElasticCoordinates Coords>
-double CraneSystem<Coords>::wire_stretch_minimal(double t, ConstRef z) {
+double CraneEquationsOf<Coords>::wire_stretch_minimal(double t, ConstRef z) {
   if (!has_cargo()) return 1.0;
   Eigen::Vector3d hull_q, hull_v;
   split_minimal(t, z, z, hull_q, hull_v);
@@ -279,7 +279,7 @@ double CraneSystem<Coords>::wire_stretch_minimal(double t, ConstRef z) {
 }
 
 template <fem::ElasticCoordinates Coords>
-CraneOutputs CraneSystem<Coords>::minimal_outputs(double t, ConstRef z, ConstRef z_dot) {
+CraneOutputs CraneEquationsOf<Coords>::minimal_outputs(double t, ConstRef z, ConstRef z_dot) {
   if (hull_free()) record_hull_velocity(t, z_dot.head<3>());
   Eigen::VectorXd z_ddot(z.size());
   minimal_accelerations(t, z, z_dot, z_ddot);
@@ -295,7 +295,7 @@ CraneOutputs CraneSystem<Coords>::minimal_outputs(double t, ConstRef z, ConstRef
 }
 
 template <fem::ElasticCoordinates Coords>
-CraneOutputs CraneSystem<Coords>::common_outputs(const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v,
+CraneOutputs CraneEquationsOf<Coords>::common_outputs(const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v,
                                                  const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v) {
   CraneOutputs out;
   out.hull = hull_q;

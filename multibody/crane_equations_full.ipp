@@ -11,7 +11,7 @@
 namespace ffrf::multibody::detail {
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::full_from_minimal(double t, ConstRef z, ConstRef z_dot, Ref q, Ref v) const {
+void CraneEquationsOf<Coords>::full_from_minimal(double t, ConstRef z, ConstRef z_dot, Ref q, Ref v) const {
   Eigen::Vector3d hull_q, hull_v;
   split_minimal(t, z, z_dot, hull_q, hull_v);
   if (hull_free()) {
@@ -33,7 +33,7 @@ void CraneSystem<Coords>::full_from_minimal(double t, ConstRef z, ConstRef z_dot
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::full_mass_times(ConstRef q, ConstRef a, Ref out) {
+void CraneEquationsOf<Coords>::full_mass_times(ConstRef q, ConstRef a, Ref out) {
   const int b = elastic_at_;
   if (hull_free()) out.head<3>() = hull_rigid_inertia() * a.head<3>();
   if (has_cargo()) out.segment<3>(cargo_at_) = cargo_inertia().cwiseProduct(a.segment<3>(cargo_at_));
@@ -45,7 +45,7 @@ void CraneSystem<Coords>::full_mass_times(ConstRef q, ConstRef a, Ref out) {
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::full_mass_matrix(ConstRef q, Eigen::MatrixXd& mass) {
+void CraneEquationsOf<Coords>::full_mass_matrix(ConstRef q, Eigen::MatrixXd& mass) {
   const int size = full_size(), b = elastic_at_;
   mass.setZero(size, size);
   if (hull_free()) mass.topLeftCorner<3, 3>() = hull_rigid_inertia();
@@ -59,7 +59,7 @@ void CraneSystem<Coords>::full_mass_matrix(ConstRef q, Eigen::MatrixXd& mass) {
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::full_forces(double t, ConstRef q, ConstRef v, Ref out) {
+void CraneEquationsOf<Coords>::full_forces(double t, ConstRef q, ConstRef v, Ref out) {
   const Eigen::Vector3d hull_q = hull_free() ? Eigen::Vector3d(q.head<3>()) : base_pose(t);
   const Eigen::Vector3d hull_v = hull_free() ? Eigen::Vector3d(v.head<3>()) : base_velocity(t);
   boom_q_ = q.tail(3 + n_);
@@ -73,7 +73,7 @@ void CraneSystem<Coords>::full_forces(double t, ConstRef q, ConstRef v, Ref out)
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::constraint(double t, ConstRef q, Ref c) const {
+void CraneEquationsOf<Coords>::constraint(double t, ConstRef q, Ref c) const {
   const Eigen::Vector3d hull_q = hull_free() ? Eigen::Vector3d(q.head<3>()) : base_pose(t);
   const int b = elastic_at_;
   c.head<2>() = hull_q.head<2>() + rotation(hull_q(2)) * m_.mount.root - q.segment<2>(b);
@@ -81,7 +81,7 @@ void CraneSystem<Coords>::constraint(double t, ConstRef q, Ref c) const {
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::constraint_jacobian(ConstRef q, Eigen::MatrixXd& jacobian) const {
+void CraneEquationsOf<Coords>::constraint_jacobian(ConstRef q, Eigen::MatrixXd& jacobian) const {
   jacobian.setZero(3, full_size());
   const int b = elastic_at_;
   if (hull_free()) {
@@ -94,7 +94,7 @@ void CraneSystem<Coords>::constraint_jacobian(ConstRef q, Eigen::MatrixXd& jacob
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::constraint_time_derivative(double t, Ref c_t) const {
+void CraneEquationsOf<Coords>::constraint_time_derivative(double t, Ref c_t) const {
   c_t.setZero();
   if (hull_free() || !m_.hull.prescribed) return;
   const Eigen::Vector3d pose = base_pose(t), rate = base_velocity(t);
@@ -103,7 +103,7 @@ void CraneSystem<Coords>::constraint_time_derivative(double t, Ref c_t) const {
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::constraint_rate_terms(double t, ConstRef q, ConstRef v, Ref gamma) const {
+void CraneEquationsOf<Coords>::constraint_rate_terms(double t, ConstRef q, ConstRef v, Ref gamma) const {
   gamma.setZero();
   if (hull_free()) {
     gamma.head<2>() = v(2) * v(2) * (rotation(q(2)) * m_.mount.root);
@@ -116,7 +116,7 @@ void CraneSystem<Coords>::constraint_rate_terms(double t, ConstRef q, ConstRef v
 }
 
 template <fem::ElasticCoordinates Coords>
-double CraneSystem<Coords>::wire_stretch_full(ConstRef q) {
+double CraneEquationsOf<Coords>::wire_stretch_full(ConstRef q) {
   if (!has_cargo()) return 1.0;
   boom_q_ = q.tail(3 + n_);
   Eigen::Vector2d tip, hook;
@@ -125,7 +125,7 @@ double CraneSystem<Coords>::wire_stretch_full(ConstRef q) {
 }
 
 template <fem::ElasticCoordinates Coords>
-CraneOutputs CraneSystem<Coords>::full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) {
+CraneOutputs CraneEquationsOf<Coords>::full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) {
   if (hull_free()) record_hull_velocity(t, v.head<3>());
   Eigen::VectorXd forces(full_size());
   full_forces(t, q, v, forces);

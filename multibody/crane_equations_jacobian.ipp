@@ -22,7 +22,7 @@
 namespace ffrf::multibody::detail {
 
 template <fem::ElasticCoordinates Coords>
-Eigen::Matrix3d CraneSystem<Coords>::mount_jacobian() const {
+Eigen::Matrix3d CraneEquationsOf<Coords>::mount_jacobian() const {
   Eigen::Matrix3d jr = Eigen::Matrix3d::Identity();
   jr(0, 2) = -mount_offset_.y();
   jr(1, 2) = mount_offset_.x();
@@ -30,7 +30,7 @@ Eigen::Matrix3d CraneSystem<Coords>::mount_jacobian() const {
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::minimal_residual(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, Ref out) {
+void CraneEquationsOf<Coords>::minimal_residual(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, Ref out) {
   minimal_forces(t, z, z_dot, true);
   const auto eta_ddot = z_ddot.tail(n_);
   out.tail(n_) = elastic_rhs_;
@@ -47,7 +47,7 @@ void CraneSystem<Coords>::minimal_residual(double t, ConstRef z, ConstRef z_dot,
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::minimal_wire_residual(double t, ConstRef z, ConstRef z_dot, Ref out) {
+void CraneEquationsOf<Coords>::minimal_wire_residual(double t, ConstRef z, ConstRef z_dot, Ref out) {
   out.setZero();
   if (!has_cargo()) return;
   Eigen::Vector3d hull_q, hull_v;
@@ -64,14 +64,14 @@ void CraneSystem<Coords>::minimal_wire_residual(double t, ConstRef z, ConstRef z
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::full_residual(double t, ConstRef q, ConstRef v, ConstRef v_dot, Ref out) {
+void CraneEquationsOf<Coords>::full_residual(double t, ConstRef q, ConstRef v, ConstRef v_dot, Ref out) {
   full_forces(t, q, v, out);
   full_mass_times(q, v_dot, full_inertia_);
   out -= full_inertia_;
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::full_wire_residual(ConstRef q, ConstRef v, Ref out) {
+void CraneEquationsOf<Coords>::full_wire_residual(ConstRef q, ConstRef v, Ref out) {
   out.setZero();
   if (!has_cargo()) return;
   boom_q_ = q.tail(3 + n_);
@@ -138,7 +138,7 @@ void difference_columns(int size, int dense_columns, int elastic_offset, const s
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::minimal_jacobian(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, SecondOrderJacobian& out) {
+void CraneEquationsOf<Coords>::minimal_jacobian(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, SecondOrderJacobian& out) {
   const int size = minimal_size(), e = elastic_at_;
   out.set_zero();
   minimal_forces(t, z, z_dot, true);  // mounts the boom, its mass blocks and hull_elastic_mass_
@@ -188,7 +188,7 @@ void CraneSystem<Coords>::minimal_jacobian(double t, ConstRef z, ConstRef z_dot,
 }
 
 template <fem::ElasticCoordinates Coords>
-void CraneSystem<Coords>::full_jacobian(double t, ConstRef q, ConstRef v, ConstRef v_dot, SecondOrderJacobian& out) {
+void CraneEquationsOf<Coords>::full_jacobian(double t, ConstRef q, ConstRef v, ConstRef v_dot, SecondOrderJacobian& out) {
   const int size = full_size(), b = elastic_at_, e = elastic_at_ + 3;
   out.set_zero();
   if (hull_free()) {
@@ -235,7 +235,7 @@ void CraneSystem<Coords>::full_jacobian(double t, ConstRef q, ConstRef v, ConstR
 }
 
 template <fem::ElasticCoordinates Coords>
-CraneOutputs CraneSystem<Coords>::minimal_outputs_with_accelerations(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot) {
+CraneOutputs CraneEquationsOf<Coords>::minimal_outputs_with_accelerations(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot) {
   Eigen::Vector3d hull_q, hull_v;
   split_minimal(t, z, z_dot, hull_q, hull_v);
   record_hull_velocity(t, hull_v);

@@ -1,7 +1,7 @@
-// Template definitions of the crane equations (multibody/crane_system.hpp); included only by
-// multibody/crane_system.cpp, which instantiates them for the nodal and the modal coordinates.
-// CraneSystem is the per-instance half (Pinocchio's Data): it reads the shared, immutable
-// CraneConstants (multibody/crane_constants.hpp) and owns only its workspace (the vectors and
+// Template definitions of the crane equations (multibody/crane_model.hpp); included only by
+// multibody/crane_model.cpp, which instantiates them for the nodal and the modal coordinates.
+// CraneEquationsOf is the per-instance half (Pinocchio's Data): it reads the shared, immutable
+// CraneModelOf (multibody/crane_model_of.hpp) and owns only its workspace (the vectors and
 // matrices one evaluation fills, allocated once) and its run state (the radiation memory).
 #pragma once
 
@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-#include "multibody/crane_constants.hpp"
+#include "multibody/crane_model_of.hpp"
 #include "sea/excitation_record.hpp"
 #include "sea/hull_pressure_recorded.hpp"
 #include "multibody/wire_rope.hpp"
@@ -17,9 +17,9 @@
 namespace ffrf::multibody::detail {
 
 template <fem::ElasticCoordinates Coords>
-class CraneSystem final : public CraneEquations {
+class CraneEquationsOf final : public CraneEquations {
  public:
-  explicit CraneSystem(std::shared_ptr<const CraneConstants<Coords>> shared);
+  explicit CraneEquationsOf(std::shared_ptr<const CraneModelOf<Coords>> shared);
 
   int minimal_size() const override { return elastic_at_ + n_; }
   Eigen::VectorXd initial_guess() const override;
@@ -112,9 +112,9 @@ class CraneSystem final : public CraneEquations {
                               const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v);
   void boom_tip_kinematics(const Eigen::Vector3d& cargo_q, Eigen::Vector2d& tip, Eigen::Vector2d& hook) const;
 
-  // The shared model (read-only) and, for brevity, its CraneModel and layout.
-  std::shared_ptr<const CraneConstants<Coords>> shared_;
-  const CraneModel<Coords>& m_;
+  // The shared model (read-only) and, for brevity, its CraneParameters and layout.
+  std::shared_ptr<const CraneModelOf<Coords>> shared_;
+  const CraneParameters<Coords>& m_;
   const int n_;
   const int cargo_at_;    // index of the cargo block (0 with a fixed hull, 3 otherwise)
   const int elastic_at_;  // minimal: index of η; full: index of the boom frame (R_B, θ_B) (cargo_at_ + 3 or + 0)
@@ -150,6 +150,6 @@ class CraneSystem final : public CraneEquations {
 
 }  // namespace ffrf::multibody::detail
 
-#include "multibody/crane_system_minimal.ipp"
-#include "multibody/crane_system_full.ipp"
-#include "multibody/crane_system_jacobian.ipp"
+#include "multibody/crane_equations_minimal.ipp"
+#include "multibody/crane_equations_full.ipp"
+#include "multibody/crane_equations_jacobian.ipp"

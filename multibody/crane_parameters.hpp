@@ -1,0 +1,93 @@
+// The floating crane as constant data (the "model", Pinocchio style): hull G1, elastic boom on a
+// floating frame clamped to the hull at B, cargo G2 on a wire rope from the boom tip A′ to the hook
+// C, and the environment. Built once from a scene (scene/crane_builder.hpp); read-only in a run:
+// it becomes part of a CraneModel (multibody/crane_model.hpp) that threads share.
+// Planar, SI units, y up, angles counter-clockwise (docs/architecture.md, "Conventions").
+#pragma once
+
+#include <Eigen/Dense>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "sea/bem_excitation.hpp"
+#include "multibody/floating_frame_body.hpp"
+#include "sea/hull_pressure.hpp"
+#include "multibody/prescribed_motion.hpp"
+#include "sea/wave_field.hpp"
+#include "hydro/radiation_memory.hpp"
+
+namespace ffrf::sea {
+class IncidentWaveRecord;  // sea/incident_wave_record.hpp
+class ExcitationRecord;    // sea/excitation_record.hpp
+}  // namespace ffrf::sea
+
+namespace ffrf::multibody {
+
+struct HullModel {
+  double mass = 0.0;                                        // without the boom [kg]
+  double pitch_inertia = 0.0;                               // about G1 [kg m²]
+  sea::BoxHullSection section{};                                 // box, hull frame at G1
+  Eigen::Vector3d added_mass = Eigen::Vector3d::Zero();     // A11, A33, A55 (surge, heave, pitch)
+  Eigen::Vector3d radiation_damping = Eigen::Vector3d::Zero();  // B11, B33, B55 [N s/m, N m s/rad]
+  // Damping beside the radiation (viscous, skin friction), per DOF at G1: F_i = −b_i v_i − q_i |v_i| v_i;
+  // kept whatever the radiation model ([radiation] or [bem]).
+  Eigen::Vector3d added_linear_damping = Eigen::Vector3d::Zero();  // b [N s/m, N s/m, N m s/rad]
+  Eigen::Vector3d quadratic_damping = Eigen::Vector3d::Zero();     // q [N s²/m², N s²/m², N m s²/rad²]
+  // Radiation from BEM coefficients, referred to G1 (hydro/radiation_memory.hpp): constant A(ω_c),
+  // B(ω_c), Cummins convolution or its state-space fit; its 3 × 3 added mass joins the hull's mass.
+  // Empty: the diagonal added_mass and radiation_damping above.
+  std::shared_ptr<const hydro::RadiationMemoryModel> radiation_memory;
+  // First-order excitation from BEM (Froude–Krylov + diffraction) at G1; when set, the pressure is
+  // integrated in calm water (hydrostatics only), so Froude–Krylov is counted once.
+  std::shared_ptr<const sea::BemExcitation> bem_excitation;
+  // The same excitation recorded once per record (sea/excitation_record.hpp); empty: summed.
+  std::shared_ptr<const sea::ExcitationRecord> bem_excitation_record;
+  // The incident sea of this record evaluated once (sea/incident_wave_record.hpp): the hull
+  // pressure reads the wave from it, and takes the exact component sums wherever it cannot answer.
+  // Empty: every evaluation sums the components (regular waves, exact kinematics, finite depth).
+  std::shared_ptr<const sea::IncidentWaveRecord> wave_record;
+  std::string exact_kinematics_reason;  // without a record in a wave: why (for reports)
+  double mooring_stiffness = 0.0;                           // surge spring [N/m], anchored at x = 0
+  bool hydrostatics = true;                                 // pressure integration on/off
+  // Linear support springs towards `support_pose` (surge, heave, pitch): test scenes that hold the
+  // hull without water. Zero = none.
+  Eigen::Vector3d support_stiffness = Eigen::Vector3d::Zero();
+  Eigen::Vector3d support_pose = Eigen::Vector3d::Zero();  // also the pose of a fixed hull
+  bool fixed = false;  // hull held at its initial pose (its coordinates removed)
+  // A driven base (hub): fixed = true and the pose follows this driving constraint instead of support_pose.
+  std::optional<PrescribedMotion> prescribed;
+};
+
+struct BoomMountModel {
+  Eigen::Vector2d root = Eigen::Vector2d::Zero();  // B relative to G1, hull frame [m]
+  double angle = 0.0;                              // boom frame angle relative to the hull [rad]
+};
+
+struct CargoModel {
+  bool present = true;                            // false: no cargo and no wire (coordinates removed)
+  double mass = 0.0;                              // [kg]
+  double pitch_inertia = 0.0;                     // about G2 [kg m²]
+  Eigen::Vector2d hook = Eigen::Vector2d::Zero(); // C relative to G2, cargo frame [m]
+};
+
+struct WireModel {
+  double unstretched_length = 0.0;  // L0 [m]
+  double stiffness = 0.0;           // [N/m]
+  double damping = 0.0;             // [N s/m]
+};
+
+template <fem::ElasticCoordinates Coords>
+struct CraneParameters {
+  HullModel hull;
+  BoomMountModel mount;
+  FloatingFrameBody<Coords> boom;
+  BodyPoint boom_tip;  // A′ (x = L)
+  CargoModel cargo;
+  WireModel wire;
+  double gravity = 9.81;
+  double water_density = 1025.0;
+  std::optional<sea::WaveField> wave;  // empty: calm water
+};
+
+}  // namespace ffrf::multibody
