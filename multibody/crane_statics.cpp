@@ -1,22 +1,14 @@
 // The crane's static equilibrium (multibody/crane_statics.hpp).
 #include "multibody/crane_statics.hpp"
 
+#include <fmt/format.h>
+
 #include <chrono>
-#include <cstdio>
 #include <string>
 
 #include "solve/failure.hpp"
 
 namespace ffrf::multibody {
-namespace {
-
-std::string format_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
-}
-
-}  // namespace
 
 StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eigen::VectorXd& guess, double tolerance) {
   StaticSolvePath path;
@@ -31,8 +23,7 @@ StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eige
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(result.z.size());
   if (result.z.size() > 0 && equations.wire_stretch_minimal(0.0, result.z) <= 0.0) {
     throw solve::SolverFailure(solve::FailureKind::wire_slack, "KINSOL (static equilibrium)",
-                               "the wire is slack at rest (stretch " + format_number(equations.wire_stretch_minimal(0.0, result.z)) +
-                                   " m)",
+                               fmt::format("the wire is slack at rest (stretch {:.3g} m)", equations.wire_stretch_minimal(0.0, result.z)),
                                0.0, "hang the cargo below the boom tip: check the wire's unstretched length and the hook position");
   }
   result.outputs = equations.minimal_outputs(0.0, result.z, rest);

@@ -80,16 +80,6 @@ int erk_rhs(sunrealtype t, N_Vector y, N_Vector y_dot, void* user) {
   });
 }
 
-int event_root(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
-  auto* data = static_cast<ErkData*>(user);
-  return (*data->guard)([&] {
-    sundials::event_values(data->events, g, [&](auto values) {
-      data->equations->minimal_events(t, sundials::Vector::view(y).head(data->size), values);
-    });
-    return 0;
-  });
-}
-
 // After every fixed step: stop when the kinetic energy leaves the bound (or is not finite).
 int energy_watch(sunrealtype t, N_Vector y, void* user) {
   auto* data = static_cast<ErkData*>(user);
@@ -191,7 +181,7 @@ IntegrationRecord integrate_explicit(SecondOrderSystem& equations, OutputSink& s
   check(ERKStepSetUserData(erk, &data), "ERKStepSetUserData");
   check(ERKStepSetMaxNumSteps(erk, settings.max_steps), "ERKStepSetMaxNumSteps");
   if (!fixed && settings.work.min_step > 0.0) check(ERKStepSetMinStep(erk, settings.work.min_step), "ERKStepSetMinStep");
-  if (data.events > 0) check(ERKStepRootInit(erk, data.events, event_root), "ERKStepRootInit");
+  if (data.events > 0) check(ERKStepRootInit(erk, data.events, sundials::minimal_event_root<ErkData>), "ERKStepRootInit");
   if (fixed) {
     check(ERKStepSetFixedStep(erk, settings.fixed_step), "ERKStepSetFixedStep");
     check(ERKStepSetPostprocessStepFn(erk, energy_watch), "ERKStepSetPostprocessStepFn");

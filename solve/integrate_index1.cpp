@@ -188,16 +188,6 @@ int index1_projection(sunrealtype t, N_Vector ycur, N_Vector corr, sunrealtype e
   });
 }
 
-int event_root(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
-  auto* d = static_cast<Index1Data*>(user);
-  return (*d->guard)([&] {
-    sundials::event_values(d->events, g, [&](auto values) {
-      d->equations->full_events(t, sundials::Vector::view(y).head(d->size), values);
-    });
-    return 0;
-  });
-}
-
 }  // namespace
 
 IntegrationRecord integrate_index1(SecondOrderSystem& equations, OutputSink& sink, const Eigen::VectorXd& z0,
@@ -252,7 +242,7 @@ IntegrationRecord integrate_index1(SecondOrderSystem& equations, OutputSink& sin
   check(CVodeSetMaxOrd(cvode, settings.max_order), "CVodeSetMaxOrd");
   if (settings.work.min_step > 0.0) check(CVodeSetMinStep(cvode, settings.work.min_step), "CVodeSetMinStep");
   if (data.events > 0) {
-    check(CVodeRootInit(cvode, data.events, event_root), "CVodeRootInit");
+    check(CVodeRootInit(cvode, data.events, sundials::full_event_root<Index1Data>), "CVodeRootInit");
     CVodeSetNoInactiveRootWarn(cvode);
   }
   if (projection) check(CVodeSetProjFn(cvode, index1_projection), "CVodeSetProjFn");

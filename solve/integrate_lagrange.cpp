@@ -64,14 +64,8 @@ int dae_jacobian(double t, double cj, N_Vector y, N_Vector yp, N_Vector r, SUNMa
   return (*d->guard)([&] { return sundials::IndexTwoNewton::jacobian(t, cj, y, yp, r, J, user, t1, t2, t3); });
 }
 
-int event_root(sunrealtype t, N_Vector y, N_Vector, sunrealtype* g, void* user) {
-  auto* d = static_cast<DaeData*>(user);
-  return (*d->guard)([&] {
-    sundials::event_values(d->events, g, [&](auto values) {
-      d->equations->full_events(t, sundials::Vector::view(y).head(d->size), values);
-    });
-    return 0;
-  });
+int event_root(sunrealtype t, N_Vector y, N_Vector, sunrealtype* g, void* user) {  // IDA's signature
+  return sundials::full_event_root<DaeData>(t, y, g, user);
 }
 
 }  // namespace

@@ -53,16 +53,6 @@ int newton_blocks(OdeData& data, double t, SecondOrderSystem::ConstRef z, Second
   });
 }
 
-int event_root(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
-  auto* data = static_cast<OdeData*>(user);
-  return (*data->guard)([&] {
-    sundials::event_values(data->events, g, [&](auto values) {
-      data->equations->minimal_events(t, sundials::Vector::view(y).head(data->size), values);
-    });
-    return 0;
-  });
-}
-
 }  // namespace
 
 IntegrationRecord integrate_minimal(SecondOrderSystem& equations, OutputSink& sink, const Eigen::VectorXd& z0,
@@ -98,7 +88,7 @@ IntegrationRecord integrate_minimal(SecondOrderSystem& equations, OutputSink& si
   check(CVodeSetMaxOrd(cvode, settings.max_order), "CVodeSetMaxOrd");
   if (settings.work.min_step > 0.0) check(CVodeSetMinStep(cvode, settings.work.min_step), "CVodeSetMinStep");
   if (data.events > 0) {
-    check(CVodeRootInit(cvode, data.events, event_root), "CVodeRootInit");
+    check(CVodeRootInit(cvode, data.events, sundials::minimal_event_root<OdeData>), "CVodeRootInit");
     CVodeSetNoInactiveRootWarn(cvode);
   }
 

@@ -222,6 +222,26 @@ class Progress {
   int last_percent_ = -1;
 };
 
+// SUNDIALS root functions (CVODE's and ARKODE's signature) over a system's event functions at a
+// minimal or a full state: `Data` (the adapter's user data) holds `equations` (the system), `events`
+// (their count), `size` (the coordinates' count) and `guard` (the CallbackGuard every callback runs in).
+template <class Data>
+int minimal_event_root(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
+  auto* data = static_cast<Data*>(user);
+  return (*data->guard)([&] {
+    event_values(data->events, g, [&](auto values) { data->equations->minimal_events(t, Vector::view(y).head(data->size), values); });
+    return 0;
+  });
+}
+template <class Data>
+int full_event_root(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
+  auto* data = static_cast<Data*>(user);
+  return (*data->guard)([&] {
+    event_values(data->events, g, [&](auto values) { data->equations->full_events(t, Vector::view(y).head(data->size), values); });
+    return 0;
+  });
+}
+
 // The output loop shared by the CVODE, IDA and ARKODE adapters: samples t = 0, then advances the
 // solver to each output time. `advance(t_out, t)` calls the solver and returns its flag (t: the
 // time reached); on `root_return` an event function crossed zero and `root_directions(int*)` (one
