@@ -8,6 +8,7 @@
 
 #include "app/commands.hpp"
 #include "app/option_checks.hpp"
+#include "scene/scene_key.hpp"
 #include "solve/integrator_table.hpp"
 #include "study/work_limits.hpp"
 
@@ -45,7 +46,7 @@ void add_dynamics_options(CLI::App& sub, DynamicsOptions& options) {
       ->capture_default_str()
       ->check(tolerance);
   sub.add_option("--duration", options.duration, "Simulated time [s] (default: simulation.duration of the scene)")
-      ->check(scene_key_range("simulation.duration"));
+      ->check(scene_key_range(scene::scene_key("simulation.duration")));
   sub.add_option("--max-order", options.max_order,
                  "Largest BDF order of cvode and ida, 1-5 (default: 2 for an undamped boom, where BDF 3-5 are not "
                  "stable on its undamped stiff modes; 5 otherwise)")
@@ -59,7 +60,7 @@ void add_dynamics_options(CLI::App& sub, DynamicsOptions& options) {
 void add_reference_options(CLI::App& sub, study::ReferenceOptions& options) {
   sub.add_option("--reference-elements", options.start_elements, "Reference: elements of the first level")
       ->capture_default_str()
-      ->check(scene_key_count("boom.elements"));
+      ->check(scene_key_count(scene::scene_key("boom.elements")));
   sub.add_option("--reference-rtol", options.start_relative_tolerance,
                  "Reference: CVODE relative tolerance of the first level")
       ->capture_default_str()
@@ -83,7 +84,7 @@ void add_stiffening_option(CLI::App& sub, std::string& stiffening) {
 void add_model_options(CLI::App& sub, ModelOptions& options) {
   sub.add_option("--boom", options.boom, "Boom model " + scene::boom_kind_choices() + " (default: nodal)");
   sub.add_option("--elements,-N", options.elements, "Number of beam elements (default: boom.elements of the scene)")
-      ->check(scene_key_count("boom.elements"));
+      ->check(scene_key_count(scene::scene_key("boom.elements")));
   sub.add_option("--modes,-k", options.modes,
                  fmt::format("Number of vibration modes of the modal boom (default: {}, with static modes)", study::default_modal_modes))
       ->check(whole_number(1, 1000));

@@ -21,6 +21,7 @@
 #include "report/gnuplot.hpp"
 #include "report/modes_report.hpp"
 #include "report/output_directory.hpp"
+#include "scene/scene_key.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/campbell.hpp"
 #include "study/modes.hpp"
@@ -231,7 +232,7 @@ Command add_modes_command(CLI::App& parent) {
   CLI::App* sub = parent.add_subcommand("modes", "Natural frequencies and mode shapes of the boom vs Euler–Bernoulli");
   sub->add_option("scene", options->scene, "Scene file (TOML)")->required();
   sub->add_option("--elements,-N", options->elements, "Number of beam elements (default: boom.elements of the scene)")
-      ->check(scene_key_count("boom.elements"));
+      ->check(scene_key_count(scene::scene_key("boom.elements")));
   sub->add_option("--modes,-k", options->modes, "Number of modes (default: 6, plus the rigid modes for free-free)")
       ->check(whole_number(1, 1000));
   sub->add_option("--boundary", options->boundary,

@@ -14,6 +14,7 @@
 
 #include "app/cli_options.hpp"
 #include "app/radiation_option.hpp"
+#include "scene/scene_key.hpp"
 #include "study/radiation_compare.hpp"
 #include "app/commands.hpp"
 #include "app/option_checks.hpp"
@@ -124,7 +125,7 @@ Command add_recommend_command(CLI::App& parent) {
                   "Comma-separated outputs the tolerance applies to (default: cargo_heave,cargo_pitch,crane_heave,"
                   "crane_pitch,wire_tension,joint_moment for a crane; tip_deflection for a hub)");
   sub->add_option("--duration", options->duration, "Simulated time [s] of every run (default: simulation.duration of the scene)")
-      ->check(scene_key_range("simulation.duration"));
+      ->check(scene_key_range(scene::scene_key("simulation.duration")));
   add_reference_options(*sub, options->reference);
   add_radiation_option(*sub, options->radiation);
   sub->add_flag("--json", options->json, "Print the JSON report on stdout instead of the text report");

@@ -21,6 +21,7 @@
 #include "report/output_directory.hpp"
 #include "report/run_report.hpp"
 #include "report/irregular_report.hpp"
+#include "scene/scene_key.hpp"
 #include "study/work_limits.hpp"
 
 namespace ffrf::app {
@@ -110,7 +111,7 @@ Command add_run_command(CLI::App& parent) {
   sub->add_option("scene", options->scene, "Scene file (TOML) with [hull], [boom], [cargo] and [wire], or a [hub]")->required();
   add_model_options(*sub, options->model);
   sub->add_option("--spin-rate", options->spin_rate, "Final spin rate of a hub scene [rad/s] (default: hub.spin_rate)")
-      ->check(scene_key_range("hub.spin_rate"));
+      ->check(scene_key_range(scene::scene_key("hub.spin_rate")));
   add_radiation_option(*sub, options->radiation);
   add_dynamics_options(*sub, options->dynamics);
   sub->add_flag("--json", options->json, "Print the JSON summary on stdout instead of the text report");

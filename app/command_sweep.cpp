@@ -19,6 +19,7 @@
 
 #include "app/cli_options.hpp"
 #include "app/radiation_option.hpp"
+#include "scene/scene_key.hpp"
 #include "study/radiation_compare.hpp"
 #include "app/commands.hpp"
 #include "app/option_checks.hpp"
@@ -206,7 +207,7 @@ Command add_sweep_command(CLI::App& parent) {
       ->expected(1, -1);
   sub->add_option("--duration", options->duration,
                   fmt::format("Simulated time [s] (default: {:g} s with --quick, the scene's duration otherwise)", quick_duration))
-      ->check(scene_key_range("simulation.duration"));
+      ->check(scene_key_range(scene::scene_key("simulation.duration")));
   sub->add_flag("--quick", options->quick,
                 "The small grid (the default): rigid, nodal N 1/4/16, modal k 1/2/4 +- static; cvode and generalized-alpha");
   sub->add_flag("--medium", options->medium,

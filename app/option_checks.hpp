@@ -9,15 +9,17 @@
 #include <string>
 #include <string_view>
 
+#include "scene/scene_key.hpp"
+
 namespace ffrf::app {
 
 // A whole number in [lower, upper].
 CLI::Validator whole_number(long long lower, long long upper);
 // A finite number in [lower, upper] ((lower, upper] when lower_open); `unit` follows the range.
 CLI::Validator finite_number(double lower, double upper, std::string_view unit = {}, bool lower_open = false);
-// The SI range of a number scene key ("simulation.duration", "hub.spin_rate").
+// The SI range of a number scene key (scene::scene_key("simulation.duration"), scene::scene_key("hub.spin_rate")).
 CLI::Validator scene_key_range(std::string_view dotted_key);
-// The whole-number range of an integer scene key ("boom.elements").
+// The whole-number range of an integer scene key (scene::scene_key("boom.elements")).
 CLI::Validator scene_key_count(std::string_view dotted_key);
 
 }  // namespace ffrf::app

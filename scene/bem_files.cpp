@@ -7,6 +7,7 @@
 
 #include "hydro/wamit_reader.hpp"
 #include "scene/capytaine_files.hpp"
+#include "scene/scene_key.hpp"
 
 namespace ffrf::scene {
 
@@ -43,11 +44,11 @@ std::vector<BemProblem> load_bem_files(Scene& scene) {
     return problems;
   }
   if (bem.radiation_file.empty()) {
-    problems.push_back({"bem.radiation_file", "missing: [bem] needs the WAMIT .1 file (added mass and damping)"});
+    problems.push_back({scene_key("bem.radiation_file"), "missing: [bem] needs the WAMIT .1 file (added mass and damping)"});
     return problems;
   }
   if (bem.excitation == ExcitationModel::bem && bem.excitation_file.empty()) {
-    problems.push_back({"bem.excitation", "\"bem\" needs bem.excitation_file (the WAMIT .3 file); or choose \"froude-krylov\""});
+    problems.push_back({scene_key("bem.excitation"), "\"bem\" needs bem.excitation_file (the WAMIT .3 file); or choose \"froude-krylov\""});
   }
   const hydro::WamitScaling scaling{bem.length_scale, scene.environment.water_density, scene.environment.gravity};
   const auto read = [&](const std::string& key, const std::string& path, auto&& reader) {
@@ -65,21 +66,21 @@ std::vector<BemProblem> load_bem_files(Scene& scene) {
     }
   };
   if (bem.format == BemFormat::capytaine) {  // one NetCDF dataset (scene/capytaine_files.hpp)
-    read("bem.capytaine_file", bem.radiation_file, [&](const std::string&) {
+    read(scene_key("bem.capytaine_file"), bem.radiation_file, [&](const std::string&) {
       for (BemProblem& problem : load_capytaine_dataset(scene)) problems.push_back(std::move(problem));
     });
     return problems;
   }
-  read("bem.radiation_file", bem.radiation_file,
+  read(scene_key("bem.radiation_file"), bem.radiation_file,
        [&](const std::string& path) { bem.radiation = hydro::read_wamit_radiation(path, scaling); });
-  read("bem.excitation_file", bem.excitation_file,
+  read(scene_key("bem.excitation_file"), bem.excitation_file,
        [&](const std::string& path) { bem.excitation_table = hydro::read_wamit_excitation(path, scaling); });
-  read("bem.hydrostatics_file", bem.hydrostatics_file,
+  read(scene_key("bem.hydrostatics_file"), bem.hydrostatics_file,
        [&](const std::string& path) { bem.hydrostatics = hydro::read_wamit_hydrostatics(path, scaling); });
   if (bem.hydrostatics) {
     // The pressure integration owns the hydrostatics; the .hst must describe the same waterplane.
     if (std::string mismatch = waterplane_mismatch(scene, *bem.hydrostatics, bem.hydrostatics_file); !mismatch.empty())
-      problems.push_back({"bem.hydrostatics_file", std::move(mismatch)});
+      problems.push_back({scene_key("bem.hydrostatics_file"), std::move(mismatch)});
   }
   return problems;
 }
@@ -94,11 +95,11 @@ std::string waterplane_mismatch(const Scene& scene, const hydro::PlanarMatrix& h
 }
 
 std::string bem_radiation_key(const BemHull& bem) {
-  return bem.format == BemFormat::capytaine ? "bem.capytaine_file" : "bem.radiation_file";
+  return bem.format == BemFormat::capytaine ? scene_key("bem.capytaine_file") : scene_key("bem.radiation_file");
 }
 
 std::string bem_excitation_key(const BemHull& bem) {
-  return bem.format == BemFormat::capytaine ? "bem.capytaine_file" : "bem.excitation_file";
+  return bem.format == BemFormat::capytaine ? scene_key("bem.capytaine_file") : scene_key("bem.excitation_file");
 }
 
 }  // namespace ffrf::scene

@@ -6,12 +6,13 @@
 #include <cmath>
 
 #include "hydro/capytaine_reader.hpp"
+#include "scene/scene_key.hpp"
 
 namespace ffrf::scene {
 
 namespace {
 
-constexpr const char* kKey = "bem.capytaine_file";
+constexpr const char* kKey = scene_key("bem.capytaine_file");
 
 // The environment of the run against the scene's: "" when they agree.
 std::string environment_mismatch(const hydro::CapytaineDataset& data, const Environment& environment, const std::string& file) {
@@ -60,7 +61,7 @@ std::vector<BemProblem> load_capytaine_dataset(Scene& scene) {
   data = hydro::at_density(std::move(data), scene.environment.water_density);
   std::vector<BemProblem> problems;
   if (bem.excitation == ExcitationModel::bem && !data.excitation)
-    problems.push_back({"bem.excitation", fmt::format("\"bem\" needs the excitation: {} holds neither Froude_Krylov_force and "
+    problems.push_back({scene_key("bem.excitation"), fmt::format("\"bem\" needs the excitation: {} holds neither Froude_Krylov_force and "
                                                       "diffraction_force nor excitation_force; or choose \"froude-krylov\"", file)});
   if (data.hydrostatics) {
     if (std::string mismatch = waterplane_mismatch(scene, *data.hydrostatics, file + " (hydrostatic_stiffness)"); !mismatch.empty())

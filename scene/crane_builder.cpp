@@ -6,6 +6,7 @@
 
 #include "scene/irregular_sea.hpp"
 #include "scene/bem_hull_model.hpp"
+#include "scene/scene_key.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/recorded_sea.hpp"
 #include "fem/analytic_beam.hpp"
@@ -84,7 +85,7 @@ multibody::HullModel floating_hull(const Scene& scene) {
   const double displaced_mass = hull.mass + boom_mass + cargo.mass;
   const double capacity = rho * hull.length * hull.width * hull.depth;
   if (displaced_mass >= capacity) {
-    scene_problem(scene, "hull.mass", std::to_string(hull.mass),
+    scene_problem(scene, scene_key("hull.mass"), std::to_string(hull.mass),
                   "the hull would sink: hull + boom + cargo = " + std::to_string(displaced_mass / 1e3) +
                       " t exceeds the buoyancy of the whole box ρ·L·B·D = " + std::to_string(capacity / 1e3) +
                       " t; reduce the masses or enlarge hull.length/width/depth");

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "scene/scene_checks.hpp"
+#include "scene/scene_key.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/scene_schema.hpp"
 
@@ -133,17 +134,17 @@ Scene in_irregular_sea(const Scene& base, const IrregularSeaState& state) {
   IrregularSea sea = base.sea && base.sea->spectrum != SeaSpectrum::components ? *base.sea : IrregularSea{};
   if (state.spectrum == "jonswap") {
     sea.spectrum = SeaSpectrum::jonswap;
-    check("wave.peak_enhancement", state.peak_enhancement);
+    check(scene_key("wave.peak_enhancement"), state.peak_enhancement);
   } else if (state.spectrum == "pierson-moskowitz") {
     sea.spectrum = SeaSpectrum::pierson_moskowitz;
   } else {
-    problems.push_back({base.file, 0, 0, "wave.spectrum", fmt::format("\"{}\"", state.spectrum),
+    problems.push_back({base.file, 0, 0, scene_key("wave.spectrum"), fmt::format("\"{}\"", state.spectrum),
                         "unknown sea-state spectrum; choose one of jonswap, pierson-moskowitz"});
   }
-  check("wave.significant_height", state.significant_height);
-  check("wave.peak_period", state.peak_period);
-  check("simulation.duration", state.duration);
-  if (state.seed > 2147483647u) check("wave.seed", static_cast<double>(state.seed));
+  check(scene_key("wave.significant_height"), state.significant_height);
+  check(scene_key("wave.peak_period"), state.peak_period);
+  check(scene_key("simulation.duration"), state.duration);
+  if (state.seed > 2147483647u) check(scene_key("wave.seed"), static_cast<double>(state.seed));
   if (!problems.empty()) throw SceneError(std::move(problems));
   sea.significant_height = state.significant_height;
   sea.peak_period = state.peak_period;
@@ -157,9 +158,9 @@ Scene in_irregular_sea(const Scene& base, const IrregularSeaState& state) {
   scene.warnings.clear();  // the checks below find the base's warnings again
   for (SceneFinding& finding : physics_findings(scene)) {
     const std::string& key = finding.keys.front();
-    const std::string value = key == "wave.significant_height" ? fmt::format("{:g}", state.significant_height)
-                              : key == "wave.peak_period"      ? fmt::format("{:g}", state.peak_period)
-                              : key == "simulation.duration"   ? fmt::format("{:g}", state.duration)
+    const std::string value = key == scene_key("wave.significant_height") ? fmt::format("{:g}", state.significant_height)
+                              : key == scene_key("wave.peak_period")      ? fmt::format("{:g}", state.peak_period)
+                              : key == scene_key("simulation.duration")   ? fmt::format("{:g}", state.duration)
                                                                : std::string();
     SceneProblem problem{base.file, 0, 0, key, value, std::move(finding.message)};
     if (finding.error) {

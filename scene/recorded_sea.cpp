@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "scene/scene_key.hpp"
 #include "sea/hull_pressure_recorded.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -88,13 +89,13 @@ std::shared_ptr<const sea::IncidentWaveRecord> recorded_sea(const Scene& scene, 
   try {
     built = sea::IncidentWaveRecord::build(wave, sea::box_hull_patches(hull.section, g1_height, range), options, &why);
   } catch (const std::length_error& e) {
-    throw SceneError({SceneProblem{scene.file, 0, 0, "wave.kinematics", "\"precomputed\"",
+    throw SceneError({SceneProblem{scene.file, 0, 0, scene_key("wave.kinematics"), "\"precomputed\"",
                                    fmt::format("the recorded sea would not fit in memory ({}); use wave.kinematics = "
                                                "\"exact\", a looser wave.kinematics_tolerance, smaller "
                                                "wave.kinematics_*_range or a shorter simulation.duration",
                                                e.what())}});
   } catch (const std::invalid_argument& e) {
-    throw SceneError({SceneProblem{scene.file, 0, 0, "wave.kinematics", "\"precomputed\"", e.what()}});
+    throw SceneError({SceneProblem{scene.file, 0, 0, scene_key("wave.kinematics"), "\"precomputed\"", e.what()}});
   }
   if (!built) {
     chosen = {"exact", why};

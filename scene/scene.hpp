@@ -1,6 +1,6 @@
 // A loaded scene (docs/scenes.md): pure data in SI units, planar, y up, angles counter-clockwise.
 // The boom is always present; a crane scene also has the hull, the cargo and the wire. Sections a
-// scene leaves out take the defaults of scene/scene_schema.cpp (environment, radiation, mooring,
+// scene leaves out take the defaults of scene/scene_schema_table.hpp (environment, radiation, mooring,
 // simulation) or stay empty (wave: calm water).
 #pragma once
 

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <numbers>
 
+#include "scene/scene_key.hpp"
 #include "sea/wave_field.hpp"
 #include "hydro/sea_steepness.hpp"
 #include "scene/irregular_sea.hpp"
@@ -39,20 +40,20 @@ bool within(double value, double lower, double upper) {
 void check_cargo(const Cargo& cargo, Findings& found) {
   const double half_length = 0.5 * cargo.length, half_height = 0.5 * cargo.height;
   if (!within(cargo.hook_x, -half_length, half_length)) {
-    found.error({"cargo.hook_x", "cargo.length"},
+    found.error({scene_key("cargo.hook_x"), scene_key("cargo.length")},
                 fmt::format("the hook C lies off the cargo box (length {:g} m): it must be on or inside it (valid "
                             "range [{:g}, {:g}] m)",
                             cargo.length, -half_length, half_length));
   }
   if (!within(cargo.hook_y, -half_height, half_height)) {
-    found.error({"cargo.hook_y", "cargo.height"},
+    found.error({scene_key("cargo.hook_y"), scene_key("cargo.height")},
                 fmt::format("the hook C lies off the cargo box (height {:g} m): it must be on or inside it (valid "
                             "range [{:g}, {:g}] m)",
                             cargo.height, -half_height, half_height));
   }
   const double reach = 0.5 * std::hypot(cargo.length, cargo.height);
   if (!cargo.radius_of_gyration_derived && cargo.pitch_radius_of_gyration > reach * (1.0 + kOnSurface)) {
-    found.error({"cargo.pitch_radius_of_gyration", "cargo.length", "cargo.height"},
+    found.error({scene_key("cargo.pitch_radius_of_gyration"), scene_key("cargo.length"), scene_key("cargo.height")},
                 fmt::format("a radius of gyration cannot exceed the distance from G2 to the box's corners, {:.4g} m "
                             "(valid range [0.001, {:.4g}] m)",
                             reach, reach));
@@ -66,14 +67,14 @@ bool check_hull_geometry(const Scene& scene, Findings& found) {
   const BoomMount& mount = *scene.boom.mount;
   bool inside = true;
   if (hull.g1_above_keel >= hull.depth) {
-    found.error({"hull.g1_above_keel", "hull.depth"},
+    found.error({scene_key("hull.g1_above_keel"), scene_key("hull.depth")},
                 fmt::format("G1 must lie inside the hull, below the deck (valid range [0, {:g}) m: the hull depth)",
                             hull.depth));
     inside = false;
   }
   const double half = 0.5 * hull.length;
   if (std::abs(hull.g1_aft_of_mid_length) > half) {
-    found.error({"hull.g1_aft_of_mid_length", "hull.length"},
+    found.error({scene_key("hull.g1_aft_of_mid_length"), scene_key("hull.length")},
                 fmt::format("G1 must lie inside the hull, within half its length of mid-length (valid range [{:g}, "
                             "{:g}] m)",
                             -half, half));
@@ -83,14 +84,14 @@ bool check_hull_geometry(const Scene& scene, Findings& found) {
   const double stern = hull.g1_aft_of_mid_length - half, bow = hull.g1_aft_of_mid_length + half;
   const double keel = -hull.g1_above_keel, deck = hull.depth - hull.g1_above_keel;
   if (!within(mount.root_x, stern, bow)) {
-    found.error({"boom.root_x", "hull.length", "hull.g1_aft_of_mid_length"},
+    found.error({scene_key("boom.root_x"), scene_key("hull.length"), scene_key("hull.g1_aft_of_mid_length")},
                 fmt::format("the boom root B must stand on the hull, between its stern and bow (valid range [{:g}, "
                             "{:g}] m from G1)",
                             stern, bow));
   }
   const double pedestal = 0.5 * hull.length;
   if (!within(mount.root_y, keel, deck + pedestal)) {
-    found.error({"boom.root_y", "hull.depth", "hull.g1_above_keel"},
+    found.error({scene_key("boom.root_y"), scene_key("hull.depth"), scene_key("hull.g1_above_keel")},
                 fmt::format("the boom root B must lie on the hull, between the keel and a crane pedestal of at most "
                             "half the hull length above the deck (valid range [{:g}, {:g}] m from G1)",
                             keel, deck + pedestal));
@@ -99,7 +100,7 @@ bool check_hull_geometry(const Scene& scene, Findings& found) {
     const double reach = std::max(std::hypot(stern, keel), std::max(std::hypot(stern, deck),
                                                                     std::max(std::hypot(bow, keel), std::hypot(bow, deck))));
     if (hull.pitch_radius_of_gyration > reach * (1.0 + kOnSurface)) {
-      found.error({"hull.pitch_radius_of_gyration", "hull.length", "hull.depth"},
+      found.error({scene_key("hull.pitch_radius_of_gyration"), scene_key("hull.length"), scene_key("hull.depth")},
                   fmt::format("a radius of gyration cannot exceed the distance from G1 to the hull's farthest corner, "
                               "{:.4g} m (valid range [0.1, {:.4g}] m)",
                               reach, reach));
@@ -117,28 +118,28 @@ void check_hydrostatics(const Scene& scene, Findings& found) {
   const double total = hull.mass + boom_mass + cargo.mass;
   const double capacity = rho * hull.length * hull.width * hull.depth;
   if (total >= capacity) {
-    found.error({"hull.mass", "boom.mass_per_length", "cargo.mass", "hull.length", "hull.width", "hull.depth"},
+    found.error({scene_key("hull.mass"), scene_key("boom.mass_per_length"), scene_key("cargo.mass"), scene_key("hull.length"), scene_key("hull.width"), scene_key("hull.depth")},
                 fmt::format("the loaded crane would sink: hull {:.6g} t + boom {:.6g} t + cargo {:.6g} t = {:.6g} t "
                             "is not less than the buoyancy of the fully submerged hull ρ·L·B·D = {:.6g} t",
                             hull.mass / 1e3, boom_mass / 1e3, cargo.mass / 1e3, total / 1e3, capacity / 1e3));
     return;
   }
   if (hull.mass < 0.01 * (boom_mass + cargo.mass)) {
-    found.warning({"hull.mass", "boom.mass_per_length", "cargo.mass"},
+    found.warning({scene_key("hull.mass"), scene_key("boom.mass_per_length"), scene_key("cargo.mass")},
                   fmt::format("the hull ({:.6g} t) is lighter than 1 % of the boom and cargo it carries ({:.6g} t): a "
                               "mass in t written as kg?",
                               hull.mass / 1e3, (boom_mass + cargo.mass) / 1e3));
   }
   const RestingHydrostatics rest = resting_hydrostatics(scene);
   if (scene.environment.water_depth <= rest.draft) {
-    found.error({"environment.water_depth", "hull.mass", "cargo.mass"},
+    found.error({scene_key("environment.water_depth"), scene_key("hull.mass"), scene_key("cargo.mass")},
                 fmt::format("the hull would ground: its draft at rest is {:.4g} m (valid range ({:.4g}, 11000] m or "
                             "inf)",
                             rest.draft, rest.draft));
   }
   if (rest.metacentric_height <= 0.0) {
     const double kb = 0.5 * rest.draft, bm = hull.length * hull.length / (12.0 * rest.draft);
-    found.error({"hull.g1_above_keel", "hull.length", "boom.angle", "cargo.mass"},
+    found.error({scene_key("hull.g1_above_keel"), scene_key("hull.length"), scene_key("boom.angle"), scene_key("cargo.mass")},
                 fmt::format("the loaded crane is unstable in pitch: GM_L = KB + BM_L − KG = {:.4g} + {:.4g} − {:.4g} = "
                             "{:.4g} m ≤ 0 with the cargo hanging at the boom tip (valid: GM_L > 0; lower the load or "
                             "the boom, or lengthen the hull)",
@@ -148,7 +149,7 @@ void check_hydrostatics(const Scene& scene, Findings& found) {
   const double freeboard = hull.depth - rest.draft;
   if (rest.deck_sinkage >= freeboard) {
     const bool bow = rest.trim > 0.0;
-    found.error({"cargo.mass", "boom.root_x", "boom.angle", "hull.g1_aft_of_mid_length"},
+    found.error({scene_key("cargo.mass"), scene_key("boom.root_x"), scene_key("boom.angle"), scene_key("hull.g1_aft_of_mid_length")},
                 fmt::format("the deck would be under water at rest: the load moment {:.4g} t m about mid-length needs "
                             "a trim of θ = M/(Δ·GM_L) = {:.3g} deg {} to balance (linear hydrostatics, GM_L = {:.4g} "
                             "m), but the {} deck edge reaches the water at {:.3g} deg (freeboard {:.4g} m over half "
@@ -159,7 +160,7 @@ void check_hydrostatics(const Scene& scene, Findings& found) {
     return;
   }
   if (rest.cargo_bottom < 0.0) {
-    found.error({"wire.unstretched_length", "cargo.height", "boom.angle", "boom.length"},
+    found.error({scene_key("wire.unstretched_length"), scene_key("cargo.height"), scene_key("boom.angle"), scene_key("boom.length")},
                 fmt::format("the cargo would hang in the water at rest: its bottom {:.4g} m below the still water "
                             "level (the model has no water forces on the cargo); shorten the wire to at most {:.4g} m "
                             "or raise the boom",
@@ -176,14 +177,14 @@ void check_wave(const Scene& scene, Findings& found) {
   const double k = sea::WaveField::wave_number_from_dispersion(omega, depth, g);
   const double wavelength = 2.0 * std::numbers::pi / k;
   if (wave.height >= wavelength / 7.0) {
-    found.error({"wave.height", "wave.period"},
+    found.error({scene_key("wave.height"), scene_key("wave.period")},
                 fmt::format("the wave breaks: its steepness H/λ = {:.3g} is not below 1/7 (Michell's limit) for the "
                             "wavelength λ = {:.4g} m of T = {:g} s (valid range [0, {:.4g}) m)",
                             wave.height / wavelength, wavelength, wave.period, wavelength / 7.0));
   }
   if (std::isinf(depth)) return;
   if (wave.height >= 0.78 * depth) {
-    found.error({"wave.height", "environment.water_depth"},
+    found.error({scene_key("wave.height"), scene_key("environment.water_depth")},
                 fmt::format("the wave breaks in this depth: H/d = {:.3g} is not below 0.78 (depth-limited breaking) "
                             "(valid range [0, {:.4g}) m)",
                             wave.height / depth, 0.78 * depth));
@@ -191,7 +192,7 @@ void check_wave(const Scene& scene, Findings& found) {
   }
   const double ursell = wave.height * wavelength * wavelength / (depth * depth * depth);
   if (k * depth < std::numbers::pi / 10.0 || ursell > 26.0) {
-    found.warning({"environment.water_depth", "wave.height", "wave.period"},
+    found.warning({scene_key("environment.water_depth"), scene_key("wave.height"), scene_key("wave.period")},
                   fmt::format("shallow water for this wave: kd = {:.3g} (shallow below π/10), Ursell number H λ²/d³ = "
                               "{:.3g} (nonlinear above 26): linear (Airy) wave theory is outside its range, the "
                               "motions are indicative only",
@@ -211,7 +212,7 @@ void check_sea(const Scene& scene, Findings& found) {
       const double k = sea::WaveField::wave_number_from_dispersion(sea.component_frequencies[n], depth, g);
       const double limit = std::numbers::pi / (7.0 * k);
       if (sea.component_amplitudes[n] >= limit) {
-        found.error({"wave.component_amplitudes", "wave.component_frequencies"},
+        found.error({scene_key("wave.component_amplitudes"), scene_key("wave.component_frequencies")},
                     fmt::format("component {} breaks: amplitude {:g} m at ω = {:g} rad/s (λ = {:.4g} m) is a steepness "
                                 "H/λ = {:.3g}, not below 1/7 (valid range [0, {:.4g}) m)",
                                 n + 1, sea.component_amplitudes[n], sea.component_frequencies[n],
@@ -224,13 +225,13 @@ void check_sea(const Scene& scene, Findings& found) {
   if (!(sea.peak_period > 0.0 && sea.significant_height >= 0.0)) return;  // out of range: the schema names it
   const hydro::SeaSteepness steep = hydro::sea_steepness(sea.significant_height, sea.peak_period, g);
   if (steep.breaking()) {
-    found.error({"wave.significant_height", "wave.peak_period"},
+    found.error({scene_key("wave.significant_height"), scene_key("wave.peak_period")},
                 fmt::format("the sea is too steep: Hs/λp = 2π Hs/(g Tp²) = {:.3g} exceeds DNV-RP-C205's limit {:.4g} "
                             "for Tp = {:g} s (λp = {:.4g} m; valid range (0, {:.4g}] m)",
                             steep.steepness, steep.limit, sea.peak_period, steep.peak_wavelength, steep.largest_height()));
   }
   if (!std::isinf(depth) && 1.86 * sea.significant_height >= 0.78 * depth) {
-    found.warning({"wave.significant_height", "environment.water_depth"},
+    found.warning({scene_key("wave.significant_height"), scene_key("environment.water_depth")},
                   fmt::format("the largest waves of a 3-hour storm (about 1.86 Hs = {:.3g} m) reach the depth-limited "
                               "breaking height 0.78 d = {:.3g} m: linear waves are indicative only",
                               1.86 * sea.significant_height, 0.78 * depth));
@@ -244,7 +245,7 @@ void check_sea(const Scene& scene, Findings& found) {
     }
     const double repeat = 2.0 * std::numbers::pi * sea.component_count / (hi - lo);
     if (repeat < scene.simulation.duration * (1.0 - 1e-12)) {
-      found.warning({"wave.components", "simulation.duration"},
+      found.warning({scene_key("wave.components"), scene_key("simulation.duration")},
                     fmt::format("the synthesized sea repeats after 2π/Δω = {:.6g} s, shorter than the record "
                                 "simulation.duration = {:g} s: statistics over the record count the same waves again; "
                                 "use wave.components >= {:.0f} (or 0: Δω = 2π / duration)",
@@ -296,14 +297,14 @@ std::vector<SceneFinding> physics_findings(const Scene& scene) {
   if (scene.is_crane() && scene.boom.mount && scene.cargo && scene.wire) {
     const bool inside = check_hull_geometry(scene, found);
     if (scene.environment.gravity <= 0.0) {
-      found.error({"environment.gravity", "hull.mass"},
+      found.error({scene_key("environment.gravity"), scene_key("hull.mass")},
                   "a floating hull needs gravity: its buoyancy ρ g V holds it up (valid range (0, 30] m/s^2 with a "
                   "[hull])");
     } else if (inside) {
       check_hydrostatics(scene, found);
     }
     if (scene.mooring.surge_stiffness <= 0.0) {
-      found.error({"mooring.surge_stiffness", "hull.mass"},
+      found.error({scene_key("mooring.surge_stiffness"), scene_key("hull.mass")},
                   "surge has no restoring force: nothing but a mooring spring holds the hull in surge, so its static "
                   "equilibrium is undetermined; add [mooring] with surge_stiffness > 0 (the reference crane has 5e5 "
                   "N/m) (valid range (0, 1e+10] N/m with a [hull])");
@@ -313,11 +314,11 @@ std::vector<SceneFinding> physics_findings(const Scene& scene) {
   }
   const Simulation& simulation = scene.simulation;
   if (simulation.output_interval > simulation.duration) {
-    found.error({"simulation.output_interval", "simulation.duration"},
+    found.error({scene_key("simulation.output_interval"), scene_key("simulation.duration")},
                 fmt::format("longer than simulation.duration = {:g} s (valid range [1e-05, {:g}] s)", simulation.duration,
                             simulation.duration));
   } else if (simulation.duration / simulation.output_interval > max_output_samples) {
-    found.error({"simulation.output_interval", "simulation.duration"},
+    found.error({scene_key("simulation.output_interval"), scene_key("simulation.duration")},
                 fmt::format("{:.4g} output samples over simulation.duration = {:g} s, more than the limit of {:g} "
                             "(valid range [{:.4g}, {:g}] s)",
                             simulation.duration / simulation.output_interval, simulation.duration, max_output_samples,

@@ -8,10 +8,12 @@
 #include <string>
 #include <string_view>
 
+#include "scene/scene_key.hpp"
+
 namespace ffrf::scene {
 
 struct WrittenKey {
-  std::string key;    // dotted: "boom.elements"
+  std::string key;    // dotted: scene_key("boom.elements")
   std::string value;  // as written, without a trailing comment
 };
 // The key and value written on `line_number` (1-based) of `text`; nothing for another kind of line.

@@ -17,6 +17,7 @@
 #include "scene/scene_build.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/scene_file.hpp"
+#include "scene/scene_key.hpp"
 #include "scene/scene_schema.hpp"
 #include "scene/wave_keys.hpp"
 
@@ -209,7 +210,7 @@ class SceneReader final : public WrittenKeys {
     }
     if (sections_.contains("bem")) check_bem_keys(*this, line_of(*sections_.at("bem")));
     if (hub_) {
-      for (const char* key : {"boom.angle", "boom.root_x", "boom.root_y"}) {
+      for (const char* key : {scene_key("boom.angle"), scene_key("boom.root_x"), scene_key("boom.root_y")}) {
         if (present_.contains(key)) {
           report(line_of(*present_.at(key)), key, show_value(*present_.at(key)),
                  "belongs to a hull crane; a hub scene clamps the boom at hub.radius along hub.angle");
@@ -278,7 +279,7 @@ class SceneReader final : public WrittenKeys {
     BemHull& bem = *scene.bem;
     bem.added_mass_asymmetry = hydro::symmetrise_added_mass(bem.radiation);
     if (bem.added_mass_asymmetry.relative > hydro::asymmetry_warning) {
-      const std::string key = scene.bem->format == BemFormat::capytaine ? "bem.capytaine_file" : "bem.radiation_file";
+      const std::string key = scene.bem->format == BemFormat::capytaine ? scene_key("bem.capytaine_file") : scene_key("bem.radiation_file");
       scene.warnings.push_back(format_problem(
           {file_, line_of_key(key), 0, key, value_of_key(key),
            fmt::format("the added-mass matrix of {} is not symmetric: its largest relative asymmetry is {}; the model uses "

@@ -3,12 +3,13 @@
 
 #include <fmt/format.h>
 
+#include "scene/scene_key.hpp"
 #include "scene/scene_schema.hpp"
 
 namespace ffrf::scene {
 
 void check_wave_keys(WrittenKeys& keys, int wave_line) {
-  const std::string& spectrum = keys.text("wave.spectrum");
+  const std::string& spectrum = keys.text(scene_key("wave.spectrum"));
   const auto need = [&](const char* key) {
     if (!keys.written(key)) {
       keys.report(wave_line, key, "",
@@ -25,27 +26,27 @@ void check_wave_keys(WrittenKeys& keys, int wave_line) {
   };
   const bool regular = spectrum == "regular", components = spectrum == "components";
   const bool parametric = !regular && !components;
-  for (const char* key : {"wave.height", "wave.period"}) regular ? need(key) : refuse(key, "\"regular\"");
-  for (const char* key : {"wave.significant_height", "wave.peak_period"}) {
+  for (const char* key : {scene_key("wave.height"), scene_key("wave.period")}) regular ? need(key) : refuse(key, "\"regular\"");
+  for (const char* key : {scene_key("wave.significant_height"), scene_key("wave.peak_period")}) {
     parametric ? need(key) : refuse(key, "\"jonswap\" or \"pierson-moskowitz\"");
   }
   if (spectrum != "jonswap") {
-    for (const char* key : {"wave.peak_enhancement", "wave.sigma_below", "wave.sigma_above"})
+    for (const char* key : {scene_key("wave.peak_enhancement"), scene_key("wave.sigma_below"), scene_key("wave.sigma_above")})
       refuse(key, "\"jonswap\"");
   }
-  for (const char* key : {"wave.component_frequencies", "wave.component_amplitudes", "wave.component_phases"}) {
+  for (const char* key : {scene_key("wave.component_frequencies"), scene_key("wave.component_amplitudes"), scene_key("wave.component_phases")}) {
     components ? need(key) : refuse(key, "\"components\"");
   }
   if (!parametric) {
     for (const char* key :
-         {"wave.seed", "wave.components", "wave.frequency_min", "wave.frequency_max", "wave.amplitudes"}) {
+         {scene_key("wave.seed"), scene_key("wave.components"), scene_key("wave.frequency_min"), scene_key("wave.frequency_max"), scene_key("wave.amplitudes")}) {
       refuse(key, "\"jonswap\" or \"pierson-moskowitz\"");
     }
   }
-  if (components && keys.has("wave.component_frequencies") && keys.has("wave.component_amplitudes") &&
-      keys.has("wave.component_phases")) {
-    const std::size_t count = keys.list("wave.component_frequencies").size();
-    for (const char* key : {"wave.component_amplitudes", "wave.component_phases"}) {
+  if (components && keys.has(scene_key("wave.component_frequencies")) && keys.has(scene_key("wave.component_amplitudes")) &&
+      keys.has(scene_key("wave.component_phases"))) {
+    const std::size_t count = keys.list(scene_key("wave.component_frequencies")).size();
+    for (const char* key : {scene_key("wave.component_amplitudes"), scene_key("wave.component_phases")}) {
       if (keys.list(key).size() != count) {
         keys.report(keys.line(key), key, keys.shown(key),
                     fmt::format("{} values for {} component frequencies (valid: one per frequency)",
@@ -53,25 +54,25 @@ void check_wave_keys(WrittenKeys& keys, int wave_line) {
       }
     }
   }
-  if (parametric && keys.has("wave.frequency_min") && keys.has("wave.frequency_max") &&
-      !(keys.number("wave.frequency_max") > keys.number("wave.frequency_min"))) {
-    keys.report(keys.line("wave.frequency_max"), "wave.frequency_max", keys.shown("wave.frequency_max"),
+  if (parametric && keys.has(scene_key("wave.frequency_min")) && keys.has(scene_key("wave.frequency_max")) &&
+      !(keys.number(scene_key("wave.frequency_max")) > keys.number(scene_key("wave.frequency_min")))) {
+    keys.report(keys.line(scene_key("wave.frequency_max")), scene_key("wave.frequency_max"), keys.shown(scene_key("wave.frequency_max")),
                 fmt::format("not above wave.frequency_min = {:g} rad/s (valid range ({:g}, 100] rad/s)",
-                            keys.number("wave.frequency_min"), keys.number("wave.frequency_min")));
+                            keys.number(scene_key("wave.frequency_min")), keys.number(scene_key("wave.frequency_min"))));
   }
-  if (parametric && keys.has("wave.frequency_min") != keys.has("wave.frequency_max")) {
-    const char* given = keys.has("wave.frequency_min") ? "wave.frequency_min" : "wave.frequency_max";
+  if (parametric && keys.has(scene_key("wave.frequency_min")) != keys.has(scene_key("wave.frequency_max"))) {
+    const char* given = keys.has(scene_key("wave.frequency_min")) ? scene_key("wave.frequency_min") : scene_key("wave.frequency_max");
     keys.report(keys.line(given), given, keys.shown(given),
                 "give both wave.frequency_min and wave.frequency_max (a band), or neither (the energy band)");
   }
 }
 
 void build_wave(const WrittenKeys& keys, Scene& scene) {
-  const std::string& spectrum = keys.text("wave.spectrum");
-  const bool head = keys.text("wave.direction") == "head";
+  const std::string& spectrum = keys.text(scene_key("wave.spectrum"));
+  const bool head = keys.text(scene_key("wave.direction")) == "head";
   if (spectrum == "regular") {
-    scene.wave = Wave{keys.number("wave.height"), keys.number("wave.period"),
-                      head ? hydro::WaveHeading::head : hydro::WaveHeading::following, keys.number("wave.ramp_periods")};
+    scene.wave = Wave{keys.number(scene_key("wave.height")), keys.number(scene_key("wave.period")),
+                      head ? hydro::WaveHeading::head : hydro::WaveHeading::following, keys.number(scene_key("wave.ramp_periods"))};
     return;
   }
   IrregularSea sea;
@@ -79,26 +80,26 @@ void build_wave(const WrittenKeys& keys, Scene& scene) {
                  : spectrum == "pierson-moskowitz" ? SeaSpectrum::pierson_moskowitz
                                                    : SeaSpectrum::components;
   sea.heading = head ? hydro::WaveHeading::head : hydro::WaveHeading::following;
-  sea.ramp_periods = keys.number("wave.ramp_periods");
-  sea.kinematics = keys.text("wave.kinematics") == "exact" ? WaveKinematics::exact : WaveKinematics::precomputed;
-  sea.kinematics_tolerance = keys.number("wave.kinematics_tolerance");
-  sea.kinematics_range = {keys.number("wave.kinematics_surge_range"), keys.number("wave.kinematics_heave_range"),
-                          keys.number("wave.kinematics_pitch_range")};
+  sea.ramp_periods = keys.number(scene_key("wave.ramp_periods"));
+  sea.kinematics = keys.text(scene_key("wave.kinematics")) == "exact" ? WaveKinematics::exact : WaveKinematics::precomputed;
+  sea.kinematics_tolerance = keys.number(scene_key("wave.kinematics_tolerance"));
+  sea.kinematics_range = {keys.number(scene_key("wave.kinematics_surge_range")), keys.number(scene_key("wave.kinematics_heave_range")),
+                          keys.number(scene_key("wave.kinematics_pitch_range"))};
   if (sea.spectrum == SeaSpectrum::components) {
-    sea.component_frequencies = keys.list("wave.component_frequencies");
-    sea.component_amplitudes = keys.list("wave.component_amplitudes");
-    sea.component_phases = keys.list("wave.component_phases");
+    sea.component_frequencies = keys.list(scene_key("wave.component_frequencies"));
+    sea.component_amplitudes = keys.list(scene_key("wave.component_amplitudes"));
+    sea.component_phases = keys.list(scene_key("wave.component_phases"));
   } else {
-    sea.significant_height = keys.number("wave.significant_height");
-    sea.peak_period = keys.number("wave.peak_period");
-    sea.peak_enhancement = sea.spectrum == SeaSpectrum::jonswap ? keys.number("wave.peak_enhancement") : 1.0;
-    sea.sigma_below = keys.number("wave.sigma_below");
-    sea.sigma_above = keys.number("wave.sigma_above");
-    sea.seed = static_cast<std::uint64_t>(keys.number("wave.seed"));
-    sea.component_count = static_cast<int>(keys.number("wave.components"));
-    if (keys.has("wave.frequency_min")) sea.frequency_min = keys.number("wave.frequency_min");
-    if (keys.has("wave.frequency_max")) sea.frequency_max = keys.number("wave.frequency_max");
-    sea.random_amplitudes = keys.text("wave.amplitudes") == "rayleigh";
+    sea.significant_height = keys.number(scene_key("wave.significant_height"));
+    sea.peak_period = keys.number(scene_key("wave.peak_period"));
+    sea.peak_enhancement = sea.spectrum == SeaSpectrum::jonswap ? keys.number(scene_key("wave.peak_enhancement")) : 1.0;
+    sea.sigma_below = keys.number(scene_key("wave.sigma_below"));
+    sea.sigma_above = keys.number(scene_key("wave.sigma_above"));
+    sea.seed = static_cast<std::uint64_t>(keys.number(scene_key("wave.seed")));
+    sea.component_count = static_cast<int>(keys.number(scene_key("wave.components")));
+    if (keys.has(scene_key("wave.frequency_min"))) sea.frequency_min = keys.number(scene_key("wave.frequency_min"));
+    if (keys.has(scene_key("wave.frequency_max"))) sea.frequency_max = keys.number(scene_key("wave.frequency_max"));
+    sea.random_amplitudes = keys.text(scene_key("wave.amplitudes")) == "rayleigh";
   }
   scene.sea = std::move(sea);
 }
