@@ -2,6 +2,8 @@
 // wire's events from the located events, and the partial run a failure carries.
 #include "multibody/crane_run.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "solve/integrator_table.hpp"
@@ -47,6 +49,9 @@ void take_record(solve::IntegrationRecord&& record, RunResult& result) {
 
 RunResult simulate(CraneEquations& equations, const Eigen::VectorXd& z0, const RunSettings& settings) {
   RunResult result;
+  if (settings.output_interval > 0.0 && std::isfinite(settings.duration / settings.output_interval)) {
+    result.samples.reserve(static_cast<std::size_t>(std::max(0L, std::lround(settings.duration / settings.output_interval))) + 1);
+  }
   const std::string solver(solve::is_valid(settings.kind) ? solve::integrator_entry(settings.kind).label : "integrator");
   CraneRecorder recorder(equations, settings.monitor, solver.c_str(), result);
   try {
