@@ -74,8 +74,12 @@ class CraneEquations : public solve::SecondOrderSystem {
   virtual double wire_stretch_full(ConstRef q) = 0;
   // The event function: the wire's stretch, with a cargo on the wire.
   int event_count() const override { return cargo_offset() >= 0 ? 1 : 0; }
-  void minimal_events(double t, ConstRef z, Ref g) override { g(0) = wire_stretch_minimal(t, z); }
-  void full_events(double, ConstRef q, Ref g) override { g(0) = wire_stretch_full(q); }
+  void minimal_events(double t, ConstRef z, Ref g) override {
+    if (g.size() > 0) g(0) = wire_stretch_minimal(t, z);
+  }
+  void full_events(double, ConstRef q, Ref g) override {
+    if (g.size() > 0) g(0) = wire_stretch_full(q);
+  }
 
   // Index of the cargo's (x, y, θ) in the minimal coordinates; −1 without a cargo.
   virtual int cargo_offset() const = 0;

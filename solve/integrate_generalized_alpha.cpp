@@ -63,7 +63,7 @@ class GeneralizedAlpha {
     scale_ = scale_.cwiseAbs().cwiseMax(Eigen::VectorXd::Constant(n_, 1e-2));
     consistent_accelerations(eq_, 0.0, q_, v_, acc_, lambda_);
     a_ = acc_;
-    eq_.full_events(0.0, q_, events_);
+    if (events_.size() > 0) eq_.full_events(0.0, q_, events_);
   }
 
   // One step from t to t + h; the events' sign changes located by linear interpolation.
@@ -114,6 +114,7 @@ class GeneralizedAlpha {
     acc_ = x_acc_;
     lambda_ = x_lambda_;
     ++stats_.steps;
+    if (events_.size() == 0) return;
     eq_.full_events(t1, q_, next_events_);
     for (int i = 0; i < static_cast<int>(events_.size()); ++i) {
       const double before = events_(i), after = next_events_(i);
@@ -238,11 +239,12 @@ IntegrationRecord integrate_generalized_alpha(SecondOrderSystem& equations, Outp
   GeneralizedAlpha solver(equations, settings, h, result);
   solver.start(z0);
   sundials::Progress progress(settings.progress, settings.duration, "generalized-alpha");
-  result.time.push_back(0.0);
-  solver.sample(sink, 0.0);
   const long outputs = std::lround(settings.duration / settings.output_interval);
   double t = 0.0;
   try {
+    throw_if_stop_requested();
+    result.time.push_back(0.0);
+    solver.sample(sink, 0.0);
     for (long k = 1; k <= outputs; ++k) {
       const double t0 = static_cast<double>(k - 1) * settings.output_interval;
       for (long i = 0; i < per_output; ++i) {

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 #include "solve/integrator_table.hpp"
 #include "solve/stop_request.hpp"
@@ -23,11 +24,16 @@ IntegrationRecord kinematic_run(OutputSink& sink, const IntegratorSettings& sett
   IntegrationRecord result;
   const Eigen::VectorXd none(0);
   const long outputs = std::lround(settings.duration / settings.output_interval);
-  for (long k = 0; k <= outputs; ++k) {
-    const double t = static_cast<double>(k) * settings.output_interval;
-    throw_if_stop_requested();
-    result.time.push_back(t);
-    sink.minimal_sample(t, none, none);
+  try {
+    for (long k = 0; k <= outputs; ++k) {
+      const double t = static_cast<double>(k) * settings.output_interval;
+      throw_if_stop_requested();
+      result.time.push_back(t);
+      sink.minimal_sample(t, none, none);
+    }
+  } catch (SolverFailure& failure) {  // a watch on a sample: the samples so far
+    failure.attach_partial(std::make_shared<const IntegrationRecord>(result));
+    throw;
   }
   result.stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
@@ -40,6 +46,14 @@ IntegrationRecord integrate(SecondOrderSystem& system, OutputSink& sink, const E
   if (!is_valid(settings.kind)) {
     throw SolverFailure(FailureKind::setup, "integrator", InvalidIntegrator(settings.kind).what(), 0.0,
                         "choose one of the valid formulation × solver pairs");
+  }
+  // The solvers hold constraint- and event-sized values in storage of fixed capacity.
+  if (system.constraint_count() > max_constraints || system.event_count() > max_events) {
+    throw SolverFailure(FailureKind::setup, "integrator",
+                        "the system has " + std::to_string(system.constraint_count()) + " constraints and " +
+                            std::to_string(system.event_count()) + " event functions; the solvers hold at most " +
+                            std::to_string(max_constraints) + " and " + std::to_string(max_events),
+                        0.0, "raise solve::max_constraints or solve::max_events (solve/second_order_system.hpp)");
   }
   const IntegratorEntry& entry = integrator_entry(settings.kind);
   if (system.minimal_size() == 0 && settings.kind.formulation == Formulation::minimal) return kinematic_run(sink, settings);
