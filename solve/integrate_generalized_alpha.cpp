@@ -57,10 +57,7 @@ class GeneralizedAlpha {
   // Consistent start at rest: q̈0, λ0 from [M C_qᵀ; C_q 0][q̈; λ] = [Q; −(C_q v)_q v], a_0 = q̈0.
   void start(const Eigen::VectorXd& z0) {
     eq_.full_from_minimal(0.0, z0, Eigen::VectorXd::Zero(z0.size()), q_, v_);
-    const Eigen::VectorXd minimal_scale = eq_.coordinate_scale();
-    Eigen::VectorXd ignore(n_);
-    eq_.full_from_minimal(0.0, minimal_scale, minimal_scale, scale_, ignore);
-    scale_ = scale_.cwiseAbs().cwiseMax(Eigen::VectorXd::Constant(n_, 1e-2));
+    scale_ = full_coordinate_scale(eq_);
     consistent_accelerations(eq_, 0.0, q_, v_, acc_, lambda_);
     a_ = acc_;
     if (events_.size() > 0) eq_.full_events(0.0, q_, events_);

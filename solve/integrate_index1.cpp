@@ -212,10 +212,7 @@ IntegrationRecord integrate_index1(SecondOrderSystem& equations, OutputSink& sin
   equations.full_from_minimal(0.0, z0, Eigen::VectorXd::Zero(z0.size()), state.head(n), state.tail(n));
 
   // Tolerances as IDA's: each full coordinate scaled by its minimal counterpart's typical size.
-  const Eigen::VectorXd minimal_scale = equations.coordinate_scale();
-  Eigen::VectorXd full_scale(n), ignore(n);
-  equations.full_from_minimal(0.0, minimal_scale, minimal_scale, full_scale, ignore);
-  full_scale = full_scale.cwiseAbs().cwiseMax(Eigen::VectorXd::Constant(n, 1e-2));
+  const Eigen::VectorXd full_scale = full_coordinate_scale(equations);
   tolerance.map().head(n) = settings.absolute_tolerance * full_scale;
   tolerance.map().tail(n) = settings.absolute_tolerance * full_scale;
 

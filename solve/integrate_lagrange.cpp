@@ -91,10 +91,7 @@ IntegrationRecord integrate_lagrange(SecondOrderSystem& equations, OutputSink& s
   s_dot.head(n) = s.segment(n, n);
 
   // Tolerances and the differential/algebraic split.
-  const Eigen::VectorXd minimal_scale = equations.coordinate_scale();
-  Eigen::VectorXd full_scale(n), ignore(n);
-  equations.full_from_minimal(0.0, minimal_scale, minimal_scale, full_scale, ignore);
-  full_scale = full_scale.cwiseAbs().cwiseMax(Eigen::VectorXd::Constant(n, 1e-2));
+  const Eigen::VectorXd full_scale = full_coordinate_scale(equations);
   auto tol = tolerance.map();
   tol.head(n) = settings.absolute_tolerance * full_scale;
   tol.segment(n, n) = settings.absolute_tolerance * full_scale;

@@ -61,11 +61,7 @@ IntegrationRecord integrate_minimal(SecondOrderSystem& equations, OutputSink& si
   const int n = equations.minimal_size();
   sundials::Context context;
   sundials::Vector y(2 * n, context.ctx), tolerance(2 * n, context.ctx);
-  y.map().head(n) = z0;
-  y.map().tail(n).setZero();
-  const Eigen::VectorXd scale = equations.coordinate_scale();
-  tolerance.map().head(n) = settings.absolute_tolerance * scale;
-  tolerance.map().tail(n) = settings.absolute_tolerance * scale;
+  sundials::start_at_rest(z0, equations.coordinate_scale(), settings.absolute_tolerance, y, tolerance);
 
   sundials::CallbackGuard guard("CVODE", settings.work);
   OdeData data{&equations, equations.event_count(), n, &guard};

@@ -13,6 +13,14 @@ double increment(double value) { return 1e-7 * std::max(std::abs(value), 1.0); }
 
 }  // namespace
 
+Eigen::VectorXd full_coordinate_scale(SecondOrderSystem& system) {
+  const int n = system.full_size();
+  const Eigen::VectorXd minimal_scale = system.coordinate_scale();
+  Eigen::VectorXd full_scale(n), ignore(n);
+  system.full_from_minimal(0.0, minimal_scale, minimal_scale, full_scale, ignore);
+  return full_scale.cwiseAbs().cwiseMax(Eigen::VectorXd::Constant(n, 1e-2));
+}
+
 void SecondOrderSystem::minimal_jacobian(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, SecondOrderJacobian& out) {
   const int n = minimal_size();
   out.set_zero();

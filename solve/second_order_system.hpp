@@ -52,6 +52,12 @@ struct ResidualRow {
   bool rigid = false;
 };
 
+class SecondOrderSystem;
+
+// Typical size of each full coordinate: its minimal counterpart's (coordinate_scale through
+// full_from_minimal), at least 1e-2 — the full-coordinate integrators' tolerances and Newton norms.
+Eigen::VectorXd full_coordinate_scale(SecondOrderSystem& system);
+
 class SecondOrderSystem {
  public:
   using ConstRef = Eigen::Ref<const Eigen::VectorXd>;

@@ -222,6 +222,17 @@ class Progress {
   int last_percent_ = -1;
 };
 
+// The minimal-coordinate adapters' start y = (z0, 0) at rest, and their absolute tolerances: atol
+// times each coordinate's typical size, for positions and velocities alike.
+inline void start_at_rest(const Eigen::VectorXd& z0, const Eigen::VectorXd& scale, double absolute_tolerance, Vector& y,
+                          Vector& tolerance) {
+  const Eigen::Index n = z0.size();
+  y.map().head(n) = z0;
+  y.map().tail(n).setZero();
+  tolerance.map().head(n) = absolute_tolerance * scale;
+  tolerance.map().tail(n) = absolute_tolerance * scale;
+}
+
 // SUNDIALS root functions (CVODE's and ARKODE's signature) over a system's event functions at a
 // minimal or a full state: `Data` (the adapter's user data) holds `equations` (the system), `events`
 // (their count), `size` (the coordinates' count) and `guard` (the CallbackGuard every callback runs in).
