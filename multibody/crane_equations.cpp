@@ -8,14 +8,16 @@ namespace ffrf::multibody {
 namespace {
 
 // The rows of the minimal coordinates: hull (surge, heave, pitch) when it floats, cargo (x, y, θ),
-// then the boom's elastic coordinates.
+// the pinned heel's moment, then the boom's elastic coordinates.
 struct RowLayout {
-  int hull = -1, cargo = -1, elastic = 0;
+  int hull = -1, cargo = -1, heel = -1, elastic = 0;
   explicit RowLayout(const CraneEquations& equations)
-      : cargo(equations.cargo_offset()), elastic(equations.minimal_size() - equations.elastic_size()) {
-    if (elastic - (cargo >= 0 ? 3 : 0) == 3) hull = 0;
+      : cargo(equations.cargo_offset()), heel(equations.heel_offset()), elastic(equations.minimal_size() - equations.elastic_size()) {
+    if (elastic - (cargo >= 0 ? 3 : 0) - (heel >= 0 ? 1 : 0) == 3) hull = 0;
   }
-  bool is_moment(int row) const { return (hull >= 0 && row == hull + 2) || (cargo >= 0 && row == cargo + 2); }
+  bool is_moment(int row) const {
+    return (hull >= 0 && row == hull + 2) || (cargo >= 0 && row == cargo + 2) || (heel >= 0 && row == heel);
+  }
   bool is_rigid(int row) const { return row < elastic; }
 };
 
@@ -46,6 +48,11 @@ solve::ResidualRow CraneEquations::residual_row(int row) const {
     meaning.check =
         "the cargo cannot hang still below the boom tip: check the wire (wire.stiffness, wire.unstretched_length) "
         "and the hook (cargo.hook_x, cargo.hook_y)";
+  } else if (rows.heel >= 0 && row == rows.heel) {
+    meaning.what = "the boom's moment about its pinned heel";
+    meaning.check =
+        "the luffing wires cannot hold the boom: check that they are taut at rest (luffing wire unstretched length "
+        "against the heel-to-A-frame geometry) and stiff enough";
   } else {
     meaning.what = "the boom's elastic force (coordinate " + std::to_string(row - rows.elastic) + ")";
     meaning.check =

@@ -1,13 +1,15 @@
 // The crane's equations as the solvers see them (solve/second_order_system.hpp), and what the crane
-// adds for its own recorders, detectors and studies: the outputs of a state, the wire's stretch, the
-// layout of its coordinates and the hull loads' counters.
-//  * Minimal coordinates z = (hull x, y, θ | cargo x, y, θ | η): the boom frame is eliminated by
-//    the clamp at B. Without hull DOFs when the hull is held fixed.
-//  * Full coordinates q = (hull | cargo | boom R_B, θ_B, η) with the clamp as 3 constraints
-//    C(q, t) = 0 and Lagrange multipliers: M(q) q̈ = Q(q, q̇, t) − C_qᵀ λ (paper eqs. 17, 22, 31–34).
+// adds for its own recorders, detectors and studies: the outputs of a state, the wires' stretches,
+// the layout of its coordinates (multibody/crane_layout.hpp) and the hull loads' counters.
+//  * Minimal coordinates z = (hull x, y, θ | cargo x, y, θ | heel β | η): the boom frame is
+//    eliminated by the heel joint at B (a clamp leaves no coordinate, a pin the luffing angle β).
+//    Without hull DOFs when the hull is held fixed.
+//  * Full coordinates q = (hull | cargo | boom R_B, θ_B, η) with the heel as 3 (clamp) or 2 (pin)
+//    constraints C(q, t) = 0 and Lagrange multipliers: M(q) q̈ = Q(q, q̇, t) − C_qᵀ λ (paper eqs. 17,
+//    22, 31–34).
 //    With a driven base (prescribed motion) C depends on t: C_q v + C_t = 0 at velocity level.
 // The hull block is absent when the base is held or driven, the cargo block when there is no cargo.
-// The one event function is the wire's stretch ℓ − L0 (slack below zero), present with a cargo.
+// The event functions are the wires' stretches ℓ − L0 (slack below zero), one per wire.
 #pragma once
 
 #include <Eigen/Dense>
@@ -34,8 +36,9 @@ struct CraneOutputs {
   Eigen::Vector3d hull = Eigen::Vector3d::Zero();        // G1 (or hub) x [m], y [m], pitch [rad]
   Eigen::Vector3d cargo = Eigen::Vector3d::Zero();       // G2 x [m], y [m], pitch [rad]
   Eigen::Vector2d tip_deflection = Eigen::Vector2d::Zero();  // elastic (u, v) at A′ in the boom frame [m]
-  double wire_tension = 0.0;                             // [N]
+  double wire_tension = 0.0;                             // the hoist wire's [N]
   double wire_length = 0.0;                              // [m]
+  double luffing_tension = 0.0;                          // all luffing wires together [N] (a pinned boom's)
   Eigen::Vector3d joint_reaction = Eigen::Vector3d::Zero();  // on the boom at B: Fx, Fy [N] (global), M [N m]
   double root_axial_force = 0.0;                         // boom axial force at B, tension > 0 [N]
   double constraint_residual = 0.0;                      // |C(q)| (0 in minimal coordinates) [m]
@@ -69,20 +72,22 @@ class CraneEquations : public solve::SecondOrderSystem {
     return minimal_outputs(t, z, z_dot).kinetic_energy;
   }
 
-  // Wire slack indicator ℓ − L0 [m]; 1 m when there is no wire.
-  virtual double wire_stretch_minimal(double t, ConstRef z) = 0;
-  virtual double wire_stretch_full(ConstRef q) = 0;
-  // The event function: the wire's stretch, with a cargo on the wire.
-  int event_count() const override { return cargo_offset() >= 0 ? 1 : 0; }
-  void minimal_events(double t, ConstRef z, Ref g) override {
-    if (g.size() > 0) g(0) = wire_stretch_minimal(t, z);
-  }
-  void full_events(double, ConstRef q, Ref g) override {
-    if (g.size() > 0) g(0) = wire_stretch_full(q);
-  }
+  // The wires (multibody/crane_parameters.hpp: WireConnector): how many, which one carries the cargo
+  // (−1: none), their names, and their stretches ℓ − L0 [m] (slack below zero), one per wire.
+  virtual int wire_count() const = 0;
+  virtual int hoist_wire() const = 0;
+  virtual std::string wire_name(int wire) const = 0;
+  virtual void wire_stretches_minimal(double t, ConstRef z, Ref stretch) = 0;
+  virtual void wire_stretches_full(double t, ConstRef q, Ref stretch) = 0;
+  // The event functions: every wire's stretch, event i the wire i.
+  int event_count() const override { return wire_count(); }
+  void minimal_events(double t, ConstRef z, Ref g) override { wire_stretches_minimal(t, z, g); }
+  void full_events(double t, ConstRef q, Ref g) override { wire_stretches_full(t, q, g); }
 
   // Index of the cargo's (x, y, θ) in the minimal coordinates; −1 without a cargo.
   virtual int cargo_offset() const = 0;
+  // Index of the pinned heel's luffing angle β in the minimal coordinates; −1 for a clamped boom.
+  virtual int heel_offset() const { return -1; }
   // Elastic coordinate count (0 for the rigid boom).
   virtual int elastic_size() const = 0;
   // Hull-load evaluations in a wave so far, by path (zeros without a wave).

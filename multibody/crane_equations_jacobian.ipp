@@ -2,13 +2,14 @@
 // (solve/second_order_jacobian.hpp) and the outputs from known accelerations.
 // Columns of K = −∂(Q − M a)/∂x and D = −∂(Q − M a)/∂ẋ by three means:
 //  * the elastic columns analytically: the boom's own terms (FloatingFrameBody::add_elastic_derivatives:
-//    stiffness, damping, stiffening, quadratic velocity, gravity, inertia), mapped to the hull rows
-//    by J_rᵀ in minimal coordinates — no evaluation of the equations;
-//  * the wire's share of the columns whose coordinates move the tip (the nonzero columns of the tip's
-//    shape rows: the last node's DOFs of a nodal boom, every modal coordinate) by forward differences
-//    of the wire's loads alone;
-//  * the dense columns (hull, cargo and, in full coordinates, the boom frame) by forward differences
-//    of the whole residual: 12 (minimal) or 18 (full) evaluations whatever the element count.
+//    stiffness, damping, stiffening, quadratic velocity, gravity, inertia), mapped to the rigid rows
+//    (hull, heel) by Jᵀ in minimal coordinates — no evaluation of the equations;
+//  * the wires' share of the columns whose coordinates move a wire's attachment on the boom (the
+//    nonzero columns of its shape rows: the tip node's DOFs of a nodal boom, every modal coordinate)
+//    by forward differences of the wires' loads alone;
+//  * the dense columns (hull, cargo, the heel's angle and, in full coordinates, the boom frame) by
+//    forward differences of the whole residual: 12 (minimal) or 18 (full) evaluations for the
+//    clamped crane whatever the element count.
 // Increments: δ = f·s_j for positions and f·max(|ẋ_j|, s_j) for velocities, s_j the coordinate's
 // typical size (coordinate_scale(): 1 m, 0.01 rad, the elastic ones' 1 cm), f = 10⁻⁷ for the whole
 // residual and 10⁻⁶ for the wire's loads alone (fewer large terms, so less round-off). These keep the
@@ -21,67 +22,60 @@
 
 namespace ffrf::multibody::detail {
 
-template <fem::ElasticCoordinates Coords>
-Eigen::Matrix3d CraneEquationsOf<Coords>::mount_jacobian() const {
-  Eigen::Matrix3d jr = Eigen::Matrix3d::Identity();
-  jr(0, 2) = -mount_offset_.y();
-  jr(1, 2) = mount_offset_.x();
-  return jr;
-}
-
-template <fem::ElasticCoordinates Coords>
-void CraneEquationsOf<Coords>::minimal_residual(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, Ref out) {
+template <fem::ElasticCoordinates Coords, bool Pinned>
+void CraneEquationsOf<Coords, Pinned>::minimal_residual(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, Ref out) {
   minimal_forces(t, z, z_dot, true);
   const auto eta_ddot = z_ddot.tail(n_);
   out.tail(n_) = elastic_rhs_;
   out.tail(n_).noalias() -= m_.boom.coords().mass_ff() * eta_ddot;
-  if (hull_free()) {
-    const Eigen::Matrix3d jr = mount_jacobian();
-    const Eigen::Matrix3d hull_mass = hull_rigid_inertia() + jr.transpose() * boom_reference_mass_ * jr;
-    const Eigen::Vector3d hull_a = z_ddot.head<3>();
-    out.head<3>() = hull_rhs_ - hull_mass * hull_a;
-    out.head<3>().noalias() -= hull_elastic_mass_ * eta_ddot;
-    out.tail(n_).noalias() -= hull_elastic_mass_.transpose() * hull_a;
+  if (layout_.rigid_size() > 0) {
+    const FrameJacobian& jr = frame_jacobian_;
+    const RigidMatrix rigid_mass = rigid_inertia() + jr.transpose() * boom_reference_mass_ * jr;
+    const RigidVector rigid_a = rigid_part(z_ddot);
+    RigidVector rigid = rigid_rhs_ - rigid_mass * rigid_a;
+    rigid.noalias() -= rigid_elastic_mass_ * eta_ddot;
+    scatter_rigid(rigid, out);
+    out.tail(n_).noalias() -= rigid_elastic_mass_.transpose() * rigid_a;
   }
-  if (has_cargo()) out.segment<3>(cargo_at_) = cargo_force_ - cargo_inertia().cwiseProduct(z_ddot.segment<3>(cargo_at_));
+  if (has_cargo()) out.segment<3>(layout_.cargo) = cargo_force_ - cargo_inertia().cwiseProduct(z_ddot.segment<3>(layout_.cargo));
 }
 
-template <fem::ElasticCoordinates Coords>
-void CraneEquationsOf<Coords>::minimal_wire_residual(double t, ConstRef z, ConstRef z_dot, Ref out) {
+template <fem::ElasticCoordinates Coords, bool Pinned>
+void CraneEquationsOf<Coords, Pinned>::minimal_wire_residual(double t, ConstRef z, ConstRef z_dot, Ref out) {
   out.setZero();
-  if (!has_cargo()) return;
-  Eigen::Vector3d hull_q, hull_v;
-  split_minimal(t, z, z_dot, hull_q, hull_v);
-  mount_boom(hull_q, hull_v);
-  boom_q_.tail(n_) = z.tail(n_);
-  boom_v_.tail(n_) = z_dot.tail(n_);
+  if (m_.wires.empty()) return;
+  set_minimal_state(t, z, z_dot);
   wire_boom_force_.setZero();
-  Eigen::Vector3d cargo = Eigen::Vector3d::Zero();
-  add_wire_loads(z.segment<3>(cargo_at_), z_dot.segment<3>(cargo_at_), false, wire_boom_force_, cargo);
-  if (hull_free()) out.head<3>() = mount_jacobian().transpose() * wire_boom_force_.head<3>();
-  out.segment<3>(cargo_at_) = cargo;
+  Eigen::Vector3d hull = Eigen::Vector3d::Zero(), cargo = Eigen::Vector3d::Zero();
+  add_wire_loads(false, wire_boom_force_, hull, cargo);
+  if (layout_.rigid_size() > 0) {
+    RigidVector rigid = frame_jacobian().transpose() * wire_boom_force_.head<3>();
+    if (hull_free() && !hull.isZero(0.0)) rigid.template head<3>() += hull;  // (a wire to the hull)
+    scatter_rigid(rigid, out);
+  }
+  if (has_cargo()) out.segment<3>(layout_.cargo) = cargo;
   out.tail(n_) = wire_boom_force_.tail(n_);
 }
 
-template <fem::ElasticCoordinates Coords>
-void CraneEquationsOf<Coords>::full_residual(double t, ConstRef q, ConstRef v, ConstRef v_dot, Ref out) {
+template <fem::ElasticCoordinates Coords, bool Pinned>
+void CraneEquationsOf<Coords, Pinned>::full_residual(double t, ConstRef q, ConstRef v, ConstRef v_dot, Ref out) {
   full_forces(t, q, v, out);
   full_mass_times(q, v_dot, full_inertia_);
   out -= full_inertia_;
 }
 
-template <fem::ElasticCoordinates Coords>
-void CraneEquationsOf<Coords>::full_wire_residual(ConstRef q, ConstRef v, Ref out) {
+template <fem::ElasticCoordinates Coords, bool Pinned>
+void CraneEquationsOf<Coords, Pinned>::full_wire_residual(double t, ConstRef q, ConstRef v, Ref out) {
   out.setZero();
-  if (!has_cargo()) return;
-  boom_q_ = q.tail(3 + n_);
-  boom_v_ = v.tail(3 + n_);
-  Eigen::Vector3d cargo = Eigen::Vector3d::Zero();
-  add_wire_loads(q.segment<3>(cargo_at_), v.segment<3>(cargo_at_), false, out.tail(3 + n_), cargo);
-  out.segment<3>(cargo_at_) = cargo;
+  if (m_.wires.empty()) return;
+  set_full_state(t, q, v);
+  Eigen::Vector3d hull = Eigen::Vector3d::Zero(), cargo = Eigen::Vector3d::Zero();
+  add_wire_loads(false, out.tail(3 + n_), hull, cargo);
+  if (hull_free()) out.segment<3>(layout_.hull) = hull;
+  if (has_cargo()) out.segment<3>(layout_.cargo) = cargo;
 }
 
-// The shared steps of both Jacobians: difference the wire's share over the tip columns (added) and
+// The shared steps of both Jacobians: difference the wires' share over their columns (added) and
 // the whole residual over the dense leading columns (assigned). `residual(x, x_dot, out)` and
 // `wire(x, x_dot, out)` evaluate at the given state; `x`, `x_dot` are the state (restored on return).
 constexpr double dense_increment = 1e-7;  // × size: the whole residual (hull loads ~1e8 N)
@@ -137,23 +131,26 @@ void difference_columns(int size, int dense_columns, int elastic_offset, const s
   }
 }
 
-template <fem::ElasticCoordinates Coords>
-void CraneEquationsOf<Coords>::minimal_jacobian(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, SecondOrderJacobian& out) {
-  const int size = minimal_size(), e = elastic_at_;
+template <fem::ElasticCoordinates Coords, bool Pinned>
+void CraneEquationsOf<Coords, Pinned>::minimal_jacobian(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, SecondOrderJacobian& out) {
+  const int size = minimal_size(), e = layout_.elastic, r = layout_.rigid_size();
   out.set_zero();
-  minimal_forces(t, z, z_dot, true);  // mounts the boom, its mass blocks and hull_elastic_mass_
-  const Eigen::Matrix3d jr = mount_jacobian();
+  minimal_forces(t, z, z_dot, true);  // mounts the boom, its mass blocks, J and Jᵀ M_Rf
+  // The rigid rows' and columns' places in z: the hull's, then the heel's.
+  int rigid_index[4] = {0, 0, 0, 0};
+  for (int i = 0; i < r; ++i) rigid_index[i] = (hull_free() && i < 3) ? layout_.hull + i : layout_.heel;
   Eigen::Vector3d frame_a = frame_known_acc_;
-  if (hull_free()) {
-    const Eigen::Matrix3d hull_mass = hull_rigid_inertia() + jr.transpose() * boom_reference_mass_ * jr;
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) out.mass.at(i, j) = hull_mass(i, j);
-      for (int j = 0; j < n_; ++j) out.mass.at(i, e + j) = out.mass.at(e + j, i) = hull_elastic_mass_(i, j);
+  if (r > 0) {
+    const FrameJacobian& jr = frame_jacobian_;
+    const RigidMatrix rigid_mass = rigid_inertia() + jr.transpose() * boom_reference_mass_ * jr;
+    for (int i = 0; i < r; ++i) {
+      for (int j = 0; j < r; ++j) out.mass.at(rigid_index[i], rigid_index[j]) = rigid_mass(i, j);
+      for (int j = 0; j < n_; ++j) out.mass.at(rigid_index[i], e + j) = out.mass.at(e + j, rigid_index[i]) = rigid_elastic_mass_(i, j);
     }
-    frame_a += jr * z_ddot.head<3>();
+    frame_a += jr * rigid_part(z_ddot);
   }
   if (has_cargo()) {
-    for (int i = 0; i < 3; ++i) out.mass.at(cargo_at_ + i, cargo_at_ + i) = cargo_inertia()(i);
+    for (int i = 0; i < 3; ++i) out.mass.at(layout_.cargo + i, layout_.cargo + i) = cargo_inertia()(i);
   }
   if (n_ > 0) {
     FloatingFrameBody<Coords>::add_scaled(m_.boom.coords().mass_ff(), 1.0, false, out.mass, e);
@@ -161,13 +158,13 @@ void CraneEquationsOf<Coords>::minimal_jacobian(double t, ConstRef z, ConstRef z
     boom_a_.tail(n_) = z_ddot.tail(n_);
     m_.boom.add_elastic_derivatives(boom_q_, boom_v_, boom_a_, Eigen::Vector2d(0.0, -m_.gravity), reference_stiffness_,
                                     reference_damping_, out.stiffness, out.damping, e, boom_work_);
-    if (hull_free()) {
-      const Eigen::Matrix<double, 3, Eigen::Dynamic> hull_k = jr.transpose() * reference_stiffness_;
-      const Eigen::Matrix<double, 3, Eigen::Dynamic> hull_d = jr.transpose() * reference_damping_;
-      for (int i = 0; i < 3; ++i) {
+    if (r > 0) {
+      const RigidCoupling rigid_k = frame_jacobian_.transpose() * reference_stiffness_;
+      const RigidCoupling rigid_d = frame_jacobian_.transpose() * reference_damping_;
+      for (int i = 0; i < r; ++i) {
         for (int j = 0; j < n_; ++j) {
-          out.stiffness.at(i, e + j) = hull_k(i, j);
-          out.damping.at(i, e + j) = hull_d(i, j);
+          out.stiffness.at(rigid_index[i], e + j) = rigid_k(i, j);
+          out.damping.at(rigid_index[i], e + j) = rigid_d(i, j);
         }
       }
     }
@@ -177,28 +174,28 @@ void CraneEquationsOf<Coords>::minimal_jacobian(double t, ConstRef z, ConstRef z
   state.head(size) = z;
   rate.head(size) = z_dot;
   difference_columns(
-      size, e, e, shared_->tip_columns, has_cargo(), shared_->minimal_scale, state, rate, jacobian_base_, jacobian_shifted_,
-      [&](const Eigen::VectorXd& s, const Eigen::VectorXd& s_dot, Eigen::VectorXd& r) {
-        minimal_residual(t, s.head(size), s_dot.head(size), z_ddot, r.head(size));
+      size, e, e, shared_->wire_columns, !m_.wires.empty(), shared_->minimal_scale, state, rate, jacobian_base_, jacobian_shifted_,
+      [&](const Eigen::VectorXd& s, const Eigen::VectorXd& s_dot, Eigen::VectorXd& res) {
+        minimal_residual(t, s.head(size), s_dot.head(size), z_ddot, res.head(size));
       },
-      [&](const Eigen::VectorXd& s, const Eigen::VectorXd& s_dot, Eigen::VectorXd& r) {
-        minimal_wire_residual(t, s.head(size), s_dot.head(size), r.head(size));
+      [&](const Eigen::VectorXd& s, const Eigen::VectorXd& s_dot, Eigen::VectorXd& res) {
+        minimal_wire_residual(t, s.head(size), s_dot.head(size), res.head(size));
       },
       out);
 }
 
-template <fem::ElasticCoordinates Coords>
-void CraneEquationsOf<Coords>::full_jacobian(double t, ConstRef q, ConstRef v, ConstRef v_dot, SecondOrderJacobian& out) {
-  const int size = full_size(), b = elastic_at_, e = elastic_at_ + 3;
+template <fem::ElasticCoordinates Coords, bool Pinned>
+void CraneEquationsOf<Coords, Pinned>::full_jacobian(double t, ConstRef q, ConstRef v, ConstRef v_dot, SecondOrderJacobian& out) {
+  const int size = full_size(), b = layout_.frame, e = layout_.frame + 3;
   out.set_zero();
   if (hull_free()) {
     const Eigen::Matrix3d hull_mass = hull_rigid_inertia();
     for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) out.mass.at(i, j) = hull_mass(i, j);
+      for (int j = 0; j < 3; ++j) out.mass.at(layout_.hull + i, layout_.hull + j) = hull_mass(i, j);
     }
   }
   if (has_cargo()) {
-    for (int i = 0; i < 3; ++i) out.mass.at(cargo_at_ + i, cargo_at_ + i) = cargo_inertia()(i);
+    for (int i = 0; i < 3; ++i) out.mass.at(layout_.cargo + i, layout_.cargo + i) = cargo_inertia()(i);
   }
   boom_q_ = q.tail(3 + n_);
   boom_v_ = v.tail(3 + n_);
@@ -224,34 +221,28 @@ void CraneEquationsOf<Coords>::full_jacobian(double t, ConstRef q, ConstRef v, C
   state.head(size) = q;
   rate.head(size) = v;
   difference_columns(
-      size, e, e, shared_->tip_columns, has_cargo(), shared_->full_scale, state, rate, jacobian_base_, jacobian_shifted_,
+      size, e, e, shared_->wire_columns, !m_.wires.empty(), shared_->full_scale, state, rate, jacobian_base_, jacobian_shifted_,
       [&](const Eigen::VectorXd& s, const Eigen::VectorXd& s_dot, Eigen::VectorXd& r) {
         full_residual(t, s.head(size), s_dot.head(size), v_dot, r.head(size));
       },
       [&](const Eigen::VectorXd& s, const Eigen::VectorXd& s_dot, Eigen::VectorXd& r) {
-        full_wire_residual(s.head(size), s_dot.head(size), r.head(size));
+        full_wire_residual(t, s.head(size), s_dot.head(size), r.head(size));
       },
       out);
 }
 
-template <fem::ElasticCoordinates Coords>
-CraneOutputs CraneEquationsOf<Coords>::minimal_outputs_with_accelerations(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot) {
-  Eigen::Vector3d hull_q, hull_v;
-  split_minimal(t, z, z_dot, hull_q, hull_v);
-  record_hull_velocity(t, hull_v);
-  mount_boom(hull_q, hull_v);
-  boom_q_.tail(n_) = z.tail(n_);
-  boom_v_.tail(n_) = z_dot.tail(n_);
-  const Eigen::Vector3d no_cargo = Eigen::Vector3d::Zero();
-  const Eigen::Vector3d cargo_q = has_cargo() ? Eigen::Vector3d(z.segment<3>(cargo_at_)) : no_cargo;
-  const Eigen::Vector3d cargo_v = has_cargo() ? Eigen::Vector3d(z_dot.segment<3>(cargo_at_)) : no_cargo;
-  boom_and_wire_loads(cargo_q, cargo_v, false);  // and the mass blocks
-  Eigen::Vector3d frame_a = frame_known_acceleration(t, hull_v);
-  if (hull_free()) frame_a += mount_jacobian() * z_ddot.head<3>();
+template <fem::ElasticCoordinates Coords, bool Pinned>
+CraneOutputs CraneEquationsOf<Coords, Pinned>::minimal_outputs_with_accelerations(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot) {
+  set_minimal_state(t, z, z_dot);
+  record_hull_velocity(t, hull_v_);
+  hull_force_.setZero();  // (the wires' share on the hull lands here; the hull's own loads are not needed)
+  boom_and_wire_loads(false);  // and the mass blocks
+  Eigen::Vector3d frame_a = frame_known_acceleration(t);
+  if (layout_.rigid_size() > 0) frame_a += frame_jacobian() * rigid_part(z_ddot);
   // Joint reaction on the boom at B: M_B q̈_B − Q_B over the frame rows, with q̈ from the caller.
   joint_reaction_ = boom_reference_mass_ * frame_a - boom_force_.head<3>();
   if (n_ > 0) joint_reaction_.noalias() += boom_coupling_ * z_ddot.tail(n_);
-  CraneOutputs out = common_outputs(hull_q, hull_v, cargo_q, cargo_v);
+  CraneOutputs out = common_outputs();
   out.joint_reaction = joint_reaction_;
   out.root_axial_force = root_axial_force(joint_reaction_, boom_q_(2));
   out.constraint_residual = 0.0;

@@ -7,21 +7,23 @@
 
 #include <cmath>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include "multibody/crane_model_of.hpp"
 #include "sea/excitation_record.hpp"
 #include "sea/hull_pressure_recorded.hpp"
+#include "multibody/rigid_body.hpp"
 #include "multibody/wire_rope.hpp"
 
 namespace ffrf::multibody::detail {
 
-template <fem::ElasticCoordinates Coords>
+template <fem::ElasticCoordinates Coords, bool Pinned>
 class CraneEquationsOf final : public CraneEquations {
  public:
   explicit CraneEquationsOf(std::shared_ptr<const CraneModelOf<Coords>> shared);
 
-  int minimal_size() const override { return elastic_at_ + n_; }
+  int minimal_size() const override { return layout_.minimal_size(); }
   Eigen::VectorXd initial_guess() const override;
   void minimal_accelerations(double t, ConstRef z, ConstRef z_dot, Ref z_ddot) override;
   void static_residual(ConstRef z, Ref residual) override;
@@ -30,7 +32,7 @@ class CraneEquationsOf final : public CraneEquations {
   Eigen::VectorXd coordinate_scale() const override;
   CraneOutputs minimal_outputs(double t, ConstRef z, ConstRef z_dot) override;
 
-  int full_size() const override { return elastic_at_ + 3 + n_; }
+  int full_size() const override { return layout_.full_size(); }
   void full_from_minimal(double t, ConstRef z, ConstRef z_dot, Ref q, Ref v) const override;
   void full_mass_times(ConstRef q, ConstRef a, Ref out) override;
   void full_forces(double t, ConstRef q, ConstRef v, Ref out) override;
@@ -41,26 +43,45 @@ class CraneEquationsOf final : public CraneEquations {
   using CraneEquations::full_mass_matrix;
   void full_mass_matrix(ConstRef q, Eigen::MatrixXd& mass) override;
   CraneOutputs full_outputs(double t, ConstRef q, ConstRef v, ConstRef lambda) override;
-  int constraint_count() const override { return 3; }  // the clamp at B: x, y and angle
-  double wire_stretch_minimal(double t, ConstRef z) override;
-  double wire_stretch_full(ConstRef q) override;
-  int cargo_offset() const override { return has_cargo() ? cargo_at_ : -1; }
+  // The heel at B: a clamp holds the frame's position and angle (3 rows), a pin its position (2).
+  int constraint_count() const override { return clamped() ? 3 : 2; }
+  int wire_count() const override { return static_cast<int>(m_.wires.size()); }
+  int hoist_wire() const override { return m_.hoist_wire; }
+  std::string wire_name(int wire) const override { return m_.wires[wire].name; }
+  void wire_stretches_minimal(double t, ConstRef z, Ref stretch) override;
+  void wire_stretches_full(double t, ConstRef q, Ref stretch) override;
+  int cargo_offset() const override { return layout_.cargo; }
+  int heel_offset() const override { return layout_.heel; }
   int elastic_size() const override { return n_; }
   HullLoadCounts hull_load_counts() const override { return hull_load_counts_; }
   const sea::IncidentWaveRecord* wave_record() const override { return m_.hull.wave_record.get(); }
   std::string exact_kinematics_reason() const override { return m_.hull.exact_kinematics_reason; }
   BandStructure minimal_structure() const override { return shared_->minimal_structure; }
   void minimal_jacobian(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, SecondOrderJacobian& out) override;
-  // The hull and cargo columns by differences (twice: positions, velocities) plus the base residual.
-  int minimal_jacobian_evaluations() const override { return 2 * elastic_at_ + 1; }
+  // The hull, cargo and heel columns by differences (twice: positions, velocities) plus the base residual.
+  int minimal_jacobian_evaluations() const override { return 2 * layout_.elastic + 1; }
   BandStructure full_structure() const override { return shared_->full_structure; }
-  int full_jacobian_evaluations() const override { return 2 * (elastic_at_ + 3) + 1; }
+  int full_jacobian_evaluations() const override { return 2 * (layout_.frame + 3) + 1; }
   void full_jacobian(double t, ConstRef q, ConstRef v, ConstRef v_dot, SecondOrderJacobian& out) override;
   CraneOutputs minimal_outputs_with_accelerations(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot) override;
 
  private:
-  bool hull_free() const { return !m_.hull.fixed; }
-  bool has_cargo() const { return m_.cargo.present; }
+  // The rigid minimal coordinates that move the boom frame — the hull's (3, when it floats), the
+  // pinned heel's angle (1) — and their blocks: r = layout_.rigid_size() ≤ 4. A clamped boom has the
+  // hull's 3 (or none with a held hull: no rigid block) and fixed-size blocks.
+  template <class PinnedType, class ClampedType>
+  using RigidBlock = std::conditional_t<Pinned, PinnedType, ClampedType>;
+  using FrameJacobian = RigidBlock<Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 4>, Eigen::Matrix3d>;  // J: 3 × r
+  using RigidMatrix = RigidBlock<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>, Eigen::Matrix3d>;  // r × r
+  using RigidVector = RigidBlock<Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1>, Eigen::Vector3d>;  // r
+  using RigidCoupling = RigidBlock<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, Eigen::Dynamic>,
+                                   Eigen::Matrix<double, 3, Eigen::Dynamic>>;  // r × n
+  using RigidColumns = RigidBlock<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, Eigen::Dynamic, 4>,
+                                  Eigen::Matrix<double, Eigen::Dynamic, 3>>;  // n × r
+
+  bool hull_free() const { return layout_.hull >= 0; }
+  bool has_cargo() const { return layout_.cargo >= 0; }
+  bool clamped() const { return layout_.heel < 0; }
   // Pose, velocity and acceleration of a held or driven hull at t.
   Eigen::Vector3d base_pose(double t) const { return m_.hull.prescribed ? m_.hull.prescribed->pose(t) : m_.hull.support_pose; }
   Eigen::Vector3d base_velocity(double t) const {
@@ -76,69 +97,88 @@ class CraneEquationsOf final : public CraneEquations {
     if (hull_free()) radiation_.record(t, hull_v);
   }
   Eigen::Vector3d cargo_inertia() const { return {m_.cargo.mass, m_.cargo.mass, m_.cargo.pitch_inertia}; }
-  // Boom frame (R_B, θ_B) and its velocity from the hull pose and velocity (the clamp at B).
-  void mount_boom(const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v);
-  // Loads on hull, cargo and boom (boom_q_, boom_v_ must be set) at time t. with_wave = false is
-  // the static problem: calm water and a bilateral wire (see wire_state).
-  void evaluate_loads(double t, const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v,
-                      const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool with_wave);
-  // The boom's own loads (quadratic velocity, gravity, elastic) and the wire's into boom_force_ and
-  // cargo_force_, and the boom's mass blocks: evaluate_loads without the hull.
-  void boom_and_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool bilateral_wire);
-  // The wire's pull added to `boom` (3 + n) and `cargo`; sets wire_.
-  void add_wire_loads(const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v, bool bilateral, Ref boom,
-                      Eigen::Vector3d& cargo);
-  // Minimal-coordinate residual Q_z − M_z a at (t, z, ż) with a given (all loads), and the wire's
-  // share of it alone (for the wire's columns of the Jacobian).
+  // The bodies' states from minimal coordinates (hull_q_, hull_v_, cargo_q_, cargo_v_, boom_q_,
+  // boom_v_; velocities zero and z_dot not read when not `moving`), or from full ones.
+  void set_minimal_state(double t, ConstRef z, ConstRef z_dot, bool moving = true);
+  void set_full_state(double t, ConstRef q, ConstRef v);
+  // Boom frame (R_B, θ_B) and its velocity from the hull's pose and velocity and the heel's angle.
+  void mount_boom(double beta, double beta_rate);
+  // Loads on hull, cargo and boom for the current body states at time t. with_wave = false is the
+  // static problem: calm water and bilateral wires (see wire_state).
+  void evaluate_loads(double t, bool with_wave);
+  // The boom's own loads (quadratic velocity, gravity, elastic) and the wires' into boom_force_,
+  // hull_force_ and cargo_force_, and the boom's mass blocks: evaluate_loads without the hull's own.
+  void boom_and_wire_loads(bool bilateral_wires);
+  // Every wire's pull added to `boom` (3 + n), `hull` and `cargo`; sets wires_.
+  void add_wire_loads(bool bilateral, Ref boom, Eigen::Vector3d& hull, Eigen::Vector3d& cargo);
+  // A wire end's position (and velocity) for the current body states.
+  struct EndMotion {
+    typename FloatingFrameBody<Coords>::PointMotion boom;  // Body::boom
+    RigidPointMotion rigid;                                // Body::hull, Body::cargo
+    const Eigen::Vector2d& position(Body body) const { return body == Body::boom ? boom.position : rigid.position; }
+    const Eigen::Vector2d& velocity(Body body) const { return body == Body::boom ? boom.velocity : rigid.velocity; }
+  };
+  EndMotion end_motion(const BodyAttachment& end) const;
+  void add_end_force(const BodyAttachment& end, const EndMotion& motion, const Eigen::Vector2d& force, Ref boom,
+                     Eigen::Vector3d& hull, Eigen::Vector3d& cargo) const;
+  // Minimal-coordinate residual Q_z − M_z a at (t, z, ż) with a given (all loads), and the wires'
+  // share of it alone (for the wires' columns of the Jacobian).
   void minimal_residual(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, Ref out);
   void minimal_wire_residual(double t, ConstRef z, ConstRef z_dot, Ref out);
-  // Full-coordinate residual Q − M a (no constraint terms) and the wire's share of it.
+  // Full-coordinate residual Q − M a (no constraint terms) and the wires' share of it.
   void full_residual(double t, ConstRef q, ConstRef v, ConstRef v_dot, Ref out);
-  void full_wire_residual(ConstRef q, ConstRef v, Ref out);
+  void full_wire_residual(double t, ConstRef q, ConstRef v, Ref out);
   // Known part of the boom frame's acceleration (see frame_known_acc_) at t for the hull's velocity.
-  Eigen::Vector3d frame_known_acceleration(double t, const Eigen::Vector3d& hull_v) const;
-  // J_r of the clamp (hull velocities → boom frame velocities) for the current mount_offset_.
-  Eigen::Matrix3d mount_jacobian() const;
-  // Minimal-coordinate generalized forces (hull rows through Jᵀ, convective term included).
+  Eigen::Vector3d frame_known_acceleration(double t) const;
+  // The heel's velocity transformation: the frame's velocity per rigid minimal coordinate (J).
+  FrameJacobian frame_jacobian() const;
+  // The rigid rows' own inertia (the hull's; none for the heel's angle).
+  RigidMatrix rigid_inertia() const;
+  // Adds the frame's acceleration J z̈_r from the rigid coordinates' accelerations.
+  void add_frame_acceleration(const RigidVector& rigid_a, Eigen::Vector3d& frame_a) const;
+  // Minimal-coordinate generalized forces (rigid rows through Jᵀ, convective term included).
   void minimal_forces(double t, ConstRef z, ConstRef z_dot, bool with_wave);
-  // Q_z of the last minimal_forces: hull rows (when free), cargo rows (with a cargo), elastic rows.
+  // Q_z of the last minimal_forces: hull rows (when free), cargo rows (with a cargo), heel row (when
+  // pinned), elastic rows.
   void gather_minimal_forces(Ref forces) const;
-  void split_minimal(double t, ConstRef z, ConstRef z_dot, Eigen::Vector3d& hull_q, Eigen::Vector3d& hull_v) const;
+  // The rigid coordinates' values from z (hull's, heel's) and back.
+  RigidVector rigid_part(ConstRef z) const;
+  void scatter_rigid(const RigidVector& rigid, Ref z) const;
   // Boom axial force at the root from the joint reaction on the boom (tension > 0).
   double root_axial_force(const Eigen::Vector3d& reaction, double frame_angle) const {
     return -(reaction.x() * std::cos(frame_angle) + reaction.y() * std::sin(frame_angle));
   }
-  CraneOutputs common_outputs(const Eigen::Vector3d& hull_q, const Eigen::Vector3d& hull_v,
-                              const Eigen::Vector3d& cargo_q, const Eigen::Vector3d& cargo_v);
-  void boom_tip_kinematics(const Eigen::Vector3d& cargo_q, Eigen::Vector2d& tip, Eigen::Vector2d& hook) const;
+  CraneOutputs common_outputs();
 
   // The shared model (read-only) and, for brevity, its CraneParameters and layout.
   std::shared_ptr<const CraneModelOf<Coords>> shared_;
   const CraneParameters<Coords>& m_;
+  const CraneLayout layout_;
   const int n_;
-  const int cargo_at_;    // index of the cargo block (0 with a fixed hull, 3 otherwise)
-  const int elastic_at_;  // minimal: index of η; full: index of the boom frame (R_B, θ_B) (cargo_at_ + 3 or + 0)
   // workspace (allocated once)
   BodyWorkspace boom_work_;  // the boom's own scratch vectors (multibody/floating_frame_body.hpp)
+  Eigen::Vector3d hull_q_ = Eigen::Vector3d::Zero(), hull_v_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d cargo_q_ = Eigen::Vector3d::Zero(), cargo_v_ = Eigen::Vector3d::Zero();
   Eigen::VectorXd boom_q_, boom_v_, boom_force_;
   Eigen::Vector2d mount_offset_ = Eigen::Vector2d::Zero();  // A(θ1) b
   Eigen::Vector3d hull_force_ = Eigen::Vector3d::Zero(), cargo_force_ = Eigen::Vector3d::Zero();
-  Eigen::Vector3d hull_rhs_ = Eigen::Vector3d::Zero();
+  RigidVector rigid_rhs_;
+  FrameJacobian frame_jacobian_;
   Eigen::VectorXd elastic_rhs_;
   Eigen::VectorXd schur_rhs_column_;
-  // The two-column solve's workspace and M_ff⁻¹ M_fR (n × 3) before the clamp's J_r.
+  // The two-column solve's workspace and M_ff⁻¹ M_fR (n × 3) before the heel's J.
   Eigen::Matrix<double, Eigen::Dynamic, 2> pair_rhs_, pair_solution_;
   Eigen::Matrix<double, Eigen::Dynamic, 3> frame_columns_;
   Eigen::Matrix3d boom_reference_mass_ = Eigen::Matrix3d::Zero();
   Eigen::Matrix<double, 3, Eigen::Dynamic> boom_coupling_;
-  Eigen::Matrix<double, 3, Eigen::Dynamic> hull_elastic_mass_;
-  Eigen::Matrix<double, Eigen::Dynamic, 3> schur_columns_;
+  RigidCoupling rigid_elastic_mass_;  // Jᵀ M_Rf
+  RigidColumns schur_columns_;        // M_ff⁻¹ M_fR J
   Eigen::VectorXd schur_rhs_;
   // Known part of the boom frame's acceleration (R̈_B, θ̈_B): the convective −θ̇1² A1 b, plus the
   // prescribed acceleration of a driven base.
   Eigen::Vector3d frame_known_acc_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d joint_reaction_ = Eigen::Vector3d::Zero();
-  WireState wire_;
+  std::vector<WireState> wires_;  // each wire's state at the last load evaluation
   sea::WavePolynomials wave_polynomials_;  // the recorded sea at one time (sized on first use)
   HullLoadCounts hull_load_counts_;
   // run state: the history of m_.hull.radiation_memory (inactive without one)

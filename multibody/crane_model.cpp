@@ -1,5 +1,5 @@
 // Instantiates the crane equations and their shared model for the nodal and the modal elastic
-// coordinates.
+// coordinates, each with a clamped and a pinned heel.
 #include "multibody/crane_equations_of.hpp"
 
 #include "modal/modal_coordinates.hpp"
@@ -11,7 +11,8 @@ namespace detail {
 
 template <fem::ElasticCoordinates Coords>
 std::unique_ptr<CraneEquations> CraneModelOf<Coords>::equations() const {
-  return std::make_unique<CraneEquationsOf<Coords>>(this->shared_from_this());
+  if (layout.heel >= 0) return std::make_unique<CraneEquationsOf<Coords, true>>(this->shared_from_this());
+  return std::make_unique<CraneEquationsOf<Coords, false>>(this->shared_from_this());
 }
 
 template <fem::ElasticCoordinates Coords>

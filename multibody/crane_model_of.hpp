@@ -4,8 +4,9 @@
 //  * the factorization of the constant elastic mass M_ff (sparse LDLᵀ for nodal coordinates, dense
 //    for modal ones), M_ff as a dense block, and M_ff⁻¹S̄ᵀ, M_ff⁻¹cᵀ (the constant columns of
 //    M_ff⁻¹M_fR in the Schur complement, crane_equations_minimal.ipp);
+//  * the index map of the coordinates (multibody/crane_layout.hpp);
 //  * the Newton blocks' structure (bordered band for a nodal boom, dense otherwise) and the elastic
-//    coordinates that move the wire's attachment (crane_equations_jacobian.ipp);
+//    coordinates that move the wires' attachments on the boom (crane_equations_jacobian.ipp);
 //  * the coordinates' typical sizes (tolerances and difference increments).
 // Template definitions; included only through multibody/crane_equations_of.hpp.
 #pragma once
@@ -19,6 +20,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "multibody/crane_layout.hpp"
 #include "multibody/crane_model.hpp"
 
 namespace ffrf::multibody::detail {
@@ -39,19 +41,19 @@ class CraneModelOf final : public CraneModel, public std::enable_shared_from_thi
 
   bool hull_free() const { return !model.hull.fixed; }
   bool has_cargo() const { return model.cargo.present; }
-  int minimal_size() const { return elastic_at + n; }
-  int full_size() const { return elastic_at + 3 + n; }
+  int minimal_size() const { return layout.minimal_size(); }
+  int full_size() const { return layout.full_size(); }
 
   CraneParameters<Coords> model;
-  int n;           // elastic coordinates
-  int cargo_at;    // index of the cargo block (0 with a fixed hull, 3 otherwise)
-  int elastic_at;  // minimal: index of η; full: index of the boom frame (R_B, θ_B) (cargo_at + 3 or + 0)
+  int n;               // elastic coordinates
+  CraneLayout layout;  // where each body's and joint's coordinates sit
+  double heel_inertia = 0.0;  // the boom's rotational inertia about B at rest (the heel row's scale)
   MassFactor<typename Coords::Matrix> elastic_mass_factor;
   Eigen::MatrixXd elastic_mass_dense;  // M_ff as a dense block of the full mass matrix
   Eigen::Matrix<double, Eigen::Dynamic, 2> mass_inverse_shape;  // M_ff⁻¹ S̄ᵀ
   Eigen::VectorXd mass_inverse_cross;                           // M_ff⁻¹ cᵀ (c = u0_cross_shape)
   BandStructure minimal_structure, full_structure;
-  std::vector<int> tip_columns;  // nonzero columns of the tip's shape rows
+  std::vector<int> wire_columns;  // elastic coordinates that move a wire's attachment on the boom (ascending)
   // Typical sizes: of each elastic coordinate, and of every minimal and full coordinate (the
   // difference increments' floor).
   Eigen::VectorXd elastic_scale, minimal_scale, full_scale;
@@ -64,8 +66,14 @@ template <fem::ElasticCoordinates Coords>
 CraneModelOf<Coords>::CraneModelOf(CraneParameters<Coords> crane)
     : model(std::move(crane)),
       n(static_cast<int>(model.boom.elastic_size())),
-      cargo_at(model.hull.fixed ? 0 : 3),
-      elastic_at(cargo_at + (model.cargo.present ? 3 : 0)) {
+      layout(crane_layout(!model.hull.fixed, model.cargo.present, model.mount.joint == HeelJoint::pin, n)) {
+  if (model.cargo.present && (model.hoist_wire < 0 || model.hoist_wire >= static_cast<int>(model.wires.size()))) {
+    throw std::invalid_argument("the cargo hangs on no wire: give the crane a hoist wire");
+  }
+  if (model.wires.size() > static_cast<std::size_t>(solve::max_events)) {
+    throw std::invalid_argument("the crane has " + std::to_string(model.wires.size()) + " wires; at most " +
+                                std::to_string(solve::max_events) + " are tracked (one slack event each)");
+  }
   // The hull's mass is read whole by the residual and the Jacobian but by its lower triangle in the
   // LDLᵀ of the minimal-coordinate accelerations: one matrix for every path needs a symmetric added
   // mass (scene/scene_loader.cpp makes the BEM files' symmetric when they are read).
@@ -96,15 +104,34 @@ CraneModelOf<Coords>::CraneModelOf(CraneParameters<Coords> crane)
     const Eigen::VectorXd cross_t = model.boom.coords().u0_cross_shape().transpose();
     mass_inverse_cross = elastic_mass_factor.solve(cross_t);
   }
+  Eigen::Matrix3d reference;
+  Eigen::Matrix<double, 3, Eigen::Dynamic> coupling;
+  model.boom.mass_blocks(Eigen::VectorXd::Zero(3 + n), reference, coupling);
+  heel_inertia = reference(2, 2);
   find_structures();
 }
 
 template <fem::ElasticCoordinates Coords>
 void CraneModelOf<Coords>::find_structures() {
-  for (int j = 0; j < n; ++j) {
-    if (model.boom_tip.shape.col(j).squaredNorm() > 0.0) tip_columns.push_back(j);
-  }
+  // A wire's loads on the boom couple the columns of its attachment's shape rows with each other.
   int bandwidth = 0;
+  std::vector<bool> moves_a_wire(n, false);
+  for (const WireConnector& wire : model.wires) {
+    for (const BodyAttachment* end : {&wire.from, &wire.to}) {
+      if (end->body != Body::boom) continue;
+      int first = n, last = -1;
+      for (int j = 0; j < n; ++j) {
+        if (end->point.shape.col(j).squaredNorm() == 0.0) continue;
+        moves_a_wire[j] = true;
+        first = std::min(first, j);
+        last = std::max(last, j);
+      }
+      if (last >= first) bandwidth = std::max(bandwidth, last - first);
+    }
+  }
+  for (int j = 0; j < n; ++j) {
+    if (moves_a_wire[j]) wire_columns.push_back(j);
+  }
   bool banded = false;
   if constexpr (std::is_base_of_v<Eigen::SparseMatrixBase<typename Coords::Matrix>, typename Coords::Matrix>) {
     const auto widen = [&bandwidth](const typename Coords::Matrix& m) {
@@ -119,21 +146,21 @@ void CraneModelOf<Coords>::find_structures() {
     widen(model.boom.coords().skew_ff());
     if (model.boom.has_prestress()) widen(model.boom.prestress_stiffness());
     if (model.boom.has_centrifugal_stiffening()) widen(model.boom.centrifugal_stiffness());
-    if (!tip_columns.empty()) bandwidth = std::max(bandwidth, tip_columns.back() - tip_columns.front());
     banded = 2 * bandwidth + 1 < n;  // otherwise the band saves nothing
   }
-  minimal_structure = banded ? BandStructure{elastic_at, n, bandwidth, bandwidth} : BandStructure{elastic_at + n, 0, 0, 0};
-  full_structure = banded ? BandStructure{elastic_at + 3, n, bandwidth, bandwidth} : BandStructure{elastic_at + 3 + n, 0, 0, 0};
-  // Minimal coordinates: 1 m for positions, 0.01 rad for the hull's and the cargo's pitch, then the
-  // elastic ones. Full coordinates: hull and cargo as in minimal coordinates, the boom frame like
-  // the hull (1 m, 0.01 rad), then the elastic coordinates.
+  minimal_structure = banded ? BandStructure{layout.elastic, n, bandwidth, bandwidth} : BandStructure{minimal_size(), 0, 0, 0};
+  full_structure = banded ? BandStructure{layout.frame + 3, n, bandwidth, bandwidth} : BandStructure{full_size(), 0, 0, 0};
+  // Minimal coordinates: 1 m for positions, 0.01 rad for the hull's and the cargo's pitch and the
+  // heel's angle, then the elastic ones. Full coordinates: hull and cargo as in minimal coordinates,
+  // the boom frame like the hull (1 m, 0.01 rad), then the elastic coordinates.
   minimal_scale = Eigen::VectorXd::Constant(minimal_size(), 1.0);
-  if (hull_free()) minimal_scale(2) = 0.01;
-  if (has_cargo()) minimal_scale(cargo_at + 2) = 0.01;
+  if (layout.hull >= 0) minimal_scale(layout.hull + 2) = 0.01;
+  if (layout.cargo >= 0) minimal_scale(layout.cargo + 2) = 0.01;
+  if (layout.heel >= 0) minimal_scale(layout.heel) = 0.01;
   minimal_scale.tail(n) = elastic_scale;
   full_scale.resize(full_size());
-  full_scale.head(elastic_at) = minimal_scale.head(elastic_at);
-  full_scale.segment<3>(elastic_at) = Eigen::Vector3d(1.0, 1.0, 0.01);
+  full_scale.head(layout.frame) = minimal_scale.head(layout.frame);
+  full_scale.segment<3>(layout.frame) = Eigen::Vector3d(1.0, 1.0, 0.01);
   full_scale.tail(n) = minimal_scale.tail(n);
 }
 

@@ -1,6 +1,8 @@
-// The floating crane as constant data (the "model", Pinocchio style): hull G1, elastic boom on a
-// floating frame clamped to the hull at B, cargo G2 on a wire rope from the boom tip A′ to the hook
-// C, and the environment. Built once from a scene (scene/crane_builder.hpp); read-only in a run:
+// The floating crane as constant data (the "model", Pinocchio style), as components: the bodies —
+// hull G1 (rigid), the elastic boom on a floating frame, the cargo G2 (rigid) — and the connectors
+// between them — the boom's heel joint at B on the hull (clamp or pin) and the wires (tension-only
+// ropes between two body points: the hoist wire from the boom tip A′ to the hook C, and any other) —
+// and the environment. The index map of their coordinates is multibody/crane_layout.hpp. Built once from a scene (scene/crane_builder.hpp); read-only in a run:
 // it becomes part of a CraneModel (multibody/crane_model.hpp) that threads share.
 // Planar, SI units, y up, angles counter-clockwise (docs/architecture.md, "Conventions").
 #pragma once
@@ -9,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "sea/bem_excitation.hpp"
 #include "multibody/floating_frame_body.hpp"
@@ -59,9 +62,14 @@ struct HullModel {
   std::optional<PrescribedMotion> prescribed;
 };
 
+// The boom's heel joint at B: a clamp (the frame turns with the hull: the source paper's model) or a
+// pin (the frame's angle relative to the hull is a coordinate, the luffing angle β from `angle`).
+enum class HeelJoint { clamp, pin };
+
 struct BoomMountModel {
   Eigen::Vector2d root = Eigen::Vector2d::Zero();  // B relative to G1, hull frame [m]
-  double angle = 0.0;                              // boom frame angle relative to the hull [rad]
+  double angle = 0.0;                              // boom frame angle relative to the hull [rad] (at β = 0)
+  HeelJoint joint = HeelJoint::clamp;
 };
 
 struct CargoModel {
@@ -77,14 +85,33 @@ struct WireModel {
   double damping = 0.0;             // [N s/m]
 };
 
+// The bodies a connector can attach to.
+enum class Body { hull, boom, cargo };
+
+// A point of a body: in the body's frame (the hull's at G1, the cargo's at G2, the boom's floating
+// frame at B with its shape rows).
+struct BodyAttachment {
+  Body body = Body::hull;
+  BodyPoint point;
+};
+
+// A wire rope between two body points (multibody/wire_rope.hpp: tension only); its tension pulls the
+// two ends towards each other.
+struct WireConnector {
+  std::string name;  // "hoist wire": for events and messages
+  WireModel rope;
+  BodyAttachment from, to;
+};
+
 template <fem::ElasticCoordinates Coords>
 struct CraneParameters {
   HullModel hull;
   BoomMountModel mount;
   FloatingFrameBody<Coords> boom;
-  BodyPoint boom_tip;  // A′ (x = L)
+  BodyPoint boom_tip;  // A′ (x = L): the tip deflection's point
   CargoModel cargo;
-  WireModel wire;
+  std::vector<WireConnector> wires;  // every rope: the hoist wire first when there is a cargo
+  int hoist_wire = -1;               // the cargo's wire in `wires` (−1: none)
   double gravity = 9.81;
   double water_density = 1025.0;
   std::optional<sea::WaveField> wave;  // empty: calm water

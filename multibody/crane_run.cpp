@@ -36,12 +36,13 @@ class CraneRecorder final : public solve::OutputSink {
   RunResult& result_;
 };
 
-// The integration's record into the crane's result, with the wire's events (event function 0).
-void take_record(solve::IntegrationRecord&& record, RunResult& result) {
+// The integration's record into the crane's result, with the hoist wire's events (event function i
+// is wire i's stretch).
+void take_record(solve::IntegrationRecord&& record, int hoist_wire, RunResult& result) {
   static_cast<solve::IntegrationRecord&>(result) = std::move(record);
   result.wire_events.clear();
   for (const solve::Event& event : result.events) {
-    if (event.index == 0) result.wire_events.push_back({event.time, event.falling});
+    if (event.index == hoist_wire) result.wire_events.push_back({event.time, event.falling});
   }
 }
 
@@ -55,12 +56,12 @@ RunResult simulate(CraneEquations& equations, const Eigen::VectorXd& z0, const R
   const std::string solver(solve::is_valid(settings.kind) ? solve::integrator_entry(settings.kind).label : "integrator");
   CraneRecorder recorder(equations, settings.monitor, solver.c_str(), result);
   try {
-    take_record(solve::integrate(equations, recorder, z0, settings), result);
+    take_record(solve::integrate(equations, recorder, z0, settings), equations.hoist_wire(), result);
   } catch (SolverFailure& failure) {
     if (failure.partial() != nullptr) {
       auto partial = std::make_shared<RunResult>();
       partial->samples = std::move(result.samples);
-      take_record(solve::IntegrationRecord(*failure.partial()), *partial);
+      take_record(solve::IntegrationRecord(*failure.partial()), equations.hoist_wire(), *partial);
       failure.attach_partial(std::move(partial));
     }
     throw;

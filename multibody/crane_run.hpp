@@ -31,7 +31,7 @@ struct WireEvent {
 // times, the wire's events and what the run ran into (non-fatal detections).
 struct RunResult : solve::IntegrationRecord {
   std::vector<CraneOutputs> samples;
-  std::vector<WireEvent> wire_events;
+  std::vector<WireEvent> wire_events;  // the hoist wire's (the cargo's)
   std::vector<Detection> detections;
 };
 

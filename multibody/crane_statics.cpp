@@ -21,10 +21,17 @@ StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eige
   StaticEquilibrium result;
   static_cast<solve::StaticSolution&>(result) = solve::solve_static_equilibrium(equations, guess, path, tolerance);
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(result.z.size());
-  if (result.z.size() > 0 && equations.wire_stretch_minimal(0.0, result.z) <= 0.0) {
+  // The statics solve the ropes as bilateral springs: each must come out taut.
+  Eigen::VectorXd stretch(equations.wire_count());
+  if (result.z.size() > 0) equations.wire_stretches_minimal(0.0, result.z, stretch);
+  for (int wire = 0; wire < stretch.size(); ++wire) {
+    if (stretch(wire) > 0.0) continue;
+    const bool hoist = wire == equations.hoist_wire();
     throw solve::SolverFailure(solve::FailureKind::wire_slack, "KINSOL (static equilibrium)",
-                               fmt::format("the wire is slack at rest (stretch {:.3g} m)", equations.wire_stretch_minimal(0.0, result.z)),
-                               0.0, "hang the cargo below the boom tip: check the wire's unstretched length and the hook position");
+                               fmt::format("the {} is slack at rest (stretch {:.3g} m)", hoist ? "wire" : equations.wire_name(wire), stretch(wire)),
+                               0.0,
+                               hoist ? "hang the cargo below the boom tip: check the wire's unstretched length and the hook position"
+                                     : "shorten the " + equations.wire_name(wire) + " (its unstretched length) so that it holds the boom");
   }
   result.outputs = equations.minimal_outputs(0.0, result.z, rest);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -31,6 +31,8 @@ constexpr std::array channels{
                       [](const CraneOutputs& o) { return o.tip_deflection.y(); }},
     OutputChannelSpec{"wire_tension", "wire_tension_N", "wire tension", "N", "N", 1.0, false, true, "wire_tension",
                       [](const CraneOutputs& o) { return o.wire_tension; }},
+    OutputChannelSpec{"luffing_tension", "luffing_tension_N", "luffing wires' tension", "N", "N", 1.0, false, false, "",
+                      [](const CraneOutputs& o) { return o.luffing_tension; }},
     OutputChannelSpec{"joint_force_x", "joint_force_x_N", "joint force x at B", "N", "N", 1.0, false, false, "",
                       [](const CraneOutputs& o) { return o.joint_reaction.x(); }},
     OutputChannelSpec{"joint_force_y", "joint_force_y_N", "joint force y at B", "N", "N", 1.0, false, false, "",

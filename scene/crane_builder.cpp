@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "scene/irregular_sea.hpp"
+#include "scene/luffing_wires.hpp"
 #include "scene/bem_hull_model.hpp"
 #include "scene/scene_key.hpp"
 #include "scene/scene_loader.hpp"
@@ -173,6 +174,33 @@ std::shared_ptr<const multibody::CraneModel> with_waters(const multibody::CraneM
   return model.in_waters(waters.hull, waters.wave);
 }
 
+// A pinned heel and its luffing wires (scene/luffing_wires.hpp), each a rope from the A-frame top on
+// the hull to the boom point; their damping is the scene's fraction of critical for the boom's
+// inertia about the heel, ρA L³/3, on the wires' rotational stiffness n k lever².
+namespace {
+
+template <fem::ElasticCoordinates Coords>
+void add_luffing_wires(const Scene& scene, multibody::CraneParameters<Coords>& model) {
+  const Luffing& luffing = *scene.luffing;
+  const LuffingGeometry geometry = luffing_geometry(scene);
+  model.mount.joint = multibody::HeelJoint::pin;
+  const double length = scene.boom.mesh.length;
+  const double heel_inertia = scene.boom.mesh.total_mass() * length * length / 3.0;
+  const double lever_squared = geometry.lever * geometry.lever;
+  const double rotational_stiffness = luffing.wires * luffing.stiffness * lever_squared;
+  const double damping = luffing.damping_ratio * 2.0 * std::sqrt(rotational_stiffness * heel_inertia) / (luffing.wires * lever_squared);
+  multibody::BodyPoint a_frame;
+  a_frame.undeformed = geometry.a_frame;
+  for (int i = 0; i < luffing.wires; ++i) {
+    model.wires.push_back({luffing.wires == 1 ? "luffing wire" : "luffing wire " + std::to_string(i + 1),
+                           {geometry.unstretched_length, luffing.stiffness, damping},
+                           {multibody::Body::boom, model.boom.point(geometry.attachment)},
+                           {multibody::Body::hull, a_frame}});
+  }
+}
+
+}  // namespace
+
 template <fem::ElasticCoordinates Coords>
 multibody::CraneParameters<Coords> build_crane_parameters(const Scene& scene, Coords coords, Stiffening stiffening) {
   if (!scene.has_base() || !scene.boom.mount || (scene.is_crane() && (!scene.cargo || !scene.wire))) {
@@ -197,17 +225,30 @@ multibody::CraneParameters<Coords> build_crane_parameters(const Scene& scene, Co
   const BoomMount& mount = *scene.boom.mount;
   SceneWaters waters = scene_waters(scene);
   multibody::CraneParameters<Coords> model{std::move(waters.hull),
-                                     {Eigen::Vector2d(mount.root_x, mount.root_y), mount.angle},
-                                     std::move(boom), std::move(tip), {}, {}, env.gravity, env.water_density,
-                                     std::move(waters.wave)};
+                                           {Eigen::Vector2d(mount.root_x, mount.root_y), mount.angle},
+                                           std::move(boom),
+                                           tip,
+                                           {},
+                                           {},
+                                           -1,
+                                           env.gravity,
+                                           env.water_density,
+                                           std::move(waters.wave)};
   if (scene.cargo && scene.wire) {
     const Cargo& cargo = *scene.cargo;
     const Wire& wire = *scene.wire;
     model.cargo = {true, cargo.mass, cargo.pitch_inertia(), Eigen::Vector2d(cargo.hook_x, cargo.hook_y)};
-    model.wire = {wire.unstretched_length, wire.stiffness, wire.damping_ratio * critical_damping(cargo.mass, wire.stiffness)};
+    multibody::BodyPoint hook;
+    hook.undeformed = model.cargo.hook;
+    model.hoist_wire = static_cast<int>(model.wires.size());
+    model.wires.push_back({"hoist wire",
+                           {wire.unstretched_length, wire.stiffness, wire.damping_ratio * critical_damping(cargo.mass, wire.stiffness)},
+                           {multibody::Body::boom, std::move(tip)},
+                           {multibody::Body::cargo, std::move(hook)}});
   } else {
     model.cargo.present = false;
   }
+  if (mount.pinned) add_luffing_wires(scene, model);
   return model;
 }
 

@@ -23,9 +23,20 @@ namespace ffrf::scene {
 
 // Where and how the boom is clamped to the hull (crane scenes only).
 struct BoomMount {
-  double angle;   // above the hull's x axis [rad], in (0, π/2)
+  double angle;   // above the hull's x axis [rad], in (0, π/2); a pinned boom's nominal angle
   double root_x;  // B relative to G1, hull frame [m]
   double root_y;  // [m]
+  bool pinned = false;  // the heel is a revolute joint held by the [luffing] wires
+};
+
+// The luffing wires of a pinned boom ([luffing]): from the A-frame top on the hull to a boom point.
+struct Luffing {
+  double a_frame_x, a_frame_y;  // A-frame top relative to G1, hull frame [m]
+  double stiffness;             // each wire [N/m]
+  int wires = 1;                // parallel wires
+  std::optional<double> attachment;          // from the heel along the boom [m] (empty: the tip)
+  std::optional<double> unstretched_length;  // each wire [m] (empty: holds the rigid boom at boom.angle)
+  double damping_ratio = 0.0;
 };
 
 // Geometric (stress) stiffening of the boom (docs/theory.md, "Geometric stiffening").
@@ -206,6 +217,7 @@ struct Scene {
   std::optional<Hub> hub;    // excludes hull
   std::optional<Cargo> cargo;
   std::optional<Wire> wire;
+  std::optional<Luffing> luffing;  // with a pinned heel
   Environment environment;
   std::optional<Wave> wave;  // the regular wave; empty: calm water or an irregular sea
   std::optional<IrregularSea> sea;  // an irregular sea (excludes wave)

@@ -64,7 +64,19 @@ Scene build_scene(const WrittenKeys& keys, const std::string& file, const SceneP
   if (keys.has(scene_key("boom.density"))) scene.boom.density = keys.number(scene_key("boom.density"));
   scene.boom.stiffening = parse_stiffening(keys.text(scene_key("boom.stiffening"))).value_or(Stiffening::none);
   if (parts.crane) {
-    scene.boom.mount = BoomMount{keys.number(scene_key("boom.angle")), keys.number(scene_key("boom.root_x")), keys.number(scene_key("boom.root_y"))};
+    scene.boom.mount = BoomMount{keys.number(scene_key("boom.angle")), keys.number(scene_key("boom.root_x")),
+                                 keys.number(scene_key("boom.root_y")), keys.text(scene_key("boom.heel")) == "pinned"};
+    if (keys.has(scene_key("luffing.a_frame_x"))) {
+      Luffing luffing{keys.number(scene_key("luffing.a_frame_x")), keys.number(scene_key("luffing.a_frame_y")),
+                      keys.number(scene_key("luffing.stiffness")), static_cast<int>(keys.number(scene_key("luffing.wires"))),
+                      std::nullopt, std::nullopt, 0.0};
+      if (keys.has(scene_key("luffing.attachment"))) luffing.attachment = keys.number(scene_key("luffing.attachment"));
+      if (keys.has(scene_key("luffing.unstretched_length"))) {
+        luffing.unstretched_length = keys.number(scene_key("luffing.unstretched_length"));
+      }
+      luffing.damping_ratio = keys.number(scene_key("luffing.damping_ratio"));
+      scene.luffing = luffing;
+    }
     scene.hull = Hull{keys.number(scene_key("hull.mass")),          keys.number(scene_key("hull.pitch_radius_of_gyration")),
                       keys.number(scene_key("hull.length")),        keys.number(scene_key("hull.width")),
                       keys.number(scene_key("hull.depth")),         keys.number(scene_key("hull.g1_above_keel")),

@@ -1,6 +1,8 @@
 // Cross-key physics checks of a scene (see scene_checks.hpp for the list and the references).
 #include "scene/scene_checks.hpp"
 
+#include "scene/luffing_wires.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -311,6 +313,15 @@ std::vector<SceneFinding> physics_findings(const Scene& scene) {
     }
     if (scene.wave) check_wave(scene, found);
     if (scene.sea) check_sea(scene, found);
+    if (scene.luffing) {
+      for (SceneFinding& finding : luffing_findings(scene)) {
+        if (finding.error) {
+          found.error(std::move(finding.keys), std::move(finding.message));
+        } else {
+          found.warning(std::move(finding.keys), std::move(finding.message));
+        }
+      }
+    }
   }
   const Simulation& simulation = scene.simulation;
   if (simulation.output_interval > simulation.duration) {

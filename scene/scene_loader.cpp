@@ -209,6 +209,18 @@ class SceneReader final : public WrittenKeys {
              "belongs to a floating hull: a hub scene has no hull degrees of freedom to damp");
     }
     if (sections_.contains("bem")) check_bem_keys(*this, line_of(*sections_.at("bem")));
+    // A pinned heel and the luffing wires come together, on a floating hull.
+    const bool pinned = resolved_.contains(scene_key("boom.heel")) && resolved_.at(scene_key("boom.heel")).text == "pinned";
+    if (pinned && (hub_ || !crane_)) {
+      report(line_of(*present_.at(scene_key("boom.heel"))), scene_key("boom.heel"), "\"pinned\"",
+             "a pinned heel belongs to a crane on a floating hull ([hull] with [luffing]); a hub scene clamps its boom");
+    } else if (pinned && !sections_.contains("luffing")) {
+      report(line_of(*present_.at(scene_key("boom.heel"))), scene_key("boom.heel"), "\"pinned\"",
+             "a pinned boom needs the [luffing] wires that hold it (luffing.a_frame_x, luffing.a_frame_y, luffing.stiffness)");
+    } else if (!pinned && sections_.contains("luffing")) {
+      report(line_of(*sections_.at("luffing")), "luffing", "",
+             "luffing wires hold a pinned boom: set boom.heel = \"pinned\" (a clamped boom needs none)");
+    }
     if (hub_) {
       for (const char* key : {scene_key("boom.angle"), scene_key("boom.root_x"), scene_key("boom.root_y")}) {
         if (present_.contains(key)) {

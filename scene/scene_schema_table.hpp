@@ -79,6 +79,10 @@ inline constexpr std::array kSections{
     SectionSpec{"cargo", SectionRole::crane, "Cargo G2: a rigid box in surge, heave and pitch, hanging on the wire."},
     SectionSpec{"wire", SectionRole::crane,
                 "Wire rope from the boom tip A′ to the hook C: axial spring–damper, tension only."},
+    SectionSpec{"luffing", SectionRole::optional,
+                "Luffing wires of a boom pinned at its heel (boom.heel = \"pinned\"): tension-only elastic ropes from the "
+                "top of the A-frame, a point fixed on the hull, to a point on the boom (its tip by default). They hold "
+                "the boom up; the boom's angle at rest follows from their stretch. Only with a pinned heel."},
     SectionSpec{"environment", SectionRole::optional, "Sea water and gravity."},
     SectionSpec{"wave", SectionRole::optional,
                 "Waves, ramped in over the first periods: a regular Airy wave (`spectrum = \"regular\"`, height and "
@@ -133,6 +137,10 @@ inline constexpr std::array kKeys{
     crane_required("boom.root_y", length, between(-1000.0, 1000.0),
                    "y of the boom root B relative to G1, hull frame; B must lie between the keel and half the hull "
                    "length above the deck (a crane pedestal)."),
+    choice("boom.heel", "clamped|pinned", "clamped",
+           "The boom's heel joint on the hull at B: clamped (the boom turns with the hull at boom.angle: the source "
+           "paper's model) or pinned (a revolute joint: the boom is free to luff and is held by the [luffing] wires, "
+           "as floating cranes are built)."),
     defaulted("boom.damping_ratio", ratio, kFraction, 0.0,
               "Structural damping of the boom: fraction of critical in its first mode."),
     choice("boom.stiffening", "none|static|centrifugal|both", "none",
@@ -177,6 +185,22 @@ inline constexpr std::array kKeys{
     required("wire.stiffness", stiffness, between(1.0, 1e12), "Axial stiffness EA/L0 of the wire rope."),
     defaulted("wire.damping_ratio", ratio, kFraction, 0.0,
               "Axial damping as a fraction of critical for the cargo mass on the wire stiffness."),
+    // [luffing]
+    required("luffing.a_frame_x", length, between(-1000.0, 1000.0),
+             "x of the A-frame top (where the luffing wires leave the hull) relative to G1, hull frame."),
+    required("luffing.a_frame_y", length, between(-1000.0, 1000.0),
+             "y of the A-frame top relative to G1, hull frame; above the boom's heel."),
+    required("luffing.stiffness", stiffness, between(1.0, 1e12),
+             "Axial stiffness of each luffing wire between the A-frame and the boom (its reeved tackle's EA/L)."),
+    integer("luffing.wires", between(1.0, 4.0), 1.0, "Number of parallel luffing wires, each of luffing.stiffness."),
+    optional("luffing.attachment", length, between(0.0, 1000.0),
+             "Distance along the boom from the heel B to the wires' boom point; at most boom.length. Default: the tip."),
+    optional("luffing.unstretched_length", length, between(0.01, 5000.0),
+             "Unstretched length of each luffing wire. Default: the length that holds the rigid boom, and the cargo at "
+             "its tip, at boom.angle on the level hull."),
+    defaulted("luffing.damping_ratio", ratio, kFraction, 0.0,
+              "Axial damping of each wire as a fraction of critical for the boom's inertia about its heel on the "
+              "wires' rotational stiffness."),
     // [environment]
     defaulted("environment.water_density", density, between(800.0, 1500.0), 1025.0, "Sea-water density ρ."),
     defaulted("environment.gravity", acceleration, between(0.0, 30.0), 9.81,

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <limits>
 #include <stdexcept>
 
 #include "solve/stop_request.hpp"
@@ -23,9 +24,12 @@ struct RecordTask {
   bool converged = false;
 };
 
+// The root-moment capacity: the scene's, or the DAF limit times the static root moment. A pinned heel
+// carries no moment (its static moment is round-off): no capacity binds it (infinite).
 double capacity_for(const OperabilityCriteria& criteria, const CellStatistics& statistics) {
-  return criteria.root_moment_capacity > 0.0 ? criteria.root_moment_capacity
-                                             : criteria.daf_limit * std::abs(statistics.static_root_moment);
+  if (criteria.root_moment_capacity > 0.0) return criteria.root_moment_capacity;
+  const double capacity = criteria.daf_limit * std::abs(statistics.static_root_moment);
+  return capacity > 1e-6 ? capacity : std::numeric_limits<double>::infinity();
 }
 
 // The statistics and verdict of one cell's records, or the first failure.

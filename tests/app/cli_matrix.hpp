@@ -33,7 +33,8 @@ inline const std::vector<MatrixScene>& matrix_scenes() {
   static const std::vector<MatrixScene> scenes{{"crane", "paper_floating_crane.toml"},
                                                {"hub", "spin_up_beam.toml"},
                                                {"bem", "bem_barge_crane.toml"},
-                                               {"irregular", "irregular_sea_crane.toml"}};
+                                               {"irregular", "irregular_sea_crane.toml"},
+                                               {"pinned", "pinned_luffing_crane.toml"}};
   return scenes;
 }
 

@@ -48,7 +48,7 @@ TEST(OutputChannels, NamesAndColumnsAreUniqueAndColumnsCarryTheirUnit) {
     EXPECT_EQ(spec.unit == "deg", angle) << spec.name;
     EXPECT_DOUBLE_EQ(spec.display_scale, angle ? 180.0 / std::numbers::pi : 1.0) << spec.name;
   }
-  EXPECT_EQ(output_channels().size(), 18u);
+  EXPECT_EQ(output_channels().size(), 19u);
 }
 
 TEST(OutputChannels, EveryJudgedOutputIsARowReadingItsField) {

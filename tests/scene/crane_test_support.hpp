@@ -19,16 +19,22 @@ namespace ffrf::test {
 inline scene::Scene reference_scene() { return scene::load_scene(FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml"); }
 
 // Builds a crane for `choice` with the model adjusted by `tweak` (hull supports, fixed hull, ...).
+template <class Parameters>
+multibody::WireModel& hoist_rope(Parameters& model) {
+  static thread_local multibody::WireModel none;  // a crane without a cargo has no hoist wire to tweak
+  return model.hoist_wire >= 0 ? model.wires[model.hoist_wire].rope : none;
+}
+
 inline std::unique_ptr<multibody::CraneEquations> build_with(
     const scene::Scene& scene, const scene::BoomChoice& choice,
     const std::function<void(multibody::HullModel&, multibody::WireModel&)>& tweak) {
   if (choice.kind == scene::BoomKind::nodal) {
     auto model = scene::build_crane_parameters(scene, nodal::NodalCoordinates(scene::boom_beam(scene, choice.elements)));
-    tweak(model.hull, model.wire);
+    tweak(model.hull, hoist_rope(model));
     return multibody::make_crane_equations(std::move(model));
   }
   auto model = scene::build_crane_parameters(scene, scene::modal_coordinates(scene, choice));
-  tweak(model.hull, model.wire);
+  tweak(model.hull, hoist_rope(model));
   return multibody::make_crane_equations(std::move(model));
 }
 

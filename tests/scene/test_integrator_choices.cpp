@@ -136,8 +136,11 @@ class ThrowingEquations final : public multibody::CraneEquations {
     return inner_.full_outputs(t, q, v, lambda);
   }
   int constraint_count() const override { return inner_.constraint_count(); }
-  double wire_stretch_minimal(double t, ConstRef z) override { return inner_.wire_stretch_minimal(t, z); }
-  double wire_stretch_full(ConstRef q) override { return inner_.wire_stretch_full(q); }
+  int wire_count() const override { return inner_.wire_count(); }
+  int hoist_wire() const override { return inner_.hoist_wire(); }
+  std::string wire_name(int wire) const override { return inner_.wire_name(wire); }
+  void wire_stretches_minimal(double t, ConstRef z, Ref stretch) override { inner_.wire_stretches_minimal(t, z, stretch); }
+  void wire_stretches_full(double t, ConstRef q, Ref stretch) override { inner_.wire_stretches_full(t, q, stretch); }
   int cargo_offset() const override { return inner_.cargo_offset(); }
   int elastic_size() const override { return inner_.elastic_size(); }
 

@@ -1,0 +1,132 @@
+// The pinned boom on a luffing wire against an independent model (tests/multibody/
+// pinned_boom_reference.hpp: its own frame finite elements and the exact Euler–Bernoulli frequency
+// equation and deflection, nothing of fem/ or multibody/): the crane of cases/pinned_luffing_crane.toml
+// with its hull held, no cargo and one luffing wire from the tip, linearised about rest
+// (multibody/linearisation.hpp) and solved for its static equilibrium under its own weight.
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "../multibody/pinned_boom_reference.hpp"
+#include "multibody/crane_model.hpp"
+#include "multibody/crane_statics.hpp"
+#include "multibody/linearisation.hpp"
+#include "nodal/nodal_coordinates.hpp"
+#include "scene/crane_builder.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace ffrf {
+namespace {
+
+constexpr double taut = 1e-6;  // the linearisations' pretension stretch [m]
+
+struct HeldPinnedBoom {
+  std::unique_ptr<multibody::CraneEquations> equations;
+  test::PinnedBoom reference;
+  double angle = 0.0;
+};
+
+// The shipped pinned crane's boom, pinned to a held hull turned by −boom.angle so that the boom lies
+// level (its weight all transverse: no axial load to couple with the sag), with one luffing wire of
+// stiffness k and length 20 m leaving the tip along `direction` (boom frame, towards the anchor),
+// stretched by `pretension_stretch` (a linearisation needs a taut wire: the tension-only law has a
+// kink at zero stretch; the pretension's geometric stiffness goes to the reference); gravity g, no
+// cargo.
+HeldPinnedBoom held_pinned_boom(int elements, const Eigen::Vector2d& direction, double stiffness, double gravity,
+                                double pretension_stretch) {
+  scene::Scene scene = scene::load_scene(FFRF_SOURCE_DIR "/cases/pinned_luffing_crane.toml");
+  const double angle = scene.boom.mount->angle, length = scene.boom.mesh.length, wire_length = 20.0;
+  const Eigen::Matrix2d frame = Eigen::Rotation2Dd(angle).toRotationMatrix();
+  const Eigen::Vector2d heel(scene.boom.mount->root_x, scene.boom.mount->root_y);
+  const Eigen::Vector2d anchor = heel + frame * (Eigen::Vector2d(length, 0.0) + wire_length * direction.normalized());
+  scene.luffing->a_frame_x = anchor.x();
+  scene.luffing->a_frame_y = anchor.y();
+  scene.luffing->wires = 1;
+  scene.luffing->stiffness = stiffness;
+  scene.luffing->unstretched_length = wire_length - pretension_stretch;
+  scene.luffing->damping_ratio = 0.0;
+  scene.boom.damping_ratio = 0.0;
+  auto model = scene::build_crane_parameters(scene, nodal::NodalCoordinates(scene::boom_beam(scene, elements)));
+  model.hull.fixed = true;
+  model.hull.hydrostatics = false;
+  model.hull.support_pose = Eigen::Vector3d(0.0, 0.0, -angle);
+  model.gravity = gravity;
+  model.cargo.present = false;
+  model.wires.erase(model.wires.begin() + model.hoist_wire);
+  model.hoist_wire = -1;
+  HeldPinnedBoom held;
+  held.equations = multibody::make_crane_equations(std::move(model));
+  held.angle = angle;
+  held.reference.length = length;
+  held.reference.EI = scene.boom.mesh.section.youngs_modulus * scene.boom.mesh.section.second_moment;
+  held.reference.EA = scene.boom.mesh.section.youngs_modulus * scene.boom.mesh.section.area;
+  held.reference.mass_per_length = scene.boom.mesh.section.mass_per_length;
+  held.reference.wire_stiffness = stiffness;
+  held.reference.wire_direction_local = direction.normalized();
+  held.reference.wire_tension = stiffness * pretension_stretch;
+  held.reference.wire_length = wire_length;
+  return held;
+}
+
+// The crane's natural frequencies about rest: K φ = ω² M φ of its linearisation.
+Eigen::VectorXd crane_frequencies(multibody::CraneEquations& equations) {
+  const multibody::LinearisedCrane linear =
+      multibody::linearise_crane(equations, Eigen::VectorXd::Zero(equations.minimal_size()));
+  const Eigen::MatrixXd stiffness = 0.5 * (linear.stiffness + linear.stiffness.transpose());
+  const Eigen::MatrixXd mass = 0.5 * (linear.mass + linear.mass.transpose());
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(stiffness, mass);
+  return solver.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+}
+
+TEST(PinnedBoom, FrequenciesOnAnObliqueWireMatchAnIndependentFrameModel) {
+  // The wire 30° off the boom's normal: bending and axial motion couple through it.
+  const int elements = 16;
+  const Eigen::Vector2d direction(-std::sin(30.0 * M_PI / 180.0), std::cos(30.0 * M_PI / 180.0));
+  HeldPinnedBoom held = held_pinned_boom(elements, direction, 2.0e8, 0.0, taut);
+  const Eigen::VectorXd crane = crane_frequencies(*held.equations);
+  const Eigen::VectorXd reference = test::natural_frequencies_fe(held.reference, elements, 6);
+  ASSERT_EQ(crane.size(), 3 * elements + 1);  // the heel angle and the clamped-free frame's 3N
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_NEAR(crane(i), reference(i), 1e-6 * reference(i)) << "mode " << i + 1;
+  }
+}
+
+TEST(PinnedBoom, FrequenciesOnATransverseWireMatchTheExactFrequencyEquation) {
+  const int elements = 64;
+  HeldPinnedBoom held = held_pinned_boom(elements, Eigen::Vector2d(0.0, 1.0), 2.0e8, 0.0, taut);
+  const Eigen::VectorXd crane = crane_frequencies(*held.equations);
+  test::PinnedBoom exact_boom = held.reference;  // the exact equation has no pretension: its 200 N
+  exact_boom.wire_tension = 0.0;                 // stiffen the axial modes only, by ~1e-8
+  const Eigen::VectorXd exact = test::natural_frequencies_analytic(exact_boom, 3);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(crane(i), exact(i), 1e-6 * exact(i)) << "bending mode " << i + 1;
+  }
+}
+
+TEST(PinnedBoom, StaticDeflectionUnderItsWeightMatchesTheExactBeam) {
+  // A small load (g = 0.01 m/s²: the boom turns by ~3e-7 rad about its heel and sags by ~0.1 mm,
+  // so the linear theory of the reference holds to ~1e-7): the span sags as a simply supported beam
+  // on the wire's spring.
+  const int elements = 16;
+  const double g = 0.01, stiffness = 2.0e8;
+  HeldPinnedBoom held = held_pinned_boom(elements, Eigen::Vector2d(0.0, 1.0), stiffness, g, 0.0);  // (the weight makes it taut)
+  const multibody::StaticEquilibrium statics =
+      multibody::solve_static_equilibrium(*held.equations, held.equations->initial_guess(), 1e-13);
+  const double beta = statics.z(held.equations->heel_offset());
+  const double length = held.reference.length;
+  // The tip's displacement in the boom's frame at rest: A(β)(L + u, v) − (L, 0).
+  const Eigen::Vector2d tip_local = Eigen::Vector2d(length, 0.0) + statics.outputs.tip_deflection;
+  const Eigen::Vector2d tip = Eigen::Rotation2Dd(beta).toRotationMatrix() * tip_local - Eigen::Vector2d(length, 0.0);
+  const double q = held.reference.mass_per_length * g;  // transverse load per length, towards −y
+  const double exact_tip = test::static_deflection_analytic(held.reference, -q, length);
+  const Eigen::Vector2d local_gravity(0.0, -g);
+  const test::PinnedBoomStatic fe = test::static_deflection_fe(held.reference, elements, local_gravity, Eigen::Vector2d::Zero());
+  EXPECT_NEAR(tip.y(), exact_tip, 1e-6 * std::abs(exact_tip));
+  EXPECT_NEAR(tip.y(), fe.tip_displacement.y(), 1e-6 * std::abs(fe.tip_displacement.y()));
+  EXPECT_NEAR(beta, fe.heel_rotation, 1e-6 * std::abs(fe.heel_rotation));
+  EXPECT_NEAR(statics.outputs.luffing_tension, q * length / 2.0, 1e-6 * q * length / 2.0);  // moment about the heel
+}
+
+}  // namespace
+}  // namespace ffrf
