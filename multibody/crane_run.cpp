@@ -36,13 +36,17 @@ class CraneRecorder final : public solve::OutputSink {
   RunResult& result_;
 };
 
-// The integration's record into the crane's result, with the hoist wire's events (event function i
-// is wire i's stretch).
-void take_record(solve::IntegrationRecord&& record, int hoist_wire, RunResult& result) {
+// The integration's record into the crane's result, with the wires' events (event function i is wire
+// i's stretch): the hoist wire's, and the luffing wires'.
+void take_record(solve::IntegrationRecord&& record, const CraneEquations& equations, RunResult& result) {
   static_cast<solve::IntegrationRecord&>(result) = std::move(record);
   result.wire_events.clear();
+  result.luffing_events.clear();
+  result.wire_names.clear();
+  for (int wire = 0; wire < equations.wire_count(); ++wire) result.wire_names.push_back(equations.wire_name(wire));
   for (const solve::Event& event : result.events) {
-    if (event.index == hoist_wire) result.wire_events.push_back({event.time, event.falling});
+    const WireEvent wire_event{event.time, event.falling, event.index};
+    (event.index == equations.hoist_wire() ? result.wire_events : result.luffing_events).push_back(wire_event);
   }
 }
 
@@ -56,12 +60,12 @@ RunResult simulate(CraneEquations& equations, const Eigen::VectorXd& z0, const R
   const std::string solver(solve::is_valid(settings.kind) ? solve::integrator_entry(settings.kind).label : "integrator");
   CraneRecorder recorder(equations, settings.monitor, solver.c_str(), result);
   try {
-    take_record(solve::integrate(equations, recorder, z0, settings), equations.hoist_wire(), result);
+    take_record(solve::integrate(equations, recorder, z0, settings), equations, result);
   } catch (SolverFailure& failure) {
     if (failure.partial() != nullptr) {
       auto partial = std::make_shared<RunResult>();
       partial->samples = std::move(result.samples);
-      take_record(solve::IntegrationRecord(*failure.partial()), equations.hoist_wire(), *partial);
+      take_record(solve::IntegrationRecord(*failure.partial()), equations, *partial);
       failure.attach_partial(std::move(partial));
     }
     throw;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "multibody/crane_equations.hpp"
@@ -24,14 +25,17 @@ struct RunSettings : solve::IntegratorSettings {
 
 struct WireEvent {
   double time;
-  bool slack;  // true: went slack (ℓ ↓ L0); false: became taut again
+  bool slack;    // true: went slack (ℓ ↓ L0); false: became taut again
+  int wire = 0;  // the wire (CraneEquations::wire_name)
 };
 
 // The integration's record (output times, statistics, events) with the crane's samples at those
 // times, the wire's events and what the run ran into (non-fatal detections).
 struct RunResult : solve::IntegrationRecord {
   std::vector<CraneOutputs> samples;
-  std::vector<WireEvent> wire_events;  // the hoist wire's (the cargo's)
+  std::vector<WireEvent> wire_events;     // the hoist wire's (the cargo's)
+  std::vector<WireEvent> luffing_events;  // every other wire's: a pinned boom's luffing wires
+  std::vector<std::string> wire_names;    // by wire index
   std::vector<Detection> detections;
 };
 

@@ -16,6 +16,7 @@ std::string_view to_string(FailureKind kind) {
     case FailureKind::mass_not_positive_definite: return "mass matrix not positive definite";
     case FailureKind::unstable_explicit: return "explicit instability";
     case FailureKind::wire_slack: return "wire slack";
+    case FailureKind::luffing_slack: return "luffing wire slack";
     case FailureKind::snap_load: return "snap load";
     case FailureKind::buckling: return "buckling";
     case FailureKind::capsize: return "capsize";
@@ -70,6 +71,10 @@ std::string_view remedy(FailureKind kind) {
     case FailureKind::wire_slack:
       return "the cargo lost its support: expect snap loads; reduce the wave or the crane motion, or lower the cargo's "
              "excursion (hoisting, a stiffer/longer wire)";
+    case FailureKind::luffing_slack:
+      return "the boom lost its luffing support and swung on its heel pin: reduce the crane's motion or the load's "
+             "release (a dropped or snatched load unloads the boom), or pretension the luffing wires more (stiffer or "
+             "shorter wires)";
     case FailureKind::snap_load:
       return "check the wire and boom against the peak; the sampled peak is resolved to the output interval";
     case FailureKind::buckling:
@@ -107,6 +112,7 @@ std::vector<Adjustment> adjustments(FailureKind kind) {
     case FailureKind::setup: return {A::tolerances, A::fixed_step};
     case FailureKind::mass_not_positive_definite:
     case FailureKind::wire_slack:
+    case FailureKind::luffing_slack:
     case FailureKind::snap_load:
     case FailureKind::capsize:
     case FailureKind::deck_submerged:
