@@ -94,6 +94,9 @@ void add_model_options(CLI::App& sub, ModelOptions& options) {
                "Vibration modes only (misses the static deflection under a hanging load)");
   sub.add_option("--stiffening", options.stiffening,
                  "Geometric stiffening none|static|centrifugal|both (default: boom.stiffening of the scene)");
+  sub.add_option("--mode-set", options.mode_set,
+                 "The modal boom's mode set (its floating frame's reference condition): clamped-free (the default) or, "
+                 "for a boom pinned at its heel, pinned-pinned (the chord frame)");
 }
 
 scene::BoomChoice boom_choice(const ModelOptions& options, scene::BoomChoice base) {
@@ -105,6 +108,7 @@ scene::BoomChoice boom_choice(const ModelOptions& options, scene::BoomChoice bas
   if (options.static_modes) request.static_modes = true;
   if (options.no_static_modes) request.static_modes = false;
   request.stiffening = options.stiffening;
+  request.mode_set = options.mode_set;
   try {
     return study::boom_choice(request, base);
   } catch (const study::SettingError& error) {  // name where the element count came from
@@ -131,6 +135,7 @@ std::string_view option_name(study::Setting setting) {
     case study::Setting::boom_model: return "--boom";
     case study::Setting::modes: return "--modes";
     case study::Setting::stiffening: return "--stiffening";
+    case study::Setting::mode_set: return "--mode-set";
   }
   return "?";
 }

@@ -55,8 +55,9 @@ struct ModelOptions {
   bool static_modes = false;
   bool no_static_modes = false;
   std::string stiffening;  // empty: the scene's boom.stiffening (or the baseline's)
+  std::string mode_set;    // empty: clamped-free (or the baseline's)
 };
-// --boom --elements/-N --modes/-k --static-modes --no-static-modes --stiffening.
+// --boom --elements/-N --modes/-k --static-modes --no-static-modes --stiffening --mode-set.
 void add_model_options(CLI::App& sub, ModelOptions& options);
 // The boom of a scene when no option is given (study/boom_choice.hpp).
 using study::default_boom_choice;

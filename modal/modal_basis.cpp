@@ -48,7 +48,9 @@ ModalBasis append_static_modes(const fem::BeamMesh& mesh, const fem::DofMap& dof
       }
     }
     const double remainder = std::sqrt(r.dot(mass * r));
-    if (remainder < 1e-8 * original) {
+    // (A load on a DOF the reference condition fixes, e.g. a transverse tip load in the chord frame,
+    // moves nothing: dropped like a load the vibration modes already span.)
+    if (!(original > 0.0) || remainder < 1e-8 * original) {
       basis.dropped_loads.push_back(loads[static_cast<std::size_t>(j)]);
       continue;
     }

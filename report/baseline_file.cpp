@@ -85,7 +85,7 @@ class Node {
 };
 
 Json model_json(const study::BaselineModel& m) {
-  return Json{{"label", m.choice.label()},
+  Json model = Json{{"label", m.choice.label()},
               {"boom", scene::to_string(m.choice.kind)},
               {"elements", m.choice.elements},
               {"modes", m.choice.modes},
@@ -98,6 +98,9 @@ Json model_json(const study::BaselineModel& m) {
               {"fixed_step_s", m.fixed_step},
               {"duration_s", m.duration},
               {"output_interval_s", m.output_interval}};
+  // The mode set only when it is not the default (clamped-free): older files stay as they were.
+  if (m.choice.mode_set != fem::Boundary::clamped_free) model["mode_set"] = std::string(fem::to_string(m.choice.mode_set));
+  return model;
 }
 
 study::BaselineModel read_model(const Node& n) {
@@ -109,6 +112,12 @@ study::BaselineModel read_model(const Node& n) {
   m.choice.elements = n.at("elements").integer(1, 1'000'000);
   m.choice.modes = n.at("modes").integer(1, 3'000'000);
   m.choice.static_modes = n.at("static_modes").boolean();
+  if (n.has("mode_set")) {
+    const Node set = n.at("mode_set");
+    const auto boundary = fem::parse_boundary(set.text());
+    if (!boundary || *boundary == fem::Boundary::free_free) set.fail("unknown mode set (valid: clamped-free, pinned-pinned)");
+    m.choice.mode_set = *boundary;
+  }
   const Node stiffening = n.at("stiffening");
   m.choice.stiffening = scene::parse_stiffening(stiffening.text());
   if (!m.choice.stiffening) stiffening.fail("unknown stiffening (valid: none, static, centrifugal, both)");

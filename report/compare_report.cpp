@@ -256,16 +256,18 @@ std::string compare_text(const RunContext& ctx, const Comparison& c) {
                               reference_label(c.reference), c.verdict.tolerance, study::output_list(c.judged));
   t += "converged reference\n" + reference_levels_text(c.reference) + "\n";
   const std::vector<study::MeasuredModel> measured = study::measured_models(c);
-  t += fmt::format("{:<24} {:>4} {:>9} {:<13} {:>9} {:>9} {:>7} {:>9} {:>7} {:>7}\n", "model", "DOFs", "worst", "worst output",
-                   "static", "dynamic", "verdict", "wall [s]", "x wall", "x work");
+  std::size_t width = 24;  // the model column: as wide as the longest label
+  for (const auto& run : c.runs) width = std::max(width, run.choice.label().size());
+  t += fmt::format("{:<{}} {:>4} {:>9} {:<13} {:>9} {:>9} {:>7} {:>9} {:>7} {:>7}\n", "model", width, "DOFs", "worst",
+                   "worst output", "static", "dynamic", "verdict", "wall [s]", "x wall", "x work");
   for (std::size_t m = 0; m < c.runs.size(); ++m) {
     const study::SplitError& s = c.split[m][static_cast<std::size_t>(c.worst[m].channel)];
-    t += fmt::format("{:<24} {:>4} {:>9} {:<13} {:>9} {:>9} {:>7} {:>9.3g} {:>7} {:>7}\n", c.runs[m].choice.label(),
+    t += fmt::format("{:<{}} {:>4} {:>9} {:<13} {:>9} {:>9} {:>7} {:>9.3g} {:>7} {:>7}\n", c.runs[m].choice.label(), width,
                      c.runs[m].elastic_dof, sci(c.worst[m].error), channel_name(c.worst[m].channel), sci(s.static_error),
                      sci(s.dynamic_error), pass_cell(c.verdict, measured, m), c.runs[m].result.stats.wall_seconds,
                      speedup_cell(c.verdict.models[m].wall_speedup), speedup_cell(c.verdict.models[m].work_speedup));
   }
-  t += fmt::format("{:<24} {:>4} {:>9} {:<13} {:>9} {:>9} {:>7} {:>9.3g} {:>7} {:>7}\n", "(reference)",
+  t += fmt::format("{:<{}} {:>4} {:>9} {:<13} {:>9} {:>9} {:>7} {:>9.3g} {:>7} {:>7}\n", "(reference)", width,
                    c.reference.run.elastic_dof, "-", "-", "-", "-", "-", c.reference.run.result.stats.wall_seconds, "1×", "1×");
   t += "(worst: the largest total normalized RMS error over the judged outputs, what the verdict judges; static, dynamic: "
        "its two parts for that output — the equilibrium offset, and the motion about each model's own equilibrium; x wall, "

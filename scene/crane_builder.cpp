@@ -45,17 +45,23 @@ std::string BoomChoice::label() const {
   switch (kind) {
     case BoomKind::rigid: return "rigid";
     case BoomKind::nodal: return "nodal N=" + std::to_string(elements) + stiffened;
-    case BoomKind::modal:
-      return "modal k=" + std::to_string(modes) + (static_modes ? "+static" : "") + " (N=" + std::to_string(elements) + ")" +
-             stiffened;
+    case BoomKind::modal: {
+      std::string set;
+      if (mode_set != fem::Boundary::clamped_free) {
+        set += ' ';
+        set += fem::to_string(mode_set);
+      }
+      return "modal k=" + std::to_string(modes) + (static_modes ? "+static" : "") + set + " (N=" + std::to_string(elements) +
+             ")" + stiffened;
+    }
   }
   return "?";
 }
 
-std::shared_ptr<const fem::BeamModel> boom_beam(const Scene& scene, int elements) {
+std::shared_ptr<const fem::BeamModel> boom_beam(const Scene& scene, int elements, fem::Boundary reference) {
   fem::BeamMesh mesh = scene.boom.mesh;
   mesh.element_count = elements;
-  return std::make_shared<const fem::BeamModel>(fem::make_beam_model(mesh, fem::Boundary::clamped_free));
+  return std::make_shared<const fem::BeamModel>(fem::make_beam_model(mesh, reference));
 }
 
 double boom_stiffness_damping(const Scene& scene) {
@@ -153,8 +159,20 @@ fem::AxialForce static_reference_axial_force(const Scene& scene) {
   const double g = scene.environment.gravity;
   const double along_axis = -std::sin(boom_angle_at_rest(scene));  // component of "down" along the boom axis
   const double cargo_weight = scene.cargo ? scene.cargo->mass * g : 0.0;
-  return fem::static_axial_force(scene.boom.mesh, scene.boom.mesh.section.mass_per_length * g * along_axis,
-                                 cargo_weight * along_axis);
+  double tip_load = cargo_weight * along_axis;
+  if (scene.boom.mount && scene.boom.mount->pinned && scene.luffing) {
+    // The luffing wires pull the tip back towards the A-frame: their tension at rest along the axis.
+    const LuffingGeometry luffing = luffing_geometry(scene);
+    if (luffing.attachment < scene.boom.mesh.length) {
+      scene_problem(scene, scene_key("luffing.attachment"), std::to_string(luffing.attachment),
+                    "static stiffening of a pinned boom takes the luffing wires' compression at the tip; with the wires "
+                    "on the span, run without it (--stiffening none)");
+    }
+    const double angle = boom_angle_at_rest(scene);
+    const Eigen::Vector2d axis(std::cos(angle), std::sin(angle));
+    tip_load += luffing.total_tension * ((luffing.a_frame - luffing.boom_point) / luffing.length).dot(axis);
+  }
+  return fem::static_axial_force(scene.boom.mesh, scene.boom.mesh.section.mass_per_length * g * along_axis, tip_load);
 }
 
 SceneWaters scene_waters(const Scene& scene) {
@@ -256,7 +274,18 @@ template multibody::CraneParameters<nodal::NodalCoordinates> build_crane_paramet
 template multibody::CraneParameters<modal::ModalCoordinates> build_crane_parameters(const Scene&, modal::ModalCoordinates, Stiffening);
 
 modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {
-  auto beam = boom_beam(scene, choice.kind == BoomKind::rigid ? 1 : choice.elements);
+  if (choice.kind == BoomKind::modal && choice.mode_set != fem::Boundary::clamped_free) {
+    // The pinned-pinned set's frame is the chord frame: its origin at the heel pin, its angle free.
+    // A clamped heel holds the frame at the root tangent, which only the clamped-free set describes.
+    if (choice.mode_set != fem::Boundary::pinned_pinned || !scene.boom.mount || !scene.boom.mount->pinned) {
+      scene_problem(scene, scene_key("boom.heel"), scene.boom.mount && scene.boom.mount->pinned ? "\"pinned\"" : "\"clamped\"",
+                    "the " + std::string(fem::to_string(choice.mode_set)) +
+                        " mode set needs a boom pinned at its heel (boom.heel = \"pinned\", its chord frame turning about the "
+                        "pin); a clamped boom takes the clamped-free set, a free-free set is not offered");
+    }
+  }
+  auto beam = boom_beam(scene, choice.kind == BoomKind::rigid ? 1 : choice.elements,
+                        choice.kind == BoomKind::modal ? choice.mode_set : fem::Boundary::clamped_free);
   if (choice.kind == BoomKind::rigid) {
     modal::ModalBasis basis;
     basis.vectors = Eigen::MatrixXd(beam->dofs.free_count(), 0);
@@ -266,7 +295,7 @@ modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& 
   modal::ModeCache local;
   modal::ModeCache& modes_of_mesh = cache != nullptr ? *cache : local;
   const modal::EigenPairs modes =
-      choice.modes > 0 ? modes_of_mesh.lowest_modes(beam->mesh, fem::Boundary::clamped_free, choice.modes, choice.solver)
+      choice.modes > 0 ? modes_of_mesh.lowest_modes(beam->mesh, beam->boundary, choice.modes, choice.solver)
                        : modal::EigenPairs{Eigen::VectorXd(0), Eigen::MatrixXd(beam->dofs.free_count(), 0), {}};
   const std::vector<modal::UnitLoad> loads =
       choice.static_modes ? modal::tip_and_body_unit_loads(beam->mesh) : std::vector<modal::UnitLoad>{};

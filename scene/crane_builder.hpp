@@ -32,11 +32,18 @@ struct BoomChoice {
   bool static_modes = false;  // add static correction modes (modal): tip loads + uniform body loads
   modal::EigenSolverKind solver = modal::EigenSolverKind::arpack;
   std::optional<Stiffening> stiffening = std::nullopt;  // overrides the scene's boom.stiffening
-  std::string label() const;  // "rigid", "nodal N=16", "modal k=4+static (N=16)"
+  // The modal boom's mode set: the reference condition of its floating frame and of its modes —
+  // clamped-free (the frame clamped at the heel: the boom's root tangent) or, for a pinned heel,
+  // pinned-pinned (the chord frame: the tip on the frame's axis). docs/theory.md, "Mode sets".
+  fem::Boundary mode_set = fem::Boundary::clamped_free;
+  // "rigid", "nodal N=16", "modal k=4+static (N=16)", "modal k=2 pinned-pinned (N=16)"
+  std::string label() const;
 };
 
-// The beam of the boom, clamped at its root (the floating-frame reference condition).
-std::shared_ptr<const fem::BeamModel> boom_beam(const Scene& scene, int elements);
+// The beam of the boom with its floating frame's reference condition (clamped at its root, or
+// pinned at the root with the tip on the frame's axis).
+std::shared_ptr<const fem::BeamModel> boom_beam(const Scene& scene, int elements,
+                                                fem::Boundary reference = fem::Boundary::clamped_free);
 
 // Stiffness-proportional structural damping β = 2ζ/ω1 with ω1 the analytic first clamped–free
 // bending frequency: the same for every mesh and coordinate choice, so models compare on equal terms.

@@ -30,8 +30,8 @@ CraneModelCache::Key CraneModelCache::key_of(const BoomChoice& choice, std::opti
     case BoomKind::rigid: return {static_cast<int>(choice.kind), 0, 0, false, 0, stiffening, hull};
     case BoomKind::nodal: return {static_cast<int>(choice.kind), choice.elements, 0, false, 0, stiffening, hull};
     case BoomKind::modal:
-      return {static_cast<int>(choice.kind), choice.elements, choice.modes, choice.static_modes, static_cast<int>(choice.solver),
-              stiffening, hull};
+      return {static_cast<int>(choice.kind), choice.elements, choice.modes, choice.static_modes,
+              static_cast<int>(choice.solver) + 16 * static_cast<int>(choice.mode_set), stiffening, hull};
   }
   return {};
 }

@@ -210,6 +210,7 @@ std::vector<SettingDifference> model_differences(const BaselineModel& b, const B
   if (b.choice.kind == scene::BoomKind::modal && r.choice.kind == scene::BoomKind::modal) {  // else: the boom model differs
     differ("vibration modes", fmt::format("{}", b.choice.modes), fmt::format("{}", r.choice.modes));
     differ("static correction modes", b.choice.static_modes ? "with" : "without", r.choice.static_modes ? "with" : "without");
+    differ("mode set", std::string(fem::to_string(b.choice.mode_set)), std::string(fem::to_string(r.choice.mode_set)));
   }
   const auto stiffening = [](const scene::BoomChoice& c) {
     return c.stiffening ? std::string(scene::to_string(*c.stiffening)) : std::string("the scene's");

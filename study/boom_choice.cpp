@@ -36,6 +36,17 @@ scene::BoomChoice boom_choice(const BoomRequest& request, scene::BoomChoice choi
     if (!choice.stiffening)
       throw SettingError(Setting::stiffening, request.stiffening, "unknown stiffening; choose one of none, static, centrifugal, both");
   }
+  if (!request.mode_set.empty()) {
+    const auto set = fem::parse_boundary(request.mode_set);
+    if (!set || *set == fem::Boundary::free_free) {
+      throw SettingError(Setting::mode_set, request.mode_set,
+                         "unknown mode set; choose one of clamped-free, pinned-pinned (a free-free set is not offered)");
+    }
+    if (choice.kind != scene::BoomKind::modal && *set != fem::Boundary::clamped_free) {
+      throw SettingError(Setting::mode_set, request.mode_set, "a mode set belongs to a modal boom (--boom modal)");
+    }
+    choice.mode_set = *set;
+  }
   if (choice.kind == scene::BoomKind::modal) {
     const int dof = fem::clamped_free_dof_count(choice.elements);
     if (choice.modes < 1 || choice.modes >= dof) {

@@ -5,7 +5,7 @@
 
 namespace ffrf::study {
 
-std::vector<ComparedModel> compared_models() {
+std::vector<ComparedModel> compared_models(const scene::Scene& scene) {
   using scene::BoomKind;
   std::vector<ComparedModel> models{
       {{BoomKind::rigid, 1}, true},
@@ -15,6 +15,16 @@ std::vector<ComparedModel> compared_models() {
   for (const bool static_modes : {false, true}) {
     for (const int k : {1, 2, 4}) {
       models.push_back({{BoomKind::modal, 16, k, static_modes}, k == 2});
+    }
+  }
+  // A pinned boom: the chord frame's pinned-pinned mode set beside the clamped-free one.
+  if (scene.boom.mount && scene.boom.mount->pinned) {
+    for (const bool static_modes : {false, true}) {
+      for (const int k : {1, 2, 4}) {
+        scene::BoomChoice choice{BoomKind::modal, 16, k, static_modes};
+        choice.mode_set = fem::Boundary::pinned_pinned;
+        models.push_back({choice, false});
+      }
     }
   }
   return models;
@@ -39,7 +49,7 @@ Comparison compare(const scene::Scene& scene, const CompareRequest& request,
   c.reference = converged_reference(models, request.reference, request.settings.duration);
   c.window_start = error_window(scene, request.settings.duration);
   c.judged = judged_outputs(scene);
-  for (const ComparedModel& model : compared_models()) {
+  for (const ComparedModel& model : compared_models(scene)) {
     tell(model.choice.label());
     PreparedRun prepared = prepare_run(models, model.choice);
     c.runs.push_back(integrate_run(modelled, prepared, request.settings));

@@ -27,7 +27,7 @@ struct ComparedModel {
   scene::BoomChoice choice;
   bool plotted = false;
 };
-std::vector<ComparedModel> compared_models();
+std::vector<ComparedModel> compared_models(const scene::Scene& scene);
 
 struct CompareRequest {
   multibody::RunSettings settings;  // of every compared model (study::integrator_settings)

@@ -1,6 +1,7 @@
 // The one error window, judged outputs and worst error of the studies (see error_measure.hpp).
 #include "study/error_measure.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "scene/irregular_sea.hpp"
@@ -24,6 +25,16 @@ std::vector<multibody::OutputChannel> judged_outputs(const scene::Scene& scene) 
   }
   return {OutputChannel::cargo_heave, OutputChannel::cargo_pitch,  OutputChannel::crane_heave,
           OutputChannel::crane_pitch, OutputChannel::wire_tension, OutputChannel::joint_moment};
+}
+
+double convergence_change(const scene::Scene& scene, const multibody::RunErrors& errors) {
+  const bool pinned = scene.boom.mount && scene.boom.mount->pinned;
+  double worst = 0.0;
+  for (const multibody::OutputChannel channel : multibody::all_channels) {
+    if (pinned && channel == multibody::OutputChannel::joint_moment) continue;
+    worst = std::max(worst, errors[channel].normalized_rms);
+  }
+  return worst;
 }
 
 std::string output_list(const std::vector<multibody::OutputChannel>& outputs) {

@@ -26,6 +26,11 @@ double error_window(const scene::Scene& scene, double duration);
 
 // The judged outputs of a scene (see above), in report order.
 std::vector<multibody::OutputChannel> judged_outputs(const scene::Scene& scene);
+
+// The change between two reference levels: the worst normalized RMS error over every error channel
+// the scene's crane has (all but the joint moment of a pinned heel, which carries none: its samples
+// are the integrator's round-off).
+double convergence_change(const scene::Scene& scene, const multibody::RunErrors& errors);
 // "cargo_heave,wire_tension"
 std::string output_list(const std::vector<multibody::OutputChannel>& outputs);
 

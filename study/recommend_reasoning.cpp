@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "scene/irregular_sea.hpp"
+#include "scene/luffing_wires.hpp"
 #include "study/error_measure.hpp"
 #include "study/verdict.hpp"
 #include "study/modes.hpp"
@@ -86,9 +87,21 @@ void loads(const scene::Scene& scene, const std::vector<multibody::OutputChannel
   const double L = mesh.length, EI = mesh.section.bending_rigidity(), rhoA = mesh.section.mass_per_length;
   const double g = scene.environment.gravity, phi = scene::boom_angle_at_rest(scene);
   const double cargo_weight = scene.cargo ? scene.cargo->mass * g : 0.0;
-  r.static_tip_deflection = (cargo_weight * L * L * L / 3.0 + rhoA * g * std::pow(L, 4) / 8.0) * std::cos(phi) / EI;
-  r.axial_load = (rhoA * g * L + cargo_weight) * std::sin(phi);
-  r.euler_load = *fem::euler_buckling_load(scene.boom.mesh, fem::Boundary::clamped_free);
+  const bool pinned = scene.boom.mount && scene.boom.mount->pinned && scene.luffing;
+  if (pinned) {
+    // Pinned at the heel, held at the tip by the luffing wires: the span sags as a simply supported
+    // beam, 5qL⁴/(384EI) at mid-length, and the wires' pull along the boom adds to its compression.
+    const scene::LuffingGeometry luffing = scene::luffing_geometry(scene);
+    const Eigen::Vector2d axis(std::cos(phi), std::sin(phi));
+    const double wire_compression = -luffing.total_tension * ((luffing.a_frame - luffing.boom_point) / luffing.length).dot(axis);
+    r.static_tip_deflection = 5.0 * rhoA * g * std::pow(L, 4) / 384.0 * std::cos(phi) / EI;
+    r.axial_load = (rhoA * g * L + cargo_weight) * std::sin(phi) + wire_compression;
+    r.euler_load = *fem::euler_buckling_load(scene.boom.mesh, fem::Boundary::pinned_pinned);
+  } else {
+    r.static_tip_deflection = (cargo_weight * L * L * L / 3.0 + rhoA * g * std::pow(L, 4) / 8.0) * std::cos(phi) / EI;
+    r.axial_load = (rhoA * g * L + cargo_weight) * std::sin(phi);
+    r.euler_load = *fem::euler_buckling_load(scene.boom.mesh, fem::Boundary::clamped_free);
+  }
   if (contains(outputs, multibody::OutputChannel::tip_deflection)) {
     r.rigid_error = 1.0;
     r.statements.push_back("Rigid boom: the tip deflection is a chosen output and a rigid boom has none (error 100 %).");
@@ -96,10 +109,10 @@ void loads(const scene::Scene& scene, const std::vector<multibody::OutputChannel
     const double rms_heave = std::sqrt(scene::sea_components(scene).variance());
     r.rigid_error = r.static_tip_deflection * std::cos(phi) / rms_heave;
     r.statements.push_back(fmt::format(
-        "Rigid boom: it misses the static tip deflection δ = F⊥L³/(3EI) + q⊥L⁴/(8EI) = {:.3g} m under the cargo and its own "
-        "weight; its vertical part δ cos φ = {:.3g} m against the cargo's RMS heave {} = {:.3g} m estimates its error "
+        "Rigid boom: it misses the static deflection δ = {} = {:.3g} m under {}; its vertical part δ cos φ = {:.3g} m against the cargo's RMS heave {} = {:.3g} m estimates its error "
         "at {:.2g} (τ = {:g}).",
-        r.static_tip_deflection, r.static_tip_deflection * std::cos(phi),
+        pinned ? "5q⊥L⁴/(384EI) (the span between the heel pin and the luffing wires)" : "F⊥L³/(3EI) + q⊥L⁴/(8EI)",
+        r.static_tip_deflection, pinned ? "its own weight" : "the cargo and its own weight", r.static_tip_deflection * std::cos(phi),
         scene.wave ? "H/(2√2)" : "(the sea's RMS elevation √m0)", rms_heave, r.rigid_error, r.tolerance));
   } else {
     r.rigid_error = std::numeric_limits<double>::quiet_NaN();
@@ -114,9 +127,10 @@ void loads(const scene::Scene& scene, const std::vector<multibody::OutputChannel
     const bool needed = r.static_stiffening_effect > r.tolerance;
     if (needed) required = scene::Stiffening::static_load;
     r.statements.push_back(fmt::format(
-        "Buckling: the boom carries P = {:.3g} N in compression against its Euler load π²EI/(4L²) = {:.3g} N (P/P_E = {:.3g}); "
+        "Buckling: the boom carries P = {:.3g} N in compression against its Euler load {} = {:.3g} N (P/P_E = {:.3g}); "
         "the prestress changes the deflection by P/(P_E − P) = {:.2g}, the outputs by about {:.2g}: static stiffening is {}.",
-        r.axial_load, r.euler_load, r.axial_load / r.euler_load, amplification, r.static_stiffening_effect,
+        r.axial_load, pinned ? "π²EI/L²" : "π²EI/(4L²)", r.euler_load, r.axial_load / r.euler_load, amplification,
+        r.static_stiffening_effect,
         needed ? "needed" : "not needed"));
   }
   if (r.spin_rate > 0.0) {

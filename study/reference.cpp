@@ -63,7 +63,7 @@ ConvergedReference converged_reference(scene::CraneModelCache& models, const Ref
     ModelRun run = integrate_run(scene, prepared, settings);
     ReferenceLevel record{choice.elements, settings.relative_tolerance, 0.0, run.result.stats};
     if (level > 0) {
-      record.change = multibody::compare_runs(reference.run.result, run.result, reference.window_start).worst_normalized_rms();
+      record.change = convergence_change(scene, multibody::compare_runs(reference.run.result, run.result, reference.window_start));
     }
     reference.levels.push_back(record);
     reference.choice = choice;

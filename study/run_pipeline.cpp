@@ -33,6 +33,7 @@ std::string_view to_string(Setting setting) {
     case Setting::boom_model: return "boom model";
     case Setting::modes: return "mode count";
     case Setting::stiffening: return "geometric stiffening";
+    case Setting::mode_set: return "mode set";
   }
   return "?";
 }
@@ -49,7 +50,9 @@ multibody::MonitorLimits monitor_limits(const scene::Scene& scene) {
   limits.boom_length = mesh.length;
   limits.deflection_limit = scene.simulation.deflection_limit;
   limits.constraint_drift_limit = scene.simulation.constraint_drift_limit;
-  limits.buckling_load = *fem::euler_buckling_load(mesh, fem::Boundary::clamped_free);  // the root is clamped
+  // The clamped root's Euler load π²EI/(4L²); a pinned heel's with the luffing wires holding the tip: π²EI/L².
+  const bool pinned = scene.boom.mount && scene.boom.mount->pinned;
+  limits.buckling_load = *fem::euler_buckling_load(mesh, pinned ? fem::Boundary::pinned_pinned : fem::Boundary::clamped_free);
   limits.wire_unstretched_length = scene.wire ? scene.wire->unstretched_length : 0.0;
   if (scene.is_crane()) {  // a floating hull: capsize, deck and cargo-in-water watch
     const scene::Hull& hull = *scene.hull;

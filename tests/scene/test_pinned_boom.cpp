@@ -17,6 +17,7 @@
 #include "multibody/crane_run.hpp"
 #include "multibody/crane_statics.hpp"
 #include "multibody/linearisation.hpp"
+#include "modal/modal_coordinates.hpp"
 #include "nodal/nodal_coordinates.hpp"
 #include "scene/crane_builder.hpp"
 #include "scene/scene_loader.hpp"
@@ -32,6 +33,21 @@ struct HeldPinnedBoom {
   double angle = 0.0;
 };
 
+// The crane's parameters with the hull held (turned so that the boom lies level), no water, no
+// cargo and its hoist wire, gravity g.
+template <class Parameters>
+std::unique_ptr<multibody::CraneEquations> held_equations(Parameters model, double gravity) {
+  const double angle = model.mount.angle;
+  model.hull.fixed = true;
+  model.hull.hydrostatics = false;
+  model.hull.support_pose = Eigen::Vector3d(0.0, 0.0, -angle);
+  model.gravity = gravity;
+  model.cargo.present = false;
+  model.wires.erase(model.wires.begin() + model.hoist_wire);
+  model.hoist_wire = -1;
+  return multibody::make_crane_equations(std::move(model));
+}
+
 // The shipped pinned crane's boom, pinned to a held hull turned by −boom.angle so that the boom lies
 // level (its weight all transverse: no axial load to couple with the sag), with one luffing wire of
 // stiffness k and length 20 m leaving the tip along `direction` (boom frame, towards the anchor),
@@ -39,7 +55,7 @@ struct HeldPinnedBoom {
 // kink at zero stretch; the pretension's geometric stiffness goes to the reference); gravity g, no
 // cargo.
 HeldPinnedBoom held_pinned_boom(int elements, const Eigen::Vector2d& direction, double stiffness, double gravity,
-                                double pretension_stretch) {
+                                double pretension_stretch, const scene::BoomChoice* modal = nullptr) {
   scene::Scene scene = scene::load_scene(FFRF_SOURCE_DIR "/cases/pinned_luffing_crane.toml");
   const double angle = scene.boom.mount->angle, length = scene.boom.mesh.length, wire_length = 20.0;
   const Eigen::Matrix2d frame = Eigen::Rotation2Dd(angle).toRotationMatrix();
@@ -52,16 +68,13 @@ HeldPinnedBoom held_pinned_boom(int elements, const Eigen::Vector2d& direction, 
   scene.luffing->unstretched_length = wire_length - pretension_stretch;
   scene.luffing->damping_ratio = 0.0;
   scene.boom.damping_ratio = 0.0;
-  auto model = scene::build_crane_parameters(scene, nodal::NodalCoordinates(scene::boom_beam(scene, elements)));
-  model.hull.fixed = true;
-  model.hull.hydrostatics = false;
-  model.hull.support_pose = Eigen::Vector3d(0.0, 0.0, -angle);
-  model.gravity = gravity;
-  model.cargo.present = false;
-  model.wires.erase(model.wires.begin() + model.hoist_wire);
-  model.hoist_wire = -1;
   HeldPinnedBoom held;
-  held.equations = multibody::make_crane_equations(std::move(model));
+  if (modal != nullptr) {
+    held.equations = held_equations(scene::build_crane_parameters(scene, scene::modal_coordinates(scene, *modal)), gravity);
+  } else {
+    held.equations = held_equations(scene::build_crane_parameters(scene, nodal::NodalCoordinates(scene::boom_beam(scene, elements))),
+                                    gravity);
+  }
   held.angle = angle;
   held.reference.length = length;
   held.reference.EI = scene.boom.mesh.section.youngs_modulus * scene.boom.mesh.section.second_moment;
@@ -142,6 +155,38 @@ TEST(PinnedBoom, StaticDeflectionUnderItsWeightMatchesTheExactBeam) {
   std::printf("static sag: tip %.3e (exact %.3e), heel rotation %.3e (reference %.3e); relative errors %.1e, %.1e\n",
               tip.y(), exact_tip, beta, fe.heel_rotation, std::abs(tip.y() / exact_tip - 1.0),
               std::abs(beta / fe.heel_rotation - 1.0));
+}
+
+// The chord frame's pinned-pinned mode set (the tip on the frame's axis, the frame turning about the
+// pin): with most of its modes the modal boom spans what the nodal one does, so the crane's lowest
+// frequencies match the independent frame model; the clamped-free set (the heel's tangent frame)
+// likewise. Both frames describe the same physics.
+TEST(PinnedBoom, BothModeSetsReachTheIndependentFrequencies) {
+  const int elements = 16;
+  const Eigen::Vector2d direction(-std::sin(30.0 * M_PI / 180.0), std::cos(30.0 * M_PI / 180.0));
+  HeldPinnedBoom nodal = held_pinned_boom(elements, direction, 2.0e8, 0.0, taut);
+  const Eigen::VectorXd reference = test::natural_frequencies_fe(nodal.reference, elements, 4);
+  for (const fem::Boundary set : {fem::Boundary::clamped_free, fem::Boundary::pinned_pinned}) {
+    scene::BoomChoice choice{scene::BoomKind::modal, elements, 40, true};
+    choice.mode_set = set;
+    HeldPinnedBoom modal = held_pinned_boom(elements, direction, 2.0e8, 0.0, taut, &choice);
+    const Eigen::VectorXd crane = crane_frequencies(*modal.equations);
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_NEAR(crane(i), reference(i), 1e-6 * reference(i)) << fem::to_string(set) << ", mode " << i + 1;
+    }
+  }
+}
+
+TEST(PinnedBoom, ThePinnedPinnedModeSetNeedsAPinnedHeel) {
+  const scene::Scene clamped = scene::load_scene(FFRF_SOURCE_DIR "/cases/paper_floating_crane.toml");
+  scene::BoomChoice choice{scene::BoomKind::modal, 16, 2, true};
+  choice.mode_set = fem::Boundary::pinned_pinned;
+  try {
+    (void)scene::build_crane_model(clamped, choice);
+    ADD_FAILURE() << "a clamped boom must refuse the chord frame's mode set";
+  } catch (const scene::SceneError& error) {
+    EXPECT_NE(std::string(error.what()).find("boom.heel"), std::string::npos) << error.what();
+  }
 }
 
 TEST(PinnedBoom, ADroppedLoadSlackensTheLuffingWiresAndTheRunNamesThem) {

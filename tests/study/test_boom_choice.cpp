@@ -92,6 +92,29 @@ TEST(BoomChoice, BadRequestsNameTheSettingValueAndChoices) {
   BoomRequest huge;  // more elements than the memory limit allows (study/work_limits.hpp)
   huge.elements = max_nodal_elements() + 1;
   EXPECT_EQ(refusal(huge, base).setting(), Setting::elements);
+
+  BoomRequest free_set;  // the free-free set needs mean-axis conditions the pinned frame does not have
+  free_set.kind = "modal";
+  free_set.mode_set = "free-free";
+  const SettingError free_free = refusal(free_set, base);
+  EXPECT_EQ(free_free.setting(), Setting::mode_set);
+  EXPECT_NE(free_free.problem().find("clamped-free, pinned-pinned"), std::string::npos) << free_free.what();
+
+  BoomRequest nodal_set;  // a mode set belongs to a modal boom
+  nodal_set.kind = "nodal";
+  nodal_set.mode_set = "pinned-pinned";
+  EXPECT_EQ(refusal(nodal_set, base).setting(), Setting::mode_set);
+}
+
+TEST(BoomChoice, TheModeSetIsKeptAndNamedInTheLabel) {
+  const scene::Scene scene = test::scene_file("pinned_luffing_crane.toml");
+  BoomRequest request;
+  request.kind = "modal";
+  request.modes = 2;
+  request.mode_set = "pinned-pinned";
+  const scene::BoomChoice choice = boom_choice(request, default_boom_choice(scene));
+  EXPECT_EQ(choice.mode_set, fem::Boundary::pinned_pinned);
+  EXPECT_EQ(choice.label(), "modal k=2+static pinned-pinned (N=16)");
 }
 
 }  // namespace boom_choice_test
