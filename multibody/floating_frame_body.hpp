@@ -7,7 +7,7 @@
 // and the quadratic velocity vector Q_v = −Ṁq̇ + ∂T/∂q (eq. 20.c) is
 //   Q_v,R = θ̇² A ū_c − 2θ̇ A Ĩ S̄ η̇,  Q_v,θ = −2θ̇ (d + ηᵀM_ff) η̇,  Q_v,f = θ̇² (dᵀ + M_ff η) − 2θ̇ S̃ η̇.
 // Point forces by virtual work (eq. 13), gravity from V = −gᵀ∫ρr, elastic force −Kη (eq. 16)
-// and stiffness-proportional structural damping −βKη̇. Optional geometric (stress) stiffening adds
+// and Rayleigh structural damping of the elastic motion −(αM_ff + βK)η̇ (α = 0: stiffness-proportional). Optional geometric (stress) stiffening adds
 // −(K_σ + θ̇² K_c)η: K_σ the geometric stiffness of a constant reference axial force (static
 // prestress), K_c that of the centrifugal axial force per unit θ̇² (docs/theory.md §9, §11). Derivation: docs/theory.md §2; checked
 // against the independent sympy derivation tests/coupling/one_element_reference.hpp.
@@ -56,15 +56,17 @@ class FloatingFrameBody {
   using ConstRef = Eigen::Ref<const Eigen::VectorXd>;
   using Ref = Eigen::Ref<Eigen::VectorXd>;
 
-  // stiffness_damping β [s]: structural damping force −βKη̇.
-  FloatingFrameBody(Coords coords, double stiffness_damping)
-      : coords_(std::move(coords)), beta_(stiffness_damping), n_(static_cast<Eigen::Index>(coords_.size())) {}
+  // stiffness_damping β [s], mass_damping α [1/s]: structural damping force −(αM_ff + βK)η̇ on the
+  // elastic coordinates (the motion relative to the frame: a rigid motion is not damped).
+  FloatingFrameBody(Coords coords, double stiffness_damping, double mass_damping = 0.0)
+      : coords_(std::move(coords)), beta_(stiffness_damping), alpha_(mass_damping), n_(static_cast<Eigen::Index>(coords_.size())) {}
   BodyWorkspace workspace() const { return BodyWorkspace(n_); }
 
   Eigen::Index elastic_size() const { return n_; }
   Eigen::Index size() const { return 3 + n_; }
   const Coords& coords() const { return coords_; }
   double stiffness_damping() const { return beta_; }
+  double mass_damping() const { return alpha_; }
 
   BodyPoint point(double x) const {
     BodyPoint p;
@@ -179,7 +181,7 @@ class FloatingFrameBody {
   const ElasticMatrix& prestress_stiffness() const { return prestress_; }
   const ElasticMatrix& centrifugal_stiffness() const { return centrifugal_; }
 
-  // Adds −Kη − βKη̇ − K_σ η − θ̇² K_c η.
+  // Adds −Kη − βKη̇ − αM_ff η̇ − K_σ η − θ̇² K_c η.
   void add_elastic_force(ConstRef q, ConstRef v, Ref generalized) const {
     BodyWorkspace work(n_);
     add_elastic_force(q, v, generalized, work);
@@ -187,6 +189,7 @@ class FloatingFrameBody {
   void add_elastic_force(ConstRef q, ConstRef v, Ref generalized, BodyWorkspace& work) const {
     work.first = q.tail(n_) + beta_ * v.tail(n_);
     generalized.tail(n_).noalias() -= coords_.stiffness() * work.first;
+    if (alpha_ != 0.0) generalized.tail(n_).noalias() -= alpha_ * (coords_.mass_ff() * v.tail(n_));
     if (has_prestress()) generalized.tail(n_).noalias() -= prestress_ * q.tail(n_);
     if (has_centrifugal_stiffening()) {
       work.second.noalias() = centrifugal_ * q.tail(n_);
@@ -220,6 +223,10 @@ class FloatingFrameBody {
     assemble_mass_blocks(eta, a, perp(a_centroid), reference, coupling, work);
     work.first = eta + beta_ * eta_dot;
     force.tail(n_).noalias() -= coords_.stiffness() * work.first;
+    if (alpha_ != 0.0) {
+      work.second.noalias() = coords_.mass_ff() * eta_dot;
+      force.tail(n_).noalias() -= alpha_ * work.second;
+    }
     if (has_prestress()) force.tail(n_).noalias() -= prestress_ * eta;
     if (has_centrifugal_stiffening()) {
       work.second.noalias() = centrifugal_ * eta;
@@ -247,7 +254,7 @@ class FloatingFrameBody {
   //   −∂F_R/∂η = −θ̇² A S̄ + θ̈ A Ĩ S̄,  −∂F_R/∂η̇ = 2θ̇ A Ĩ S̄,
   //   −∂F_θ/∂η = 2θ̇ (M_ff η̇)ᵀ − gᵀ A Ĩ S̄ + R̈ᵀ A Ĩ S̄ + 2θ̈ (dᵀ + M_ff η)ᵀ − (S̃ a_η)ᵀ,
   //   −∂F_θ/∂η̇ = 2θ̇ (dᵀ + M_ff η)ᵀ,
-  //   −∂F_f/∂η = K + K_σ + θ̇² K_c − θ̇² M_ff − θ̈ S̃ᵀ,  −∂F_f/∂η̇ = βK + 2θ̇ S̃.
+  //   −∂F_f/∂η = K + K_σ + θ̇² K_c − θ̇² M_ff − θ̈ S̃ᵀ,  −∂F_f/∂η̇ = βK + αM_ff + 2θ̇ S̃.
   void add_elastic_derivatives(ConstRef q, ConstRef v, ConstRef a, const Eigen::Vector2d& gravity,
                                Eigen::Matrix<double, 3, Eigen::Dynamic>& stiffness_reference,
                                Eigen::Matrix<double, 3, Eigen::Dynamic>& damping_reference, solve::BorderedBandMatrix& stiffness,
@@ -276,6 +283,7 @@ class FloatingFrameBody {
     add_scaled(coords_.mass_ff(), -w * w, false, stiffness, offset);
     add_scaled(coords_.skew_ff(), -w_dot, true, stiffness, offset);
     add_scaled(coords_.stiffness(), beta_, false, damping, offset);
+    add_scaled(coords_.mass_ff(), alpha_, false, damping, offset);
     add_scaled(coords_.skew_ff(), 2.0 * w, false, damping, offset);
   }
 
@@ -338,6 +346,7 @@ class FloatingFrameBody {
 
   Coords coords_;
   double beta_;
+  double alpha_;
   ElasticMatrix prestress_;    // empty: no static stiffening
   ElasticMatrix centrifugal_;  // empty: no centrifugal stiffening
   Eigen::Index n_;

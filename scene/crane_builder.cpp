@@ -64,9 +64,13 @@ std::shared_ptr<const fem::BeamModel> boom_beam(const Scene& scene, int elements
   return std::make_shared<const fem::BeamModel>(fem::make_beam_model(mesh, reference));
 }
 
-double boom_stiffness_damping(const Scene& scene) {
-  const double omega1 = fem::analytic_bending_modes(scene.boom.mesh, fem::Boundary::clamped_free, 1)[0].angular_frequency;
-  return 2.0 * scene.boom.damping_ratio / omega1;
+BoomDamping boom_damping(const Scene& scene) {
+  const bool pinned = scene.boom.mount && scene.boom.mount->pinned;
+  const auto modes =
+      fem::analytic_bending_modes(scene.boom.mesh, pinned ? fem::Boundary::pinned_pinned : fem::Boundary::clamped_free, 2);
+  const double zeta = scene.boom.damping_ratio, omega1 = modes[0].angular_frequency, omega2 = modes[1].angular_frequency;
+  if (!scene.boom.rayleigh_damping) return {0.0, 2.0 * zeta / omega1};
+  return {2.0 * zeta * omega1 * omega2 / (omega1 + omega2), 2.0 * zeta / (omega1 + omega2)};
 }
 
 namespace {
@@ -225,7 +229,7 @@ multibody::CraneParameters<Coords> build_crane_parameters(const Scene& scene, Co
     scene_problem(scene, "hull", "", "a crane run needs [hull] (with [cargo], [wire] and boom.angle/root_x/root_y) or [hub]");
   }
   const Environment& env = scene.environment;
-  const double beta = boom_stiffness_damping(scene);
+  const BoomDamping damping = boom_damping(scene);
   // Geometric stiffening, assembled in nodal space on the coordinates' own mesh and projected.
   const fem::BeamModel& beam = coords_beam(coords);
   typename Coords::Matrix prestress, centrifugal;
@@ -236,7 +240,7 @@ multibody::CraneParameters<Coords> build_crane_parameters(const Scene& scene, Co
     centrifugal = coords.project(fem::assemble_geometric_stiffness(
         beam.mesh, beam.dofs, fem::centrifugal_axial_force(beam.mesh, centrifugal_hub_radius(scene))));
   }
-  multibody::FloatingFrameBody<Coords> boom(std::move(coords), beta);
+  multibody::FloatingFrameBody<Coords> boom(std::move(coords), damping.stiffness, damping.mass);
   if (prestress.size() > 0) boom.set_prestress_stiffness(std::move(prestress));
   if (centrifugal.size() > 0) boom.set_centrifugal_stiffness(std::move(centrifugal));
   multibody::BodyPoint tip = boom.point(scene.boom.mesh.length);

@@ -45,9 +45,16 @@ struct BoomChoice {
 std::shared_ptr<const fem::BeamModel> boom_beam(const Scene& scene, int elements,
                                                 fem::Boundary reference = fem::Boundary::clamped_free);
 
-// Stiffness-proportional structural damping β = 2ζ/ω1 with ω1 the analytic first clamped–free
-// bending frequency: the same for every mesh and coordinate choice, so models compare on equal terms.
-double boom_stiffness_damping(const Scene& scene);
+// The boom's structural damping −(αM_ff + βK)η̇ from boom.damping_ratio ζ at the analytic bending
+// frequencies ω1, ω2 of the boom as supported (clamped-free; pinned-pinned for a pinned heel, its tip
+// held by the luffing wires): stiffness-proportional α = 0, β = 2ζ/ω1; rayleigh α = 2ζω1ω2/(ω1 + ω2),
+// β = 2ζ/(ω1 + ω2). The same for every mesh and coordinate choice, so models compare on equal terms.
+struct BoomDamping {
+  double mass = 0.0;       // α [1/s]
+  double stiffness = 0.0;  // β [s]
+};
+BoomDamping boom_damping(const Scene& scene);
+inline double boom_stiffness_damping(const Scene& scene) { return boom_damping(scene).stiffness; }
 
 // Boom angle above the horizontal in the as-built posture (hull crane: boom.angle; hub: hub.angle).
 double boom_angle_at_rest(const Scene& scene);

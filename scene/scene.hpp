@@ -50,6 +50,7 @@ struct Boom {
   fem::BeamMesh mesh;                 // length, element count N and section (E, A, I, ρA)
   fem::Boundary boundary;             // for `ffrf modes`; the crane clamps the root
   double damping_ratio;               // structural, fraction of critical in the first mode [-]
+  bool rayleigh_damping = false;      // ζ in the first two modes (mass + stiffness), not the first alone
   std::optional<double> density;     // ρ [kg/m^3] when the scene gave it instead of ρA
   std::optional<BoomMount> mount;     // hull cranes: as given; hub scenes: (0, hub.radius, 0)
   Stiffening stiffening = Stiffening::none;

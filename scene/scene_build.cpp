@@ -61,6 +61,7 @@ Scene build_scene(const WrittenKeys& keys, const std::string& file, const SceneP
   scene.boom.mesh = fem::BeamMesh{keys.number(scene_key("boom.length")), static_cast<int>(keys.number(scene_key("boom.elements"))), section};
   scene.boom.boundary = boundary_of(keys.text(scene_key("boom.boundary")));
   scene.boom.damping_ratio = keys.number(scene_key("boom.damping_ratio"));
+  scene.boom.rayleigh_damping = keys.text(scene_key("boom.damping")) == "rayleigh";
   if (keys.has(scene_key("boom.density"))) scene.boom.density = keys.number(scene_key("boom.density"));
   scene.boom.stiffening = parse_stiffening(keys.text(scene_key("boom.stiffening"))).value_or(Stiffening::none);
   if (parts.crane) {

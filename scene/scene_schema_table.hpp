@@ -142,7 +142,12 @@ inline constexpr std::array kKeys{
            "paper's model) or pinned (a revolute joint: the boom is free to luff and is held by the [luffing] wires, "
            "as floating cranes are built)."),
     defaulted("boom.damping_ratio", ratio, kFraction, 0.0,
-              "Structural damping of the boom: fraction of critical in its first mode."),
+              "Structural damping of the boom: fraction of critical in its first bending mode as supported (clamped-free; "
+              "pinned-pinned for a pinned heel, the luffing wires holding the tip)."),
+    choice("boom.damping", "stiffness-proportional|rayleigh", "stiffness-proportional",
+           "The structural damping's form, the same operator in nodal and modal coordinates: stiffness-proportional "
+           "(βK: boom.damping_ratio in the first mode, more in higher ones) or rayleigh (αM + βK: boom.damping_ratio in "
+           "the first two modes, less between them, more above)."),
     choice("boom.stiffening", "none|static|centrifugal|both", "none",
            "Geometric (stress) stiffening of the boom: static = from the reference axial force of self-weight "
            "and cargo (compression softens), centrifugal = from the frame's angular velocity, updated during the "

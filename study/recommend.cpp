@@ -119,6 +119,23 @@ std::vector<Candidate> candidate_ladder(const scene::Scene& scene, const Recomme
                                              : estimate_reason(estimate);
     add_model(scene, r, forecast, choice, k + static_count, estimate, reason, modes, ladder);
   }
+  // A pinned boom: the chord frame's set too (docs/validation.md, "The pinned boom: which mode set?"),
+  // with one static mode fewer (the frame carries the tip's transverse load), the same estimates.
+  if (scene.boom.mount && scene.boom.mount->pinned) {
+    choice.mode_set = fem::Boundary::pinned_pinned;
+    for (int k = 1; k <= std::min(max_static_modes, dof - 1); ++k) {
+      choice.modes = k;
+      choice.static_modes = true;
+      const double next = k < static_cast<int>(r.modes.size())
+                              ? quasi_static_error(r.excitation_top, r.modes[static_cast<std::size_t>(k)].angular_frequency)
+                              : 0.0;
+      const double estimate = r.rigid_error * missing_flexibility(scene, r.modes, k) * next;
+      std::string reason = k < r.dynamic_modes ? fmt::format("drops mode {}, which the excitation drives dynamically", r.dynamic_modes)
+                                               : estimate_reason(estimate);
+      add_model(scene, r, forecast, choice, k + static_count - 1, estimate, reason, modes, ladder);
+    }
+    choice.mode_set = fem::Boundary::clamped_free;
+  }
   choice.kind = scene::BoomKind::nodal;
   choice.static_modes = false;
   for (const int n : nodal_meshes) {
