@@ -31,6 +31,10 @@ std::string summary(const scene::Scene& scene) {
   text = fmt::format("crane: hull {:g} t, {} at {:g} deg, cargo {:g} t, wire {:g} m", scene.hull->mass / 1e3, text,
                      scene.boom.mount->angle * 180.0 / 3.14159265358979323846, scene.cargo->mass / 1e3,
                      scene.wire->unstretched_length);
+  if (scene.boom.mount->pinned && scene.luffing) {
+    text += fmt::format(", heel pinned on {} luffing wire{} of {:g} N/m", scene.luffing->wires, scene.luffing->wires == 1 ? "" : "s",
+                        scene.luffing->stiffness);
+  }
   if (scene.wave) {
     text += fmt::format(", wave {:g} m / {:g} s {}", scene.wave->height, scene.wave->period,
                         scene.wave->direction == hydro::WaveHeading::following ? "following" : "head");

@@ -111,6 +111,8 @@ int run_sweep(const SweepOptions& options) {
     apply_radiation_option(*scene, options.radiation);
     // A [bem] scene: the radiation models are an axis of the grid, unless --radiation fixes one.
     request.radiation_axis = scene->bem.has_value() && options.radiation.empty();
+    // A pinned boom: the modal boom's mode set is an axis too.
+    request.mode_set_axis = scene->boom.mount && scene->boom.mount->pinned;
     request.stiffening = stiffening_option(options.stiffening);
     request.tolerance = parse_tolerance(options.tolerance);
     study::validate(request.reference);

@@ -1,6 +1,8 @@
 // Error metrics against a reference run (see header).
 #include "multibody/error_metrics.hpp"
 
+#include "multibody/output_channel_table.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,39 +11,15 @@
 
 namespace ffrf::multibody {
 
-std::string_view channel_name(OutputChannel channel) {
-  switch (channel) {
-    case OutputChannel::cargo_heave: return "cargo_heave";
-    case OutputChannel::cargo_pitch: return "cargo_pitch";
-    case OutputChannel::crane_heave: return "crane_heave";
-    case OutputChannel::crane_pitch: return "crane_pitch";
-    case OutputChannel::wire_tension: return "wire_tension";
-    case OutputChannel::tip_deflection: return "tip_deflection";
-    case OutputChannel::joint_moment: return "joint_moment";
-  }
-  return "?";
-}
+static_assert(channel_table::judged_rows_named(channel_table::channels, judged_names),
+              "each judged row of the output-channel table needs its OutputChannel enumerator (judged_names), and each "
+              "enumerator must name a judged row");
+static_assert(all_channels.size() == judged_names.size());
 
-namespace {
-
-// The table's row of each judged output, looked up by name once.
-std::array<const OutputChannelSpec*, all_channels.size()> judged_rows() {
-  std::array<const OutputChannelSpec*, all_channels.size()> rows{};
-  for (const OutputChannel channel : all_channels) {
-    const std::string_view name = channel_name(channel);
-    for (const OutputChannelSpec& spec : output_channels())
-      if (spec.name == name) rows[static_cast<std::size_t>(channel)] = &spec;
-    if (!rows[static_cast<std::size_t>(channel)])
-      throw std::logic_error("judged output " + std::string(name) + " is not in the output-channel table");
-  }
-  return rows;
-}
-
-}  // namespace
+std::string_view channel_name(OutputChannel channel) { return judged_names[static_cast<std::size_t>(channel)]; }
 
 const OutputChannelSpec& output_channel(OutputChannel channel) {
-  static const std::array<const OutputChannelSpec*, all_channels.size()> rows = judged_rows();
-  return *rows[static_cast<std::size_t>(channel)];
+  return channel_table::channels[channel_table::row_of(channel_name(channel))];
 }
 
 std::string_view channel_unit(OutputChannel channel) { return output_channel(channel).si_unit; }

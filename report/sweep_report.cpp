@@ -275,10 +275,12 @@ std::string sweep_json(const std::vector<SweepRow>& rows, const SweepFacts& fact
 
 std::string pareto_text(const std::vector<SweepRow>& rows, const SweepFacts& facts) {
   const study::Verdict verdict = sweep_verdict(rows, facts);
-  std::string t = fmt::format("{:>4}  {:<26} {:<28} {:>11} {:>10} {:>7} {:>7}\n", "id", "model", "integrator", "worst error",
-                              "wall [s]", "x wall", "x work");
+  std::size_t width = 26;  // the model column: as wide as the longest label on the front
+  for (std::size_t i : pareto_front(rows)) width = std::max(width, rows[i].model.size());
+  std::string t = fmt::format("{:>4}  {:<{}} {:<28} {:>11} {:>10} {:>7} {:>7}\n", "id", "model", width, "integrator",
+                              "worst error", "wall [s]", "x wall", "x work");
   for (std::size_t i : pareto_front(rows)) {
-    t += fmt::format("{:>4}  {:<26} {:<28} {:>11.3e} {:>10.3g} {:>7} {:>7}\n", rows[i].id, rows[i].model, rows[i].settings(),
+    t += fmt::format("{:>4}  {:<{}} {:<28} {:>11.3e} {:>10.3g} {:>7} {:>7}\n", rows[i].id, rows[i].model, width, rows[i].settings(),
                      *rows[i].worst, *rows[i].wall, speedup_cell(verdict.models[i].wall_speedup),
                      speedup_cell(verdict.models[i].work_speedup));
   }

@@ -115,7 +115,8 @@ SweepStudy sweep_reference(const scene::Scene& scene, const SweepRequest& reques
 
 std::vector<SweepConfig> sweep_configurations(const SweepRequest& request) {
   std::vector<SweepConfig> configs;
-  for (const SweepConfig& config : sweep_grid(request.grid, request.radiation_axis, model_choice_rtol(request.tolerance))) {
+  for (const SweepConfig& config :
+       sweep_grid(request.grid, request.radiation_axis, model_choice_rtol(request.tolerance), request.mode_set_axis)) {
     if (in_shard(config, request.shard)) configs.push_back(config);
   }
   return configs;

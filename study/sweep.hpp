@@ -54,6 +54,9 @@ struct SweepRequest {
   // A scene with [bem]: the grid crossed with the radiation models, the reference with
   // the Cummins convolution. Throws scene::SceneError when the scene has no [bem].
   bool radiation_axis = false;
+  // A boom pinned at its heel: the modal models also with the chord frame's pinned-pinned mode set
+  // (appended: the other configurations keep their ids).
+  bool mode_set_axis = false;
 };
 
 struct SweepStudy {

@@ -20,7 +20,8 @@ SweepOnEngine sweep_on_engine(distributed::Session& session, const scene::Scene&
   out.study = sweep_scene(scene, request);
   scene::CraneModelCache models(out.study.scene, &modes);  // this process's shared models: the reference's and the tasks'
   measure_reference(out.study, request, models);
-  const std::vector<SweepConfig> grid = sweep_grid(request.grid, request.radiation_axis, model_choice_rtol(request.tolerance));
+  const std::vector<SweepConfig> grid =
+      sweep_grid(request.grid, request.radiation_axis, model_choice_rtol(request.tolerance), request.mode_set_axis);
   std::vector<std::string> keys;
   for (const SweepConfig& config : grid) {
     keys.push_back(fmt::format("id={} {} {}{}", config.id, config.choice.label(), integrator_label(config),

@@ -74,7 +74,7 @@ std::string grid_description(SweepGrid grid) {
   return text;
 }
 
-std::vector<SweepConfig> sweep_grid(SweepGrid grid, bool radiation_axis, double choice_rtol) {
+std::vector<SweepConfig> sweep_grid(SweepGrid grid, bool radiation_axis, double choice_rtol, bool mode_set_axis) {
   GridSpec s = spec(grid);
   // The adaptive integrators also run at the model-choice rtol (the one the verdict names its
   // cheapest model from), appended when the grid lacks it: the default grids have 1e-6, τ = 1 %'s.
@@ -86,7 +86,16 @@ std::vector<SweepConfig> sweep_grid(SweepGrid grid, bool radiation_axis, double 
   auto add = [&](const BoomChoice& choice, Integrator integrator, double rtol, double step, double factor) {
     configs.push_back({static_cast<int>(configs.size()), choice, integrator, rtol, step, factor, std::nullopt});
   };
-  const std::vector<BoomChoice> list = models(s);
+  std::vector<BoomChoice> list = models(s);
+  if (mode_set_axis) {
+    const std::size_t plain = list.size();
+    for (std::size_t i = 0; i < plain; ++i) {
+      if (list[i].kind != BoomKind::modal) continue;
+      BoomChoice chord = list[i];
+      chord.mode_set = fem::Boundary::pinned_pinned;
+      list.push_back(chord);
+    }
+  }
   for (const BoomChoice& choice : list) {
     for (Integrator integrator : s.adaptive) {
       for (double rtol : s.tolerances) add(choice, integrator, rtol, 0.0, 0.0);
