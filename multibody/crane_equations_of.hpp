@@ -191,5 +191,6 @@ class CraneEquationsOf final : public CraneEquations {
 }  // namespace ffrf::multibody::detail
 
 #include "multibody/crane_equations_minimal.ipp"
+#include "multibody/crane_equations_wires.ipp"
 #include "multibody/crane_equations_full.ipp"
 #include "multibody/crane_equations_jacobian.ipp"

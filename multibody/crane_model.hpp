@@ -1,7 +1,8 @@
 // The crane's model and its equations, one name per role (Pinocchio's Model/Data, so threads share
 // one model):
-//  * CraneParameters<Coords> (multibody/crane_parameters.hpp): what the crane is — hull, boom over
-//    its elastic coordinates, mount, cargo, wire, waters — as built from a scene;
+//  * CraneParameters<Coords> (multibody/crane_parameters.hpp): what the crane is — its bodies (hull,
+//    boom over its elastic coordinates, cargo), its connectors (the heel joint, the wires), waters —
+//    as built from a scene;
 //  * CraneModel (here): the immutable model — the parameters and what follows from them alone (the
 //    factorization of M_ff, M_ff⁻¹S̄ᵀ and M_ff⁻¹cᵀ, the Newton blocks' structure, the wire's tip
 //    columns, coordinate scales), computed once by make_crane_model and shared by any number of
@@ -9,8 +10,9 @@
 //  * CraneEquations (multibody/crane_equations.hpp): the equations on one workspace (what one
 //    evaluation fills) and one run state (the radiation memory's history), made by
 //    CraneModel::equations(); implemented by CraneEquationsOf<Coords>
-//    (multibody/crane_equations_of.hpp: loads on the three bodies, the minimal-coordinate ODE with
-//    the boom frame eliminated through the clamp at B — velocity transformation q̇_B = J ż,
+//    (multibody/crane_equations_of.hpp: loads on the three bodies and the wires between them, the
+//    minimal-coordinate ODE with the boom frame eliminated through the heel joint at B (a clamp, or a
+//    pin that leaves the luffing angle) — velocity transformation q̇_B = J ż,
 //    M_z = JᵀMJ, Q_z = Jᵀ(Q − M J̇ż); Shabana 2005 §6 — solved by a Schur complement on the constant
 //    elastic mass M_ff, and the full-coordinate DAE pieces, paper eqs. 22, 31–34).
 // scene/crane_builder.hpp makes each from a scene: build_crane_parameters, build_crane_model,

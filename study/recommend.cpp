@@ -108,21 +108,9 @@ std::vector<Candidate> candidate_ladder(const scene::Scene& scene, const Recomme
                                              : estimate_reason(estimate);
     add_model(scene, r, forecast, choice, k, estimate, reason, modes, ladder);
   }
-  for (int k = 1; k <= std::min(max_static_modes, dof - 1); ++k) {
-    choice.modes = k;
-    choice.static_modes = true;
-    const double next = k < static_cast<int>(r.modes.size())
-                            ? quasi_static_error(r.excitation_top, r.modes[static_cast<std::size_t>(k)].angular_frequency)
-                            : 0.0;
-    const double estimate = r.rigid_error * missing_flexibility(scene, r.modes, k) * next;
-    std::string reason = k < r.dynamic_modes ? fmt::format("drops mode {}, which the excitation drives dynamically", r.dynamic_modes)
-                                             : estimate_reason(estimate);
-    add_model(scene, r, forecast, choice, k + static_count, estimate, reason, modes, ladder);
-  }
-  // A pinned boom: the chord frame's set too (docs/validation.md, "The pinned boom: which mode set?"),
-  // with one static mode fewer (the frame carries the tip's transverse load), the same estimates.
-  if (scene.boom.mount && scene.boom.mount->pinned) {
-    choice.mode_set = fem::Boundary::pinned_pinned;
+  // The static-mode models of a mode set with `statics` static modes.
+  const auto add_static_mode_models = [&](fem::Boundary set, int statics) {
+    choice.mode_set = set;
     for (int k = 1; k <= std::min(max_static_modes, dof - 1); ++k) {
       choice.modes = k;
       choice.static_modes = true;
@@ -132,10 +120,14 @@ std::vector<Candidate> candidate_ladder(const scene::Scene& scene, const Recomme
       const double estimate = r.rigid_error * missing_flexibility(scene, r.modes, k) * next;
       std::string reason = k < r.dynamic_modes ? fmt::format("drops mode {}, which the excitation drives dynamically", r.dynamic_modes)
                                                : estimate_reason(estimate);
-      add_model(scene, r, forecast, choice, k + static_count - 1, estimate, reason, modes, ladder);
+      add_model(scene, r, forecast, choice, k + statics, estimate, reason, modes, ladder);
     }
     choice.mode_set = fem::Boundary::clamped_free;
-  }
+  };
+  add_static_mode_models(fem::Boundary::clamped_free, static_count);
+  // A pinned boom: the chord frame's set too (docs/validation.md, "The pinned boom: which mode set?"),
+  // with one static mode fewer (the frame carries the tip's transverse load), the same estimates.
+  if (scene.boom.mount && scene.boom.mount->pinned) add_static_mode_models(fem::Boundary::pinned_pinned, static_count - 1);
   choice.kind = scene::BoomKind::nodal;
   choice.static_modes = false;
   for (const int n : nodal_meshes) {
