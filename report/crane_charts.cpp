@@ -17,7 +17,7 @@
 namespace ffrf::report {
 namespace {
 
-enum class Needs { hull, cargo, wire, boom };
+enum class Needs { hull, cargo, wire, luffing, boom };
 
 struct Chart {
   const char* name;
@@ -36,6 +36,8 @@ constexpr std::array charts{
     Chart{"cargo_heave", "Cargo heave (G2) about its static equilibrium", "heave [m]", "m", "cargo_heave_m", 1.0, Needs::cargo},
     Chart{"cargo_pitch", "Cargo pitch about its static equilibrium", "pitch [deg]", "deg", "cargo_pitch_deg", 1.0, Needs::cargo},
     Chart{"wire_tension", "Wire rope tension", "tension [MN]", "MN", "wire_tension_N", 1e-6, Needs::wire},
+    Chart{"luffing_tension", "Luffing wires' tension (all together)", "tension [MN]", "MN", "luffing_tension_N", 1e-6,
+          Needs::luffing},
     Chart{"tip_transverse", "Boom tip transverse elastic deflection (boom frame)", "deflection [m]", "m", "tip_transverse_m",
           1.0, Needs::boom},
     Chart{"tip_axial", "Boom tip axial elastic deflection (boom frame)", "deflection [mm]", "mm", "tip_axial_m", 1e3,
@@ -112,7 +114,8 @@ std::vector<std::string> crane_chart_names(const scene::Scene& scene) {
   std::vector<std::string> names;
   for (const Chart& c : charts) {
     const bool applies = c.needs == Needs::boom || (c.needs == Needs::hull && scene.hull) ||
-                         (c.needs == Needs::cargo && scene.cargo) || (c.needs == Needs::wire && scene.wire);
+                         (c.needs == Needs::cargo && scene.cargo) || (c.needs == Needs::wire && scene.wire) ||
+                         (c.needs == Needs::luffing && scene.luffing && scene.boom.mount && scene.boom.mount->pinned);
     if (applies) names.emplace_back(c.name);
   }
   return names;
