@@ -120,11 +120,7 @@ void CraneEquationsOf<Coords, Pinned>::constraint_rate_terms(double t, ConstRef 
 template <fem::ElasticCoordinates Coords, bool Pinned>
 void CraneEquationsOf<Coords, Pinned>::wire_stretches_full(double t, ConstRef q, Ref stretch) {
   set_full_state(t, q, q);  // (the velocities are not read)
-  for (std::size_t i = 0; i < m_.wires.size(); ++i) {
-    const WireConnector& wire = m_.wires[i];
-    const EndMotion from = end_motion(wire.from), to = end_motion(wire.to);
-    stretch(static_cast<Eigen::Index>(i)) = (to.position(wire.to.body) - from.position(wire.from.body)).norm() - wire.rope.unstretched_length;
-  }
+  wire_stretches(stretch);
 }
 
 template <fem::ElasticCoordinates Coords, bool Pinned>

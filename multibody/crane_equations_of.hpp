@@ -119,6 +119,8 @@ class CraneEquationsOf final : public CraneEquations {
     const Eigen::Vector2d& velocity(Body body) const { return body == Body::boom ? boom.velocity : rigid.velocity; }
   };
   EndMotion end_motion(const BodyAttachment& end) const;
+  // Every wire's stretch ℓ − L0 for the current body states (set_minimal_state or set_full_state).
+  void wire_stretches(Ref stretch) const;
   void add_end_force(const BodyAttachment& end, const EndMotion& motion, const Eigen::Vector2d& force, Ref boom,
                      Eigen::Vector3d& hull, Eigen::Vector3d& cargo) const;
   // Minimal-coordinate residual Q_z − M_z a at (t, z, ż) with a given (all loads), and the wires'

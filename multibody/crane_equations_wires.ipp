@@ -44,6 +44,11 @@ void CraneEquationsOf<Coords, Pinned>::add_wire_loads(bool bilateral, Ref boom, 
 template <fem::ElasticCoordinates Coords, bool Pinned>
 void CraneEquationsOf<Coords, Pinned>::wire_stretches_minimal(double t, ConstRef z, Ref stretch) {
   set_minimal_state(t, z, z, false);
+  wire_stretches(stretch);
+}
+
+template <fem::ElasticCoordinates Coords, bool Pinned>
+void CraneEquationsOf<Coords, Pinned>::wire_stretches(Ref stretch) const {
   for (std::size_t i = 0; i < m_.wires.size(); ++i) {
     const WireConnector& wire = m_.wires[i];
     const EndMotion from = end_motion(wire.from), to = end_motion(wire.to);
