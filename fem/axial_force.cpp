@@ -54,19 +54,23 @@ AxialForce centrifugal_axial_force(const BeamMesh& mesh, double hub_radius) {
   return [=](double x) { return rho_a * (hub_radius * (length - x) + 0.5 * (length - x) * (length + x)); };
 }
 
+Eigen::Matrix<double, 6, 6> element_geometric_stiffness(const BeamMesh& mesh, int e, const AxialForce& axial_force) {
+  const double l = mesh.element_length();
+  ElementMatrix local = ElementMatrix::Zero();
+  for (const GaussPoint& p : gauss_legendre_4()) {
+    const Eigen::Matrix<double, 1, 6> slope = element_shape_slope(p.xi, l).row(1);
+    const double force = axial_force(mesh.node_position(e) + p.xi * l);
+    local.noalias() += (p.weight * l * force) * slope.transpose() * slope;
+  }
+  return local;
+}
+
 Eigen::SparseMatrix<double> assemble_geometric_stiffness(const BeamMesh& mesh, const DofMap& dofs,
                                                          const AxialForce& axial_force) {
-  const double l = mesh.element_length();
-  const auto points = gauss_legendre_4();
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(static_cast<std::size_t>(16 * mesh.element_count));
   for (int e = 0; e < mesh.element_count; ++e) {
-    ElementMatrix local = ElementMatrix::Zero();
-    for (const GaussPoint& p : points) {
-      const Eigen::Matrix<double, 1, 6> slope = element_shape_slope(p.xi, l).row(1);
-      const double force = axial_force(mesh.node_position(e) + p.xi * l);
-      local.noalias() += (p.weight * l * force) * slope.transpose() * slope;
-    }
+    const ElementMatrix local = element_geometric_stiffness(mesh, e, axial_force);
     for (int i = 0; i < 6; ++i) {
       for (int j = 0; j < 6; ++j) {
         if (local(i, j) != 0.0) entries.emplace_back(node_dofs * e + i, node_dofs * e + j, local(i, j));

@@ -34,5 +34,7 @@ AxialForce centrifugal_axial_force(const BeamMesh& mesh, double hub_radius);
 // fem/assembly.cpp and restricted to `dofs`.
 Eigen::SparseMatrix<double> assemble_geometric_stiffness(const BeamMesh& mesh, const DofMap& dofs,
                                                          const AxialForce& axial_force);
+// One element's share of it, over its six DOFs.
+Eigen::Matrix<double, 6, 6> element_geometric_stiffness(const BeamMesh& mesh, int element, const AxialForce& axial_force);
 
 }  // namespace ffrf::fem

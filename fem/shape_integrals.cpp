@@ -28,6 +28,29 @@ std::array<GaussPoint, 4> gauss4() {
 
 }  // namespace
 
+ElementInvariants element_invariants(const BeamMesh& mesh, int element) {
+  const double l = mesh.element_length();
+  const double rho = mesh.section.mass_per_length;
+  const double x0 = element * l;
+  ElementInvariants inv;
+  inv.shape_integral.setZero();
+  inv.u0_dot_shape.setZero();
+  inv.u0_cross_shape.setZero();
+  inv.mass.setZero();
+  inv.skew.setZero();
+  for (const GaussPoint& gp : gauss4()) {
+    const ElementShape s = element_shape(gp.xi, l);
+    const double w = rho * l * gp.weight;
+    const double x = x0 + gp.xi * l;
+    inv.shape_integral += w * s;
+    inv.u0_dot_shape += (w * x) * s.row(0);
+    inv.u0_cross_shape -= (w * x) * s.row(1);  // ĨS = [−S_v; S_u], so ū0ᵀĨS = −x S_v
+    inv.mass += w * s.transpose() * s;
+    inv.skew += w * (s.row(1).transpose() * s.row(0) - s.row(0).transpose() * s.row(1));
+  }
+  return inv;
+}
+
 NodalInvariants nodal_invariants(const BeamMesh& mesh, const DofMap& dofs) {
   const int n = dofs.free_count();
   const double l = mesh.element_length();
@@ -38,39 +61,24 @@ NodalInvariants nodal_invariants(const BeamMesh& mesh, const DofMap& dofs) {
   inv.u0_cross_shape = Eigen::RowVectorXd::Zero(n);
   std::vector<Eigen::Triplet<double>> mass_entries;
   std::vector<Eigen::Triplet<double>> skew_entries;
-  const auto points = gauss4();
 
   for (int e = 0; e < mesh.element_count; ++e) {
     const double x0 = e * l;
-    Eigen::Matrix<double, 2, 6> s_bar = Eigen::Matrix<double, 2, 6>::Zero();    // ∫ρ S
-    Eigen::Matrix<double, 1, 6> d_bar = Eigen::Matrix<double, 1, 6>::Zero();    // ∫ρ x S_u
-    Eigen::Matrix<double, 1, 6> c_bar = Eigen::Matrix<double, 1, 6>::Zero();    // ∫ρ ū0ᵀĨS
-    ElementMatrix m_bar = ElementMatrix::Zero();    // ∫ρ SᵀS
-    ElementMatrix k_bar = ElementMatrix::Zero();    // ∫ρ SᵀĨS
-    for (const GaussPoint& gp : points) {
-      const ElementShape s = element_shape(gp.xi, l);
-      const double w = rho * l * gp.weight;
-      const double x = x0 + gp.xi * l;
-      s_bar += w * s;
-      d_bar += (w * x) * s.row(0);
-      c_bar -= (w * x) * s.row(1);  // ĨS = [−S_v; S_u], so ū0ᵀĨS = −x S_v
-      m_bar += w * s.transpose() * s;
-      k_bar += w * (s.row(1).transpose() * s.row(0) - s.row(0).transpose() * s.row(1));
-    }
+    const ElementInvariants element = element_invariants(mesh, e);
     inv.mass += rho * l;
     inv.first_moment(0) += rho * (x0 * l + 0.5 * l * l);
     inv.second_moment += rho * ((x0 + l) * (x0 + l) * (x0 + l) - x0 * x0 * x0) / 3.0;
     for (int i = 0; i < 6; ++i) {
       const int fi = dofs.full_to_free[static_cast<std::size_t>(node_dofs * e + i)];
       if (fi < 0) continue;
-      inv.shape_integral.col(fi) += s_bar.col(i);
-      inv.u0_dot_shape(fi) += d_bar(i);
-      inv.u0_cross_shape(fi) += c_bar(i);
+      inv.shape_integral.col(fi) += element.shape_integral.col(i);
+      inv.u0_dot_shape(fi) += element.u0_dot_shape(i);
+      inv.u0_cross_shape(fi) += element.u0_cross_shape(i);
       for (int j = 0; j < 6; ++j) {
         const int fj = dofs.full_to_free[static_cast<std::size_t>(node_dofs * e + j)];
         if (fj < 0) continue;
-        if (m_bar(i, j) != 0.0) mass_entries.emplace_back(fi, fj, m_bar(i, j));
-        if (k_bar(i, j) != 0.0) skew_entries.emplace_back(fi, fj, k_bar(i, j));
+        if (element.mass(i, j) != 0.0) mass_entries.emplace_back(fi, fj, element.mass(i, j));
+        if (element.skew(i, j) != 0.0) skew_entries.emplace_back(fi, fj, element.skew(i, j));
       }
     }
   }

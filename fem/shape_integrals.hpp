@@ -34,4 +34,15 @@ struct NodalInvariants {
 
 NodalInvariants nodal_invariants(const BeamMesh& mesh, const DofMap& dofs);
 
+// One element's share of the invariants above, over its six DOFs (u1, v1, φ1, u2, v2, φ2): their sum
+// over the elements, restricted to the free DOFs, is the beam's.
+struct ElementInvariants {
+  Eigen::Matrix<double, 2, 6> shape_integral;  // ∫ρ S_e
+  Eigen::Matrix<double, 1, 6> u0_dot_shape;    // ∫ρ ū0ᵀ S_e
+  Eigen::Matrix<double, 1, 6> u0_cross_shape;  // ∫ρ ū0ᵀ Ĩ S_e
+  Eigen::Matrix<double, 6, 6> mass;            // ∫ρ S_eᵀ S_e
+  Eigen::Matrix<double, 6, 6> skew;            // ∫ρ S_eᵀ Ĩ S_e
+};
+ElementInvariants element_invariants(const BeamMesh& mesh, int element);
+
 }  // namespace ffrf::fem
