@@ -41,6 +41,7 @@ class ModalCoordinates {
 
   const ModalBasis& basis() const { return basis_; }
   const fem::BeamModel& beam() const { return *beam_; }
+  const std::shared_ptr<const fem::BeamModel>& beam_model() const { return beam_; }
 
  private:
   std::shared_ptr<const fem::BeamModel> beam_;

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -47,7 +48,17 @@ struct CraneOutputs {
   double strain_energy = 0.0;                            // [J]
   double wire_energy = 0.0;                              // [J]
   double spring_energy = 0.0;                            // mooring + support springs [J]
+  // Stresses along the boom (multibody/boom_stress.hpp; zero without a stress model): the largest
+  // extreme-fibre stress over the sections by the model's recovery, where it sits, its ratio to the
+  // allowable stress (0 without one), and the peak by each recovery (mode displacement, mode
+  // acceleration; equal for nodal coordinates).
+  double boom_peak_stress = 0.0;           // [Pa]
+  double boom_peak_stress_position = 0.0;  // x along the boom from B [m]
+  double boom_stress_utilisation = 0.0;    // [-]
+  std::array<double, 2> boom_peak_stress_by{};  // [Pa], by StressRecovery
 };
+
+struct BoomStressProfile;  // multibody/boom_stress_profile.hpp
 
 // How this system's hull loads read the incident wave so far: from the record of the sea, or by
 // the exact component sums where the record could not answer (outside its patches or its time).
@@ -90,6 +101,9 @@ class CraneEquations : public solve::SecondOrderSystem {
   virtual int heel_offset() const { return -1; }
   // Elastic coordinate count (0 for the rigid boom).
   virtual int elastic_size() const = 0;
+  // The stresses along the boom at the last output sample, by the model's recovery (nullptr when the
+  // model recovers none).
+  virtual const BoomStressProfile* boom_stress_profile() const { return nullptr; }
   // Hull-load evaluations in a wave so far, by path (zeros without a wave).
   virtual HullLoadCounts hull_load_counts() const { return {}; }
   // The record of the sea the hull loads read (nullptr: component sums), and why not when absent.

@@ -134,6 +134,11 @@ CraneOutputs CraneEquationsOf<Coords, Pinned>::full_outputs(double t, ConstRef q
   Eigen::Vector3d c = Eigen::Vector3d::Zero();
   constraint(t, q, c.head(constraint_count()));
   out.constraint_residual = c.head<2>().norm() + std::abs(c(2)) * m_.boom_tip.undeformed.x();
+  if (m_.stress) {
+    Eigen::VectorXd elastic_acceleration;
+    const Eigen::Vector3d frame_acceleration = full_boom_accelerations(lambda, elastic_acceleration);
+    add_boom_stress(frame_acceleration, elastic_acceleration, out);
+  }
   return out;
 }
 

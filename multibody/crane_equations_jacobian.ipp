@@ -246,6 +246,7 @@ CraneOutputs CraneEquationsOf<Coords, Pinned>::minimal_outputs_with_acceleration
   out.joint_reaction = joint_reaction_;
   out.root_axial_force = root_axial_force(joint_reaction_, boom_q_(2));
   out.constraint_residual = 0.0;
+  add_boom_stress(frame_a, z_ddot.tail(n_), out);
   return out;
 }
 

@@ -265,6 +265,7 @@ void CraneEquationsOf<Coords, Pinned>::minimal_accelerations(double t, ConstRef 
   if (r > 0) add_frame_acceleration(rigid_a, frame_a);
   joint_reaction_ = boom_reference_mass_ * frame_a - boom_force_.head<3>();
   if (n_ > 0) joint_reaction_ += boom_coupling_ * z_ddot.tail(n_);
+  frame_acceleration_ = frame_a;
 }
 
 template <fem::ElasticCoordinates Coords, bool Pinned>
@@ -339,6 +340,7 @@ CraneOutputs CraneEquationsOf<Coords, Pinned>::minimal_outputs(double t, ConstRe
   out.joint_reaction = joint_reaction_;
   out.root_axial_force = root_axial_force(joint_reaction_, boom_q_(2));
   out.constraint_residual = 0.0;
+  add_boom_stress(frame_acceleration_, z_ddot.tail(n_), out);
   return out;
 }
 

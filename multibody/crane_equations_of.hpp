@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "multibody/boom_stress.hpp"
 #include "multibody/crane_model_of.hpp"
 #include "sea/excitation_record.hpp"
 #include "sea/hull_pressure_recorded.hpp"
@@ -64,6 +65,7 @@ class CraneEquationsOf final : public CraneEquations {
   int full_jacobian_evaluations() const override { return 2 * (layout_.frame + 3) + 1; }
   void full_jacobian(double t, ConstRef q, ConstRef v, ConstRef v_dot, SecondOrderJacobian& out) override;
   CraneOutputs minimal_outputs_with_accelerations(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot) override;
+  const BoomStressProfile* boom_stress_profile() const override;
 
  private:
   // The rigid minimal coordinates that move the boom frame — the hull's (3, when it floats), the
@@ -151,6 +153,13 @@ class CraneEquationsOf final : public CraneEquations {
     return -(reaction.x() * std::cos(frame_angle) + reaction.y() * std::sin(frame_angle));
   }
   CraneOutputs common_outputs();
+  // The stresses along the boom for the current body states and wires (after a load evaluation), the
+  // frame's acceleration and the elastic accelerations: both recoveries' peaks into `out`, the
+  // model's own as its channels and profile (crane_equations_stress.ipp).
+  void add_boom_stress(const Eigen::Vector3d& frame_acceleration, ConstRef elastic_acceleration, CraneOutputs& out);
+  // In full coordinates: the boom's accelerations from its loads and the heel's multipliers λ (the
+  // frame's into the return value, the elastic ones into `elastic_acceleration`), for the stresses.
+  Eigen::Vector3d full_boom_accelerations(ConstRef lambda, Eigen::VectorXd& elastic_acceleration) const;
 
   // The shared model (read-only) and, for brevity, its CraneParameters and layout.
   std::shared_ptr<const CraneModelOf<Coords>> shared_;
@@ -180,6 +189,12 @@ class CraneEquationsOf final : public CraneEquations {
   // prescribed acceleration of a driven base.
   Eigen::Vector3d frame_known_acc_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d joint_reaction_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d frame_acceleration_ = Eigen::Vector3d::Zero();  // (R̈_B, θ̈_B) of the last minimal accelerations
+  // The stresses' workspace: the boom's motion, the wires' pulls on it, one profile per recovery.
+  BoomMotion stress_motion_;
+  std::vector<BoomPointLoad> boom_loads_;
+  BoomStressWorkspace stress_work_;
+  std::array<BoomStressProfile, 2> stress_profiles_;
   std::vector<WireState> wires_;  // each wire's state at the last load evaluation
   sea::WavePolynomials wave_polynomials_;  // the recorded sea at one time (sized on first use)
   HullLoadCounts hull_load_counts_;
@@ -195,4 +210,5 @@ class CraneEquationsOf final : public CraneEquations {
 #include "multibody/crane_equations_minimal.ipp"
 #include "multibody/crane_equations_wires.ipp"
 #include "multibody/crane_equations_full.ipp"
+#include "multibody/crane_equations_stress.ipp"
 #include "multibody/crane_equations_jacobian.ipp"

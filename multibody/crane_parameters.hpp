@@ -27,6 +27,8 @@ class ExcitationRecord;    // sea/excitation_record.hpp
 
 namespace ffrf::multibody {
 
+struct BoomStressModel;  // multibody/boom_stress.hpp
+
 struct HullModel {
   double mass = 0.0;                                        // without the boom [kg]
   double pitch_inertia = 0.0;                               // about G1 [kg m²]
@@ -115,6 +117,8 @@ struct CraneParameters {
   double gravity = 9.81;
   double water_density = 1025.0;
   std::optional<sea::WaveField> wave;  // empty: calm water
+  // How the stresses along the boom are recovered at each output (multibody/boom_stress.hpp); empty: none.
+  std::shared_ptr<const BoomStressModel> stress;
 };
 
 }  // namespace ffrf::multibody

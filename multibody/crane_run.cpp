@@ -28,6 +28,7 @@ class CraneRecorder final : public solve::OutputSink {
  private:
   void keep(double t, const CraneOutputs& sample) {
     result_.samples.push_back(sample);
+    if (const BoomStressProfile* profile = equations_.boom_stress_profile()) result_.boom_stress.add(t, *profile);
     watch_.observe(t, result_.samples.back());
   }
 
@@ -65,6 +66,7 @@ RunResult simulate(CraneEquations& equations, const Eigen::VectorXd& z0, const R
     if (failure.partial() != nullptr) {
       auto partial = std::make_shared<RunResult>();
       partial->samples = std::move(result.samples);
+      partial->boom_stress = std::move(result.boom_stress);
       take_record(solve::IntegrationRecord(*failure.partial()), equations, *partial);
       failure.attach_partial(std::move(partial));
     }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "multibody/boom_stress_profile.hpp"
 #include "multibody/crane_equations.hpp"
 #include "multibody/run_monitor.hpp"
 #include "solve/integration.hpp"
@@ -37,6 +38,8 @@ struct RunResult : solve::IntegrationRecord {
   std::vector<WireEvent> luffing_events;  // every other wire's: a pinned boom's luffing wires
   std::vector<std::string> wire_names;    // by wire index
   std::vector<Detection> detections;
+  // The stresses along the boom over the samples, by the model's recovery (empty when it recovers none).
+  BoomStressEnvelope boom_stress;
 };
 
 // Integrates `equations` from z0 at rest with settings.kind (solve::integrate), sampling the crane's

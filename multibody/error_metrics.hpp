@@ -18,12 +18,15 @@ namespace ffrf::multibody {
 // named here for the code that indexes the verdicts' errors by them. Each enumerator is its row's
 // name, and every judged row has one: multibody/error_metrics.cpp checks both at compile time, so a
 // judged row added to the table without its enumerator (or the reverse) does not compile.
-enum class OutputChannel { cargo_heave, cargo_pitch, crane_heave, crane_pitch, wire_tension, tip_deflection, joint_moment };
-inline constexpr std::array<OutputChannel, 7> all_channels{
-    OutputChannel::cargo_heave,  OutputChannel::cargo_pitch,    OutputChannel::crane_heave, OutputChannel::crane_pitch,
-    OutputChannel::wire_tension, OutputChannel::tip_deflection, OutputChannel::joint_moment};
+enum class OutputChannel {
+  cargo_heave, cargo_pitch, crane_heave, crane_pitch, wire_tension, tip_deflection, joint_moment, boom_peak_stress
+};
+inline constexpr std::array<OutputChannel, 8> all_channels{
+    OutputChannel::cargo_heave,    OutputChannel::cargo_pitch,  OutputChannel::crane_heave,
+    OutputChannel::crane_pitch,    OutputChannel::wire_tension, OutputChannel::tip_deflection,
+    OutputChannel::joint_moment,   OutputChannel::boom_peak_stress};
 inline constexpr std::array<std::string_view, all_channels.size()> judged_names{
-    "cargo_heave", "cargo_pitch", "crane_heave", "crane_pitch", "wire_tension", "tip_deflection", "joint_moment"};
+    "cargo_heave", "cargo_pitch", "crane_heave", "crane_pitch", "wire_tension", "tip_deflection", "joint_moment", "boom_peak_stress"};
 
 // Its unit and value come from its row.
 std::string_view channel_name(OutputChannel channel);  // "cargo_heave", ...

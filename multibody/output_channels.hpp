@@ -13,6 +13,13 @@
 
 namespace ffrf::multibody {
 
+// Which models' verdicts judge a channel (a set of these bits; 0: none). A hub scene's beam is judged
+// by its tip deflection; a crane by its motions and loads, and its boom by the load its heel makes it
+// carry — the root moment of a clamped boom, the peak fibre stress of a pinned one (a pin carries no
+// moment: its "root moment" samples are the integrator's round-off).
+inline constexpr unsigned judged_for_hub = 1, judged_for_clamped_crane = 2, judged_for_pinned_crane = 4,
+                          judged_for_crane = judged_for_clamped_crane | judged_for_pinned_crane;
+
 struct OutputChannelSpec {
   std::string_view name;     // "cargo_heave": the channel (judged outputs, baselines, JSON)
   std::string_view column;   // "cargo_heave_m": the CSV column, display unit in the name
@@ -21,7 +28,7 @@ struct OutputChannelSpec {
   std::string_view si_unit;  // unit of the extracted value ("m", "rad", ...)
   double display_scale;      // display value = SI value × this (180/π for angles)
   bool about_static;         // time series and statistics hold value − static value (body motions)
-  bool judged;               // a judged output: the verdicts' errors, irregular-sea statistics
+  unsigned judged;           // judged_for_* bits: the verdicts' errors (of those models), irregular-sea statistics
   std::string_view linear_name;  // its name as a linear (frequency-domain) output ("hull_heave"); empty: none
   double (*extract)(const CraneOutputs&);  // the SI value from a sample
   // The value in the display unit (the CSV's).

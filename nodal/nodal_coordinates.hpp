@@ -37,6 +37,7 @@ class NodalCoordinates {
   Matrix project(const Eigen::SparseMatrix<double>& nodal_matrix) const { return nodal_matrix; }
 
   const fem::BeamModel& beam() const { return *beam_; }
+  const std::shared_ptr<const fem::BeamModel>& beam_model() const { return beam_; }
 
  private:
   std::shared_ptr<const fem::BeamModel> beam_;

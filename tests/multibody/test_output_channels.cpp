@@ -31,24 +31,32 @@ CraneOutputs distinct_sample() {
   o.strain_energy = 18.0;
   o.wire_energy = 19.0;
   o.spring_energy = 20.0;
+  o.boom_peak_stress = 21.0e6;
+  o.boom_peak_stress_position = 22.0;
+  o.boom_stress_utilisation = 0.23;
   return o;
 }
 
 TEST(OutputChannels, NamesAndColumnsAreUniqueAndColumnsCarryTheirUnit) {
   std::set<std::string> names, columns;
-  const std::string unit_suffix[][2] = {{"m", "_m"}, {"deg", "_deg"}, {"N", "_N"}, {"N m", "_Nm"}, {"J", "_J"}};
+  const std::string unit_suffix[][2] = {{"m", "_m"},   {"deg", "_deg"}, {"N", "_N"},
+                                         {"N m", "_Nm"}, {"J", "_J"},     {"MPa", "_MPa"}};
   for (const OutputChannelSpec& spec : output_channels()) {
     EXPECT_TRUE(names.insert(std::string(spec.name)).second) << spec.name;
     EXPECT_TRUE(columns.insert(std::string(spec.column)).second) << spec.column;
-    bool suffixed = false;
-    for (const auto& [unit, suffix] : unit_suffix)
+    // A dimensionless ratio ("-") has no unit to carry: its column must not end as if it had one.
+    bool suffixed = spec.unit == "-";
+    for (const auto& [unit, suffix] : unit_suffix) {
       if (spec.unit == unit) suffixed = spec.column.ends_with(suffix);
+      if (spec.unit == "-") suffixed = suffixed && !spec.column.ends_with(suffix);
+    }
     EXPECT_TRUE(suffixed) << spec.column << " in " << spec.unit;
-    const bool angle = spec.si_unit == "rad";
+    const bool angle = spec.si_unit == "rad", megapascal = spec.unit == "MPa";
     EXPECT_EQ(spec.unit == "deg", angle) << spec.name;
-    EXPECT_DOUBLE_EQ(spec.display_scale, angle ? 180.0 / std::numbers::pi : 1.0) << spec.name;
+    EXPECT_EQ(megapascal, spec.si_unit == "Pa") << spec.name;
+    EXPECT_DOUBLE_EQ(spec.display_scale, angle ? 180.0 / std::numbers::pi : megapascal ? 1e-6 : 1.0) << spec.name;
   }
-  EXPECT_EQ(output_channels().size(), 19u);
+  EXPECT_EQ(output_channels().size(), 22u);
 }
 
 TEST(OutputChannels, EveryJudgedOutputIsARowReadingItsField) {
@@ -60,6 +68,8 @@ TEST(OutputChannels, EveryJudgedOutputIsARowReadingItsField) {
   EXPECT_EQ(channel_value(o, OutputChannel::wire_tension), 9.0);
   EXPECT_EQ(channel_value(o, OutputChannel::tip_deflection), 8.0);
   EXPECT_EQ(channel_value(o, OutputChannel::joint_moment), 13.0);
+  EXPECT_EQ(channel_value(o, OutputChannel::boom_peak_stress), 21.0e6);
+  EXPECT_DOUBLE_EQ(output_channel(OutputChannel::boom_peak_stress).value(o), 21.0);  // in MPa
   for (const OutputChannel c : all_channels) {
     const OutputChannelSpec& spec = output_channel(c);
     EXPECT_EQ(spec.name, channel_name(c));
