@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 
 #include "scene/irregular_sea.hpp"
 #include "scene/luffing_wires.hpp"
@@ -12,6 +13,7 @@
 #include "scene/recorded_sea.hpp"
 #include "fem/analytic_beam.hpp"
 #include "fem/axial_force.hpp"
+#include "multibody/boom_stress.hpp"
 
 namespace ffrf::scene {
 
@@ -51,8 +53,10 @@ std::string BoomChoice::label() const {
         set += ' ';
         set += fem::to_string(mode_set);
       }
+      // (mode acceleration, the default stress recovery, is not named)
+      const std::string stress = stress_recovery == StressRecovery::mode_displacement ? " (MD stress)" : "";
       return "modal k=" + std::to_string(modes) + (static_modes ? "+static" : "") + set + " (N=" + std::to_string(elements) +
-             ")" + stiffened;
+             ")" + stiffened + stress;
     }
   }
   return "?";
@@ -223,8 +227,39 @@ void add_luffing_wires(const Scene& scene, multibody::CraneParameters<Coords>& m
 
 }  // namespace
 
+// The stresses along the boom (multibody/boom_stress.hpp), recovered on the coordinates' own mesh —
+// for a rigid boom (no elastic coordinates) on the scene's mesh, by mode acceleration alone — with the
+// boom's damping, the same geometric stiffening and the wires' ends on the boom as its loads.
 template <fem::ElasticCoordinates Coords>
-multibody::CraneParameters<Coords> build_crane_parameters(const Scene& scene, Coords coords, Stiffening stiffening) {
+std::shared_ptr<const multibody::BoomStressModel> boom_stress_model(const Scene& scene, const multibody::CraneParameters<Coords>& crane,
+                                                                    StressRecovery method, Stiffening stiffening) {
+  const Coords& coords = crane.boom.coords();
+  constexpr bool nodal = std::is_same_v<Coords, nodal::NodalCoordinates>;
+  const bool rigid = coords.size() == 0;
+  multibody::BoomStressInputs in;
+  in.beam = rigid ? boom_beam(scene, scene.boom.mesh.element_count) : coords.beam_model();
+  if constexpr (!nodal) in.basis = rigid ? Eigen::MatrixXd(in.beam->dofs.free_count(), 0) : coords.basis().vectors;
+  in.identity_basis = nodal;
+  in.fibre_distance = scene.boom.fibre_distance;
+  in.allowable_stress = scene.boom.allowable_stress.value_or(0.0);
+  // (a nodal boom's displacements are its answer; a rigid boom's stresses are the quasi-static ones)
+  in.method = nodal ? StressRecovery::mode_displacement : rigid ? StressRecovery::mode_acceleration : method;
+  in.stiffness_damping = crane.boom.stiffness_damping();
+  in.mass_damping = crane.boom.mass_damping();
+  if (has_static_stiffening(stiffening)) in.prestress = static_reference_axial_force(scene);
+  if (has_centrifugal_stiffening(stiffening)) in.centrifugal = fem::centrifugal_axial_force(in.beam->mesh, centrifugal_hub_radius(scene));
+  for (const multibody::WireConnector& wire : crane.wires) {
+    for (const multibody::BodyAttachment* end : {&wire.from, &wire.to}) {
+      if (end->body == multibody::Body::boom) in.load_points.push_back(end->point.undeformed.x());
+    }
+  }
+  in.mode_acceleration = !nodal;
+  return std::make_shared<const multibody::BoomStressModel>(multibody::make_boom_stress_model(std::move(in)));
+}
+
+template <fem::ElasticCoordinates Coords>
+multibody::CraneParameters<Coords> build_crane_parameters(const Scene& scene, Coords coords, Stiffening stiffening,
+                                                          StressRecovery stress_recovery) {
   if (!scene.has_base() || !scene.boom.mount || (scene.is_crane() && (!scene.cargo || !scene.wire))) {
     scene_problem(scene, "hull", "", "a crane run needs [hull] (with [cargo], [wire] and boom.angle/root_x/root_y) or [hub]");
   }
@@ -255,7 +290,8 @@ multibody::CraneParameters<Coords> build_crane_parameters(const Scene& scene, Co
                                            -1,
                                            env.gravity,
                                            env.water_density,
-                                           std::move(waters.wave)};
+                                           std::move(waters.wave),
+                                           nullptr};  // (the stresses' recovery, set below)
   if (scene.cargo && scene.wire) {
     const Cargo& cargo = *scene.cargo;
     const Wire& wire = *scene.wire;
@@ -271,11 +307,14 @@ multibody::CraneParameters<Coords> build_crane_parameters(const Scene& scene, Co
     model.cargo.present = false;
   }
   if (mount.pinned) add_luffing_wires(scene, model);
+  model.stress = boom_stress_model(scene, model, stress_recovery, stiffening);
   return model;
 }
 
-template multibody::CraneParameters<nodal::NodalCoordinates> build_crane_parameters(const Scene&, nodal::NodalCoordinates, Stiffening);
-template multibody::CraneParameters<modal::ModalCoordinates> build_crane_parameters(const Scene&, modal::ModalCoordinates, Stiffening);
+template multibody::CraneParameters<nodal::NodalCoordinates> build_crane_parameters(const Scene&, nodal::NodalCoordinates, Stiffening,
+                                                                                   StressRecovery);
+template multibody::CraneParameters<modal::ModalCoordinates> build_crane_parameters(const Scene&, modal::ModalCoordinates, Stiffening,
+                                                                                   StressRecovery);
 
 modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {
   if (choice.kind == BoomKind::modal && choice.mode_set != fem::Boundary::clamped_free) {
@@ -313,9 +352,10 @@ std::shared_ptr<const multibody::CraneModel> build_crane_model(const Scene& scen
   const Stiffening stiffening = choice.stiffening.value_or(scene.boom.stiffening);
   if (choice.kind == BoomKind::nodal) {
     return multibody::make_crane_model(
-        build_crane_parameters(scene, nodal::NodalCoordinates(boom_beam(scene, choice.elements)), stiffening));
+        build_crane_parameters(scene, nodal::NodalCoordinates(boom_beam(scene, choice.elements)), stiffening, choice.stress_recovery));
   }
-  return multibody::make_crane_model(build_crane_parameters(scene, modal_coordinates(scene, choice, cache), stiffening));
+  return multibody::make_crane_model(
+      build_crane_parameters(scene, modal_coordinates(scene, choice, cache), stiffening, choice.stress_recovery));
 }
 
 std::unique_ptr<multibody::CraneEquations> build_crane_equations(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {

@@ -13,12 +13,15 @@
 #include "scene/scene.hpp"
 #include "multibody/crane_parameters.hpp"
 #include "multibody/crane_model.hpp"
+#include "multibody/stress_recovery.hpp"
 #include "fem/axial_force.hpp"
 #include "modal/eigen_solver.hpp"
 #include "modal/modal_coordinates.hpp"
 #include "nodal/nodal_coordinates.hpp"
 
 namespace ffrf::scene {
+
+using multibody::StressRecovery;
 
 enum class BoomKind { rigid, nodal, modal };
 std::string_view to_string(BoomKind kind);
@@ -36,7 +39,12 @@ struct BoomChoice {
   // clamped-free (the frame clamped at the heel: the boom's root tangent) or, for a pinned heel,
   // pinned-pinned (the chord frame: the tip on the frame's axis). docs/theory.md, "Mode sets".
   fem::Boundary mode_set = fem::Boundary::clamped_free;
-  // "rigid", "nodal N=16", "modal k=4+static (N=16)", "modal k=2 pinned-pinned (N=16)"
+  // How the stresses along the boom are recovered from the elastic coordinates (a modal boom's
+  // choice: mode displacement or mode acceleration; a nodal boom's are its own displacements', a
+  // rigid boom's the quasi-static ones by mode acceleration). multibody/boom_stress.hpp.
+  StressRecovery stress_recovery = StressRecovery::mode_acceleration;
+  // "rigid", "nodal N=16", "modal k=4+static (N=16)", "modal k=2 pinned-pinned (N=16)",
+  // "modal k=2 (N=16) (MD stress)"
   std::string label() const;
 };
 
@@ -70,7 +78,8 @@ fem::AxialForce static_reference_axial_force(const Scene& scene);
 // A hub scene becomes a held or driven base (multibody::PrescribedMotion) without water; a scene
 // without [cargo] has no cargo coordinates. `stiffening` adds the geometric stiffness matrices.
 template <fem::ElasticCoordinates Coords>
-multibody::CraneParameters<Coords> build_crane_parameters(const Scene& scene, Coords coords, Stiffening stiffening = Stiffening::none);
+multibody::CraneParameters<Coords> build_crane_parameters(const Scene& scene, Coords coords, Stiffening stiffening = Stiffening::none,
+                                                          StressRecovery stress_recovery = StressRecovery::mode_acceleration);
 
 // Elastic coordinates for a choice (the rigid boom is modal coordinates with an empty basis).
 // The vibration modes come from the cache (computed once per mesh) or, without one, from a

@@ -54,6 +54,8 @@ struct Boom {
   std::optional<double> density;     // ρ [kg/m^3] when the scene gave it instead of ρA
   std::optional<BoomMount> mount;     // hull cranes: as given; hub scenes: (0, hub.radius, 0)
   Stiffening stiffening = Stiffening::none;
+  double fibre_distance = 0.0;            // c of the extreme fibres [m] (given, or sqrt(I/A))
+  std::optional<double> allowable_stress;  // of the extreme fibre [Pa]
 };
 
 struct Hull {

@@ -6,6 +6,7 @@
 
 #include "scene/bem_files.hpp"
 #include "scene/scene_key.hpp"
+#include "fem/section_forces.hpp"
 
 namespace ffrf::scene {
 namespace {
@@ -64,6 +65,9 @@ Scene build_scene(const WrittenKeys& keys, const std::string& file, const SceneP
   scene.boom.rayleigh_damping = keys.text(scene_key("boom.damping")) == "rayleigh";
   if (keys.has(scene_key("boom.density"))) scene.boom.density = keys.number(scene_key("boom.density"));
   scene.boom.stiffening = parse_stiffening(keys.text(scene_key("boom.stiffening"))).value_or(Stiffening::none);
+  scene.boom.fibre_distance = keys.has(scene_key("boom.fibre_distance")) ? keys.number(scene_key("boom.fibre_distance"))
+                                                                        : fem::two_flange_fibre_distance(section);
+  if (keys.has(scene_key("boom.allowable_stress"))) scene.boom.allowable_stress = keys.number(scene_key("boom.allowable_stress"));
   if (parts.crane) {
     scene.boom.mount = BoomMount{keys.number(scene_key("boom.angle")), keys.number(scene_key("boom.root_x")),
                                  keys.number(scene_key("boom.root_y")), keys.text(scene_key("boom.heel")) == "pinned"};

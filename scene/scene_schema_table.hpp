@@ -37,8 +37,9 @@ constexpr KeySpec defaulted(std::string_view name, Dimension dimension, Range ra
                             std::string_view help, std::string_view display_unit = {}) {
   return {name, ValueKind::number, dimension, range, Presence::defaulted, value, {}, {}, help, display_unit};
 }
-constexpr KeySpec optional(std::string_view name, Dimension dimension, Range range, std::string_view help) {
-  return {name, ValueKind::number, dimension, range, Presence::optional, 0.0, {}, {}, help};
+constexpr KeySpec optional(std::string_view name, Dimension dimension, Range range, std::string_view help,
+                           std::string_view display_unit = {}) {
+  return {name, ValueKind::number, dimension, range, Presence::optional, 0.0, {}, {}, help, display_unit};
 }
 constexpr KeySpec one_of(std::string_view group, std::string_view name, Dimension dimension, Range range,
                          std::string_view help) {
@@ -152,6 +153,14 @@ inline constexpr std::array kKeys{
            "Geometric (stress) stiffening of the boom: static = from the reference axial force of self-weight "
            "and cargo (compression softens), centrifugal = from the frame's angular velocity, updated during the "
            "run; both; none = the linear floating-frame model (`--stiffening` overrides it)."),
+    optional("boom.fibre_distance", length, between(1e-4, 100.0),
+             "Distance c from the boom's axis to its extreme fibres, for the fibre stresses N/A ± M c/I along the boom. "
+             "Default: sqrt(I/A), the section whose area sits in two flanges at ±c (a lattice boom's chords)."),
+    optional("boom.allowable_stress", pressure, between(1e6, 5e9),
+             "Allowable stress of the boom's extreme fibre (a yield stress over its safety factor, e.g. \"235 MPa\"): the "
+             "boom's stress utilisation is the peak fibre stress over this; `ffrf operability` judges it, and requires it "
+             "for a pinned boom.",
+             "MPa"),
     // [hull]
     required("hull.mass", mass, between(1e3, 1e9), "Hull mass without the boom.", "t"),
     required("hull.pitch_radius_of_gyration", length, between(0.1, 1000.0),

@@ -47,6 +47,20 @@ scene::BoomChoice boom_choice(const BoomRequest& request, scene::BoomChoice choi
     }
     choice.mode_set = *set;
   }
+  if (!request.stress_recovery.empty()) {
+    const auto method = multibody::parse_stress_recovery(request.stress_recovery);
+    if (!method) {
+      throw SettingError(Setting::stress_recovery, request.stress_recovery,
+                         fmt::format("unknown stress recovery; choose one of {} (mode displacement or mode acceleration)",
+                                     multibody::stress_recovery_choices()));
+    }
+    if (choice.kind != scene::BoomKind::modal) {
+      throw SettingError(Setting::stress_recovery, request.stress_recovery,
+                         "a stress recovery is a modal boom's choice (--boom modal): a nodal boom's stresses are its own "
+                         "displacements', a rigid boom's the quasi-static ones");
+    }
+    choice.stress_recovery = *method;
+  }
   if (choice.kind == scene::BoomKind::modal) {
     const int dof = fem::clamped_free_dof_count(choice.elements);
     if (choice.modes < 1 || choice.modes >= dof) {

@@ -22,6 +22,7 @@ struct BoomRequest {
   std::optional<bool> static_modes;  // unset: the base's
   std::string stiffening;            // "none" | "static" | "centrifugal" | "both"; empty: the base's
   std::string mode_set;              // "clamped-free" | "pinned-pinned" (modal); empty: the base's
+  std::string stress_recovery;       // "displacement" | "acceleration" (modal); empty: the base's
 };
 
 // Nodal on the scene's mesh (boom.elements), default_modal_modes with static modes, the scene's

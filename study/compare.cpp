@@ -57,6 +57,7 @@ Comparison compare(const scene::Scene& scene, const CompareRequest& request,
     c.errors.push_back(multibody::compare_runs(c.runs.back().result, c.reference.run.result, c.window_start));
     c.split.push_back(split_errors(c.runs.back(), c.reference.run, c.window_start));
     c.worst.push_back(worst_error(c.errors.back(), c.judged));
+    c.stress.push_back(stress_recovery_errors(c.runs.back().result, c.reference.run.result, c.window_start));
     const ModelRun& done = c.runs.back();
     c.irregular.push_back(irregular_errors(scene, done.result.samples, done.statics.outputs, c.reference.run.result.samples,
                                            c.reference.run.statics.outputs, done.window.first,

@@ -17,6 +17,7 @@
 #include "study/error_split.hpp"
 #include "study/reference.hpp"
 #include "study/run_pipeline.hpp"
+#include "study/stress_recovery_errors.hpp"
 #include "study/verdict.hpp"
 
 namespace ffrf::study {
@@ -50,6 +51,8 @@ struct Comparison {
   std::vector<multibody::RunErrors> errors;      // per run, against the reference (total errors)
   std::vector<SplitErrors> split;               // per run: the static and dynamic parts per channel
   std::vector<WorstError> worst;                // per run, over `judged`
+  // Per run, its peak boom stress by mode displacement and by mode acceleration against the reference's.
+  std::vector<StressRecoveryErrors> stress;
   // Per run, an irregular sea: its statistics and spectra against the reference's (study/irregular_statistics.hpp).
   std::vector<std::optional<IrregularErrors>> irregular;
   Verdict verdict;                              // per run, against the request's tolerance

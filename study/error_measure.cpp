@@ -15,31 +15,42 @@ double error_window(const scene::Scene& scene, double duration) {
   return duration > ramp + 1e-9 ? ramp : 0.0;
 }
 
+namespace {
+
+// The judged_for_* bit of the scene's kind of model (multibody/output_channels.hpp).
+unsigned model_kind(const scene::Scene& scene) {
+  if (!scene.is_crane()) return multibody::judged_for_hub;
+  return scene.boom.mount && scene.boom.mount->pinned ? multibody::judged_for_pinned_crane : multibody::judged_for_clamped_crane;
+}
+
+}  // namespace
+
 std::vector<multibody::OutputChannel> judged_outputs(const scene::Scene& scene) {
-  using multibody::OutputChannel;
-  if (!scene.is_crane()) return {OutputChannel::tip_deflection};
-  // A pinned heel carries no moment: its joint moment is the integrator's round-off, not an output.
-  if (scene.boom.mount && scene.boom.mount->pinned) {
-    return {OutputChannel::cargo_heave, OutputChannel::cargo_pitch, OutputChannel::crane_heave, OutputChannel::crane_pitch,
-            OutputChannel::wire_tension};
+  // In the order of the report: the cargo's motions, the crane's, the hoist wire, the boom's load.
+  const unsigned kind = model_kind(scene);
+  std::vector<multibody::OutputChannel> judged;
+  for (const multibody::OutputChannel channel : multibody::all_channels) {
+    if ((multibody::output_channel(channel).judged & kind) != 0) judged.push_back(channel);
   }
-  return {OutputChannel::cargo_heave, OutputChannel::cargo_pitch,  OutputChannel::crane_heave,
-          OutputChannel::crane_pitch, OutputChannel::wire_tension, OutputChannel::joint_moment};
+  return judged;
 }
 
 double convergence_change(const scene::Scene& scene, const multibody::RunErrors& errors) {
-  const bool pinned = scene.boom.mount && scene.boom.mount->pinned;
+  const unsigned kind = model_kind(scene);
   double worst = 0.0;
   for (const multibody::OutputChannel channel : multibody::all_channels) {
-    if (pinned && channel == multibody::OutputChannel::joint_moment) continue;
-    worst = std::max(worst, errors[channel].normalized_rms);
+    const bool own = channel == multibody::OutputChannel::tip_deflection;  // the boom's own deflection, always
+    if (own || (multibody::output_channel(channel).judged & kind) != 0) worst = std::max(worst, errors[channel].normalized_rms);
   }
   return worst;
 }
 
 std::string output_list(const std::vector<multibody::OutputChannel>& outputs) {
   std::string s;
-  for (const auto channel : outputs) s += (s.empty() ? "" : ",") + std::string(multibody::channel_name(channel));
+  for (const auto channel : outputs) {  // (piece by piece: GCC 12 warns falsely on a concatenation here)
+    if (!s.empty()) s += ',';
+    s += multibody::channel_name(channel);
+  }
   return s;
 }
 

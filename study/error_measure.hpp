@@ -3,8 +3,10 @@
 //  * Window: after the wave ramp (ramp_periods × period), where the wave is fully in; a run that
 //    ends within the ramp, or a scene in calm water, is measured over its whole length.
 //  * Judged outputs: what an engineer designs the lift for — a crane's motions and loads (cargo
-//    heave and pitch, crane heave and pitch, wire tension, the bending moment at the boom root);
-//    a hub scene (no hull, so the hull channels are zero) its boom's tip deflection. The tip
+//    heave and pitch, crane heave and pitch, wire tension, and the boom's load: the bending moment at
+//    a clamped root, the peak fibre stress of a pinned boom); a hub scene (no hull, so the hull
+//    channels are zero) its boom's tip deflection. The output-channel table says which
+//    (multibody/output_channels.hpp: judged_for_*). The tip
 //    deflection of a crane is left out: it is the boom model's own coordinate (a rigid boom has
 //    none, so its error would be 100 % by construction), and what it does to the lift shows in
 //    the cargo motion, the wire tension and the root moment. Every channel's error is still reported.
@@ -27,9 +29,8 @@ double error_window(const scene::Scene& scene, double duration);
 // The judged outputs of a scene (see above), in report order.
 std::vector<multibody::OutputChannel> judged_outputs(const scene::Scene& scene);
 
-// The change between two reference levels: the worst normalized RMS error over every error channel
-// the scene's crane has (all but the joint moment of a pinned heel, which carries none: its samples
-// are the integrator's round-off).
+// The change between two reference levels: the worst normalized RMS error over the scene's judged
+// outputs and the boom's tip deflection.
 double convergence_change(const scene::Scene& scene, const multibody::RunErrors& errors);
 // "cargo_heave,wire_tension"
 std::string output_list(const std::vector<multibody::OutputChannel>& outputs);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -13,6 +14,8 @@
 #include "distributed/stable_hash.hpp"
 #include "hydro/wave_spectrum.hpp"
 #include "scene/irregular_sea.hpp"
+#include "scene/scene_key.hpp"
+#include "scene/scene_loader.hpp"
 #include "study/error_measure.hpp"
 #include "study/recommend.hpp"
 #include "study/recommend_reasoning.hpp"
@@ -98,6 +101,16 @@ OperabilityCriteria resolve_criteria(const scene::Scene& scene, const Operabilit
   if (resolved.daf_limit == 0.0) {
     if (!scene.has_cargo()) throw std::invalid_argument("operability: the scene has no cargo (a lift needs one)");
     resolved.daf_limit = offshore_daf_limit(scene.cargo->mass / 1000.0);
+  }
+  if (resolved.allowable_stress == 0.0 && scene.boom.allowable_stress) resolved.allowable_stress = *scene.boom.allowable_stress;
+  if (scene.boom.mount && scene.boom.mount->pinned) {
+    // A pin carries no moment: the boom's load is its fibre stress, which needs its allowable value.
+    resolved.root_moment_capacity = std::numeric_limits<double>::infinity();
+    if (!(resolved.allowable_stress > 0.0)) {
+      throw scene::SceneError({scene::SceneProblem{scene.file, 0, 0, std::string(scene::scene_key("boom.allowable_stress")), "",
+                               "operability judges a pinned boom by its peak fibre stress: give the allowable stress of its "
+                               "extreme fibre (e.g. boom.allowable_stress = \"235 MPa\"; valid range [1, 5000] MPa)"}});
+    }
   }
   return resolved;
 }
@@ -234,18 +247,20 @@ SeedExtremes run_record(const scene::Scene& scene, const SeaCell& cell, int seed
   dynamics.duration = request.duration;
   const multibody::RunSettings settings = integrator_settings(record, dynamics);
   const ModelRun run = run_model(record, model.choice, settings, modes);
-  const std::size_t n = run.result.time.size();
-  std::vector<double> tension(n), heave(n), moment(n), axial(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const multibody::CraneOutputs& o = run.result.samples[i];
-    tension[i] = o.wire_tension;
-    heave[i] = o.cargo.y();
-    moment[i] = o.joint_reaction.z();
-    axial[i] = o.root_axial_force;
+  SeedRecords records;
+  records.time = run.result.time;
+  for (const multibody::CraneOutputs& o : run.result.samples) {
+    records.tension.push_back(o.wire_tension);
+    records.cargo_heave.push_back(o.cargo.y());
+    records.root_moment.push_back(o.joint_reaction.z());
+    records.root_axial_force.push_back(o.root_axial_force);
+    records.peak_stress.push_back(o.boom_peak_stress);
   }
   const multibody::CraneOutputs& at_rest = run.static_outputs();
-  SeedExtremes extremes = seed_extremes(run.result.time, tension, heave, moment, axial, scene::wave_ramp_duration(record),
-                                        at_rest.wire_tension, at_rest.joint_reaction.z());
+  records.static_tension = at_rest.wire_tension;
+  records.static_root_moment = at_rest.joint_reaction.z();
+  records.static_peak_stress = at_rest.boom_peak_stress;
+  SeedExtremes extremes = seed_extremes(records, scene::wave_ramp_duration(record));
   extremes.work = run.work();
   extremes.rhs_evaluations = static_cast<double>(run.result.stats.function_evaluations);
   return extremes;

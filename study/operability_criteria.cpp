@@ -40,6 +40,7 @@ std::string_view to_string(Criterion criterion) {
     case Criterion::snap: return "snap";
     case Criterion::cargo_motion: return "cargo_motion";
     case Criterion::root_moment: return "root_moment";
+    case Criterion::boom_stress: return "boom_stress";
     case Criterion::buckling: return "buckling";
   }
   return "?";
@@ -64,15 +65,17 @@ void validate(const OperabilityCriteria& c) {
   if (!(c.root_moment_capacity >= 0.0 && std::isfinite(c.root_moment_capacity))) {
     bad("root_moment_capacity", c.root_moment_capacity, "(0, inf) N m, 0: DAF limit x static moment");
   }
+  if (!(c.allowable_stress >= 0.0 && std::isfinite(c.allowable_stress))) {
+    bad("allowable_stress", c.allowable_stress, "(0, inf) Pa, 0: not judged");
+  }
   if (!(c.buckling_ratio > 0.0 && c.buckling_ratio <= 1.0)) bad("buckling_ratio", c.buckling_ratio, "(0, 1]");
 }
 
-SeedExtremes seed_extremes(const std::vector<double>& time, const std::vector<double>& tension,
-                           const std::vector<double>& cargo_heave, const std::vector<double>& root_moment,
-                           const std::vector<double>& root_axial_force, double start, double static_tension,
-                           double static_root_moment) {
+SeedExtremes seed_extremes(const SeedRecords& records, double start) {
+  const std::vector<double>& time = records.time;
   const std::size_t n = time.size();
-  if (tension.size() != n || cargo_heave.size() != n || root_moment.size() != n || root_axial_force.size() != n || n < 3) {
+  if (records.tension.size() != n || records.cargo_heave.size() != n || records.root_moment.size() != n ||
+      records.root_axial_force.size() != n || records.peak_stress.size() != n || n < 3) {
     throw std::invalid_argument("seed_extremes: records of different lengths or fewer than 3 samples");
   }
   const auto first = static_cast<std::size_t>(std::lower_bound(time.begin(), time.end(), start) - time.begin());
@@ -80,9 +83,10 @@ SeedExtremes seed_extremes(const std::vector<double>& time, const std::vector<do
   const double dt = time[first + 1] - time[first];
   const auto window = [&](const std::vector<double>& v) { return std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(first), v.end()); };
   SeedExtremes s;
-  s.static_tension = static_tension;
-  s.static_root_moment = static_root_moment;
-  const std::vector<double> t = window(tension);
+  s.static_tension = records.static_tension;
+  s.static_root_moment = records.static_root_moment;
+  s.static_peak_stress = records.static_peak_stress;
+  const std::vector<double> t = window(records.tension);
   const Rayleigh tr = rayleigh_of(t, dt, "wire tension");
   s.tension_mpm = tr.mean + tr.mpm;
   s.cycles = tr.cycles;
@@ -101,25 +105,28 @@ SeedExtremes seed_extremes(const std::vector<double>& time, const std::vector<do
       s.snap_peak = std::max(s.snap_peak, t[j]);
     }
   }
-  const Rayleigh heave = rayleigh_of(window(cargo_heave), dt, "cargo heave");
+  const Rayleigh heave = rayleigh_of(window(records.cargo_heave), dt, "cargo heave");
   s.cargo_heave_mpm = heave.mpm;
-  std::vector<double> moment = window(root_moment);
-  const double sign = static_root_moment < 0.0 ? -1.0 : 1.0;
+  std::vector<double> moment = window(records.root_moment);
+  const double sign = records.static_root_moment < 0.0 ? -1.0 : 1.0;
   for (double& m : moment) m *= sign;
   const Rayleigh mr = rayleigh_of(moment, dt, "boom root moment");
   s.root_moment_mpm = std::abs(mr.mean + mr.mpm);
-  std::vector<double> compression = window(root_axial_force);
+  std::vector<double> compression = window(records.root_axial_force);
   for (double& c : compression) c = -c;
   const Rayleigh cr = rayleigh_of(compression, dt, "boom axial force");
   s.compression_mpm = cr.mean + cr.mpm;
+  const Rayleigh stress = rayleigh_of(window(records.peak_stress), dt, "boom peak stress");
+  s.peak_stress_mpm = stress.mean + stress.mpm;
   return s;
 }
 
 std::string encode(const SeedExtremes& s) {
-  return fmt::format("{:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}",
-                     s.static_tension, s.static_root_moment, s.tension_mpm, s.tension_max, s.tension_min, s.snap_peak,
-                     s.slack_episodes, s.cargo_heave_mpm, s.root_moment_mpm, s.compression_mpm, s.cycles, s.work,
-                     s.rhs_evaluations);
+  return fmt::format(
+      "{:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}",
+      s.static_tension, s.static_root_moment, s.tension_mpm, s.tension_max, s.tension_min, s.snap_peak, s.slack_episodes,
+      s.cargo_heave_mpm, s.root_moment_mpm, s.compression_mpm, s.cycles, s.work, s.rhs_evaluations, s.static_peak_stress,
+      s.peak_stress_mpm);
 }
 
 SeedExtremes decode_seed_extremes(const std::string& text) {
@@ -127,7 +134,7 @@ SeedExtremes decode_seed_extremes(const std::string& text) {
   SeedExtremes s;
   double* fields[] = {&s.static_tension, &s.static_root_moment, &s.tension_mpm, &s.tension_max, &s.tension_min,
                       &s.snap_peak, &s.slack_episodes, &s.cargo_heave_mpm, &s.root_moment_mpm, &s.compression_mpm,
-                      &s.cycles, &s.work, &s.rhs_evaluations};
+                      &s.cycles, &s.work, &s.rhs_evaluations, &s.static_peak_stress, &s.peak_stress_mpm};
   for (double* field : fields) {
     if (!(in >> *field) || !std::isfinite(*field)) throw std::invalid_argument("not a seed record: '" + text + "'");
   }
@@ -157,8 +164,9 @@ CellStatistics cell_statistics(const std::vector<SeedExtremes>& seeds) {
   c.seeds = seeds.size();
   c.static_tension = seeds.front().static_tension;
   c.static_root_moment = seeds.front().static_root_moment;
+  c.static_peak_stress = seeds.front().static_peak_stress;
   if (!(c.static_tension > 0.0)) throw std::invalid_argument("cell_statistics: the wire carries no static tension");
-  std::vector<double> tension, heave, moment, compression;
+  std::vector<double> tension, heave, moment, compression, stress;
   c.minimum_tension = std::numeric_limits<double>::infinity();
   for (const SeedExtremes& s : seeds) {
     if (std::abs(s.static_tension - c.static_tension) > 1e-9 * c.static_tension) {
@@ -168,6 +176,7 @@ CellStatistics cell_statistics(const std::vector<SeedExtremes>& seeds) {
     heave.push_back(s.cargo_heave_mpm);
     moment.push_back(s.root_moment_mpm);
     compression.push_back(s.compression_mpm);
+    stress.push_back(s.peak_stress_mpm);
     c.minimum_tension = std::min(c.minimum_tension, s.tension_min);
     c.snap_peak = std::max(c.snap_peak, s.snap_peak);
     c.slack_episodes += s.slack_episodes;
@@ -178,6 +187,7 @@ CellStatistics cell_statistics(const std::vector<SeedExtremes>& seeds) {
   c.cargo_heave_mpm = over_seeds(heave);
   c.root_moment_mpm = over_seeds(moment);
   c.compression_mpm = over_seeds(compression);
+  c.peak_stress_mpm = over_seeds(stress);
   c.daf = c.tension_mpm.mean / c.static_tension;
   c.daf_standard_error = c.tension_mpm.standard_error / c.static_tension;
   return c;
@@ -190,17 +200,28 @@ CellVerdict judge_cell(const CellStatistics& cell, const OperabilityCriteria& li
   CellVerdict v;
   const double ts = cell.static_tension;
   const auto set = [&](Criterion c, double value, double limit, double utilisation, double error) {
-    v.results[static_cast<std::size_t>(c)] = {c, value, limit, utilisation, error};
+    v.results[static_cast<std::size_t>(c)] = {c, value, limit, utilisation, error, true};
   };
+  const auto not_judged = [&](Criterion c, double value) { v.results[static_cast<std::size_t>(c)] = {c, value, 0.0, 0.0, 0.0, false}; };
   set(Criterion::daf, cell.daf, limits.daf_limit, cell.daf / limits.daf_limit, cell.daf_standard_error / limits.daf_limit);
   const double unloading = 1.0 - cell.minimum_tension / ts;
   set(Criterion::slack, cell.minimum_tension / ts, limits.slack_margin, unloading / (1.0 - limits.slack_margin), 0.0);
   set(Criterion::snap, cell.snap_peak / ts, limits.daf_limit, cell.snap_peak / (ts * limits.daf_limit), 0.0);
   set(Criterion::cargo_motion, cell.cargo_heave_mpm.mean, limits.cargo_motion_limit,
       cell.cargo_heave_mpm.mean / limits.cargo_motion_limit, cell.cargo_heave_mpm.standard_error / limits.cargo_motion_limit);
-  set(Criterion::root_moment, cell.root_moment_mpm.mean, limits.root_moment_capacity,
-      cell.root_moment_mpm.mean / limits.root_moment_capacity,
-      cell.root_moment_mpm.standard_error / limits.root_moment_capacity);
+  if (std::isfinite(limits.root_moment_capacity)) {
+    set(Criterion::root_moment, cell.root_moment_mpm.mean, limits.root_moment_capacity,
+        cell.root_moment_mpm.mean / limits.root_moment_capacity,
+        cell.root_moment_mpm.standard_error / limits.root_moment_capacity);
+  } else {
+    not_judged(Criterion::root_moment, cell.root_moment_mpm.mean);
+  }
+  if (limits.allowable_stress > 0.0) {
+    set(Criterion::boom_stress, cell.peak_stress_mpm.mean, limits.allowable_stress, cell.peak_stress_mpm.mean / limits.allowable_stress,
+        cell.peak_stress_mpm.standard_error / limits.allowable_stress);
+  } else {
+    not_judged(Criterion::boom_stress, cell.peak_stress_mpm.mean);
+  }
   const double buckling_limit = limits.buckling_ratio * euler_load;
   set(Criterion::buckling, cell.compression_mpm.mean, buckling_limit, cell.compression_mpm.mean / buckling_limit,
       cell.compression_mpm.standard_error / buckling_limit);

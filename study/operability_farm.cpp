@@ -24,8 +24,8 @@ struct RecordTask {
   bool converged = false;
 };
 
-// The root-moment capacity: the scene's, or the DAF limit times the static root moment. A pinned heel
-// carries no moment (its static moment is round-off): no capacity binds it (infinite).
+// The root-moment capacity: the scene's (infinite for a pinned heel: resolve_criteria), or the DAF limit
+// times the static root moment (none binds a moment that is round-off).
 double capacity_for(const OperabilityCriteria& criteria, const CellStatistics& statistics) {
   if (criteria.root_moment_capacity > 0.0) return criteria.root_moment_capacity;
   const double capacity = criteria.daf_limit * std::abs(statistics.static_root_moment);

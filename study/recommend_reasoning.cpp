@@ -124,6 +124,19 @@ void loads(const scene::Scene& scene, const std::vector<multibody::OutputChannel
     const double amplification = r.axial_load < r.euler_load ? r.axial_load / (r.euler_load - r.axial_load)
                                                              : std::numeric_limits<double>::infinity();
     r.static_stiffening_effect = (std::isfinite(r.rigid_error) ? std::min(r.rigid_error, 1.0e3) : 1.0) * amplification;
+    if (contains(outputs, multibody::OutputChannel::boom_peak_stress)) {
+      // The peak fibre stress |N|/A + |M|c/I: the prestress amplifies its bending part by P/(P_E − P)
+      // (the span's qL²/8 of a pinned boom, the root's of a clamped one).
+      const double q_perp = rhoA * g * std::cos(phi);
+      const double moment = pinned ? q_perp * L * L / 8.0 : (cargo_weight * std::cos(phi) + 0.5 * q_perp * L) * L;
+      const double bending = moment * scene.boom.fibre_distance / mesh.section.second_moment;
+      const double membrane = r.axial_load / mesh.section.area;
+      const double stress_effect = amplification * bending / (bending + membrane);
+      r.statements.push_back(fmt::format(
+          "Peak fibre stress: its bending part {:.3g} MPa of {:.3g} MPa grows by the prestress's P/(P_E − P): about {:.2g}.",
+          bending * 1e-6, (bending + membrane) * 1e-6, stress_effect));
+      r.static_stiffening_effect = std::max(r.static_stiffening_effect, stress_effect);
+    }
     const bool needed = r.static_stiffening_effect > r.tolerance;
     if (needed) required = scene::Stiffening::static_load;
     r.statements.push_back(fmt::format(

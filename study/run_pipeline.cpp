@@ -34,6 +34,7 @@ std::string_view to_string(Setting setting) {
     case Setting::modes: return "mode count";
     case Setting::stiffening: return "geometric stiffening";
     case Setting::mode_set: return "mode set";
+    case Setting::stress_recovery: return "stress recovery";
   }
   return "?";
 }

@@ -36,7 +36,7 @@ namespace ffrf::study {
 enum class Setting {
   relative_tolerance, absolute_tolerance, duration, fixed_step, max_order,
   reference_elements, reference_tolerance, reference_bound, reference_levels, tolerance, jobs, elements,
-  boom_model, modes, stiffening, mode_set,
+  boom_model, modes, stiffening, mode_set, stress_recovery,
 };
 std::string_view to_string(Setting setting);  // "relative tolerance", ...
 

@@ -106,6 +106,32 @@ TEST(BoomChoice, BadRequestsNameTheSettingValueAndChoices) {
   EXPECT_EQ(refusal(nodal_set, base).setting(), Setting::mode_set);
 }
 
+TEST(BoomChoice, TheStressRecoveryIsAModalBoomsChoiceNamedWhenNotTheDefault) {
+  const scene::Scene scene = test::scene_file("pinned_luffing_crane.toml");
+  const scene::BoomChoice base = default_boom_choice(scene);
+  EXPECT_EQ(base.stress_recovery, multibody::StressRecovery::mode_acceleration);
+  BoomRequest request;
+  request.kind = "modal";
+  request.stress_recovery = "displacement";
+  const scene::BoomChoice displacement = boom_choice(request, base);
+  EXPECT_EQ(displacement.stress_recovery, multibody::StressRecovery::mode_displacement);
+  EXPECT_NE(displacement.label().find("(MD stress)"), std::string::npos) << displacement.label();
+  request.stress_recovery = "acceleration";
+  EXPECT_EQ(boom_choice(request, base).label().find("stress"), std::string::npos) << "the default is not named";
+
+  BoomRequest unknown;
+  unknown.kind = "modal";
+  unknown.stress_recovery = "modal";
+  const SettingError bad = refusal(unknown, base);
+  EXPECT_EQ(bad.setting(), Setting::stress_recovery);
+  EXPECT_EQ(bad.value(), "modal");
+  EXPECT_NE(bad.problem().find("displacement|acceleration"), std::string::npos) << bad.what();
+  BoomRequest nodal;  // a nodal boom's stresses are its own displacements'
+  nodal.kind = "nodal";
+  nodal.stress_recovery = "acceleration";
+  EXPECT_EQ(refusal(nodal, base).setting(), Setting::stress_recovery);
+}
+
 TEST(BoomChoice, TheModeSetIsKeptAndNamedInTheLabel) {
   const scene::Scene scene = test::scene_file("pinned_luffing_crane.toml");
   BoomRequest request;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -15,24 +16,25 @@ namespace operability_criteria_test {
 
 constexpr double pi = std::numbers::pi;
 
-struct Records {
-  std::vector<double> time, tension, heave, moment, axial;
-};
-
 // T = Ts (1 + a sin ωt) clipped at 0 (a slack wire carries nothing), heave = h sin ωt,
-// M = M0 (1 + m sin ωt), axial = −P0 (1 + p sin ωt), sampled at dt over [0, duration].
-Records sinusoids(double ts, double a, double h, double m0, double m, double p0, double p, double period,
-                  double duration, double dt = 0.01) {
-  Records r;
+// M = M0 (1 + m sin ωt), axial = −P0 (1 + p sin ωt), peak stress σ0 (1 + 0.2 sin ωt) with
+// σ0 = 5e7 Pa, sampled at dt over [0, duration]; static values Ts, M0, σ0.
+SeedRecords sinusoids(double ts, double a, double h, double m0, double m, double p0, double p, double period,
+                      double duration, double dt = 0.01) {
+  SeedRecords r;
   const double omega = 2.0 * pi / period;
   for (double t = 0.0; t <= duration + 1e-9; t += dt) {
     const double s = std::sin(omega * t);
     r.time.push_back(t);
     r.tension.push_back(std::max(0.0, ts * (1.0 + a * s)));
-    r.heave.push_back(h * s);
-    r.moment.push_back(m0 * (1.0 + m * s));
-    r.axial.push_back(-p0 * (1.0 + p * s));
+    r.cargo_heave.push_back(h * s);
+    r.root_moment.push_back(m0 * (1.0 + m * s));
+    r.root_axial_force.push_back(-p0 * (1.0 + p * s));
+    r.peak_stress.push_back(5.0e7 * (1.0 + 0.2 * s));
   }
+  r.static_tension = ts;
+  r.static_root_moment = m0;
+  r.static_peak_stress = 5.0e7;
   return r;
 }
 
@@ -65,9 +67,9 @@ TEST(OperabilityCriteria, OffshoreDafLimitFollowsTheTableBands) {
 
 TEST(OperabilityCriteria, SinusoidalTensionGivesItsKnownExtremes) {
   const double ts = 1.0e7, a = 0.2, period = 10.0, duration = 1002.5;
-  const Records r = sinusoids(ts, a, 0.8, -2.0e8, 0.1, 5.0e6, 0.3, period, duration);
+  const SeedRecords r = sinusoids(ts, a, 0.8, -2.0e8, 0.1, 5.0e6, 0.3, period, duration);
   // The window starts and ends off a zero crossing (crests at t = 2.5 s and 1002.5 s: 100 whole periods), so that every record counts the same cycles and its mean is exact.
-  const SeedExtremes s = seed_extremes(r.time, r.tension, r.heave, r.moment, r.axial, 2.5, ts, -2.0e8);
+  const SeedExtremes s = seed_extremes(r, 2.5);
   EXPECT_NEAR(s.tension_max, ts * (1.0 + a), 1e-6 * ts);
   EXPECT_NEAR(s.tension_min, ts * (1.0 - a), 1e-6 * ts);
   EXPECT_EQ(s.slack_episodes, 0.0);
@@ -80,6 +82,8 @@ TEST(OperabilityCriteria, SinusoidalTensionGivesItsKnownExtremes) {
   EXPECT_NEAR(s.root_moment_mpm, 2.0e8 + brute_force_mpm(0.1 * 2.0e8 / std::sqrt(2.0), s.cycles), 1e-4 * 2.0e8);
   EXPECT_NEAR(s.compression_mpm, 5.0e6 + brute_force_mpm(0.3 * 5.0e6 / std::sqrt(2.0), s.cycles), 1e-4 * 5.0e6);
   EXPECT_NEAR(s.cargo_heave_mpm, brute_force_mpm(0.8 / std::sqrt(2.0), s.cycles), 1e-4);
+  EXPECT_NEAR(s.peak_stress_mpm, 5.0e7 + brute_force_mpm(0.2 * 5.0e7 / std::sqrt(2.0), s.cycles), 1e-4 * 5.0e7);
+  EXPECT_EQ(s.static_peak_stress, 5.0e7);
 }
 
 TEST(OperabilityCriteria, SlackEpisodesAndTheSnapPeakAfterEach) {
@@ -87,16 +91,16 @@ TEST(OperabilityCriteria, SlackEpisodesAndTheSnapPeakAfterEach) {
   // rises to Ts (1 + 1.5) = 2.5 Ts a quarter period plus later — within the 5 s window for T = 8 s
   // only if it comes within 5 s of the episode's end: it does (≈ 3.3 s).
   const double ts = 1.0e7, period = 8.0;
-  const Records r = sinusoids(ts, 1.5, 0.5, 1.0e8, 0.1, 1.0e6, 0.1, period, 400.0);
-  const SeedExtremes s = seed_extremes(r.time, r.tension, r.heave, r.moment, r.axial, 0.0, ts, 1.0e8);
+  const SeedRecords r = sinusoids(ts, 1.5, 0.5, 1.0e8, 0.1, 1.0e6, 0.1, period, 400.0);
+  const SeedExtremes s = seed_extremes(r, 0.0);
   EXPECT_EQ(s.tension_min, 0.0);
   EXPECT_NEAR(s.slack_episodes, 400.0 / period, 1.0);
   EXPECT_NEAR(s.snap_peak, 2.5 * ts, 1e-5 * ts);
 }
 
 TEST(OperabilityCriteria, TooShortARecordIsRefused) {
-  const Records r = sinusoids(1.0e7, 0.2, 0.5, 1.0e8, 0.1, 1.0e6, 0.1, 10.0, 80.0);  // 7 cycles
-  EXPECT_THROW(seed_extremes(r.time, r.tension, r.heave, r.moment, r.axial, 0.0, 1.0e7, 1.0e8), std::invalid_argument);
+  const SeedRecords r = sinusoids(1.0e7, 0.2, 0.5, 1.0e8, 0.1, 1.0e6, 0.1, 10.0, 80.0);  // 7 cycles
+  EXPECT_THROW(seed_extremes(r, 0.0), std::invalid_argument);
 }
 
 TEST(OperabilityCriteria, StatisticsOverSeeds) {
@@ -122,6 +126,8 @@ TEST(OperabilityCriteria, UtilisationsGoverningAndVerdictByHand) {
   a.root_moment_mpm = 3.2e8;
   b.root_moment_mpm = 3.4e8;
   a.compression_mpm = b.compression_mpm = 2.0e7;
+  a.peak_stress_mpm = 1.6e8;
+  b.peak_stress_mpm = 1.8e8;  // mean 1.7e8 Pa
   const CellStatistics cell = cell_statistics({a, b});
   EXPECT_DOUBLE_EQ(cell.daf, 1.12);
   EXPECT_DOUBLE_EQ(cell.minimum_tension, 0.25e7);
@@ -139,8 +145,27 @@ TEST(OperabilityCriteria, UtilisationsGoverningAndVerdictByHand) {
   EXPECT_NEAR(v[Criterion::cargo_motion].utilisation, 0.5, 1e-12);
   EXPECT_NEAR(v[Criterion::root_moment].utilisation, 3.3e8 / 3.45e8, 1e-12);  // 0.9565
   EXPECT_NEAR(v[Criterion::buckling].utilisation, 2.0e7 / 5.0e7, 1e-12);
+  EXPECT_FALSE(v[Criterion::boom_stress].judged);  // no allowable stress given
+  EXPECT_EQ(v[Criterion::boom_stress].utilisation, 0.0);
   EXPECT_EQ(v.governing, Criterion::daf);  // 0.9739 > 0.9565 > 0.8333
   EXPECT_TRUE(v.pass);
+
+  // A pinned boom: no root moment judged (an infinite capacity), the peak fibre stress against its
+  // allowable value instead — 1.7e8 / 1.75e8 = 0.9714, just below the DAF's 0.9739.
+  OperabilityCriteria pinned = limits;
+  pinned.root_moment_capacity = std::numeric_limits<double>::infinity();
+  pinned.allowable_stress = 1.75e8;
+  const CellVerdict p = judge_cell(cell, pinned, 1.0e8);
+  EXPECT_FALSE(p[Criterion::root_moment].judged);
+  EXPECT_EQ(p[Criterion::root_moment].utilisation, 0.0);
+  EXPECT_TRUE(p[Criterion::boom_stress].judged);
+  EXPECT_NEAR(p[Criterion::boom_stress].utilisation, 1.7e8 / 1.75e8, 1e-12);
+  EXPECT_NEAR(p[Criterion::boom_stress].utilisation_error, 1.0e7 / 1.75e8, 1e-12);  // s.e. = sd 0.1414e8 / √2
+  EXPECT_EQ(p.governing, Criterion::daf);
+  pinned.allowable_stress = 1.65e8;  // now the boom's stress governs, and fails the cell
+  const CellVerdict over = judge_cell(cell, pinned, 1.0e8);
+  EXPECT_EQ(over.governing, Criterion::boom_stress);
+  EXPECT_FALSE(over.pass);
 
   b.tension_min = 0.05e7;  // below the 10 % margin: slack governs and the cell fails
   const CellVerdict slack = judge_cell(cell_statistics({a, b}), limits, 1.0e8);
@@ -155,7 +180,11 @@ TEST(OperabilityCriteria, RecordTextRoundTripsExactly) {
   s.tension_mpm = std::nextafter(1.4e7, 2e7);
   s.root_moment_mpm = 1.0 / 3.0;
   s.work = 123456789.0;
+  s.peak_stress_mpm = 2.0e8 / 7.0;
+  s.static_peak_stress = std::nextafter(5.0e7, 0.0);
   const SeedExtremes back = decode_seed_extremes(encode(s));
+  EXPECT_EQ(back.peak_stress_mpm, s.peak_stress_mpm);
+  EXPECT_EQ(back.static_peak_stress, s.static_peak_stress);
   EXPECT_EQ(back.static_tension, s.static_tension);
   EXPECT_EQ(back.tension_mpm, s.tension_mpm);
   EXPECT_EQ(back.root_moment_mpm, s.root_moment_mpm);
