@@ -97,6 +97,10 @@ void add_model_options(CLI::App& sub, ModelOptions& options) {
   sub.add_option("--mode-set", options.mode_set,
                  "The modal boom's mode set (its floating frame's reference condition): clamped-free (the default) or, "
                  "for a boom pinned at its heel, pinned-pinned (the chord frame)");
+  sub.add_option("--stress-recovery", options.stress_recovery,
+                 "How the modal boom's stresses are recovered: acceleration (mode acceleration, the default: the static "
+                 "response to every load the modes leave unbalanced added) or displacement (mode displacement: from the "
+                 "modes' own deflection)");
 }
 
 scene::BoomChoice boom_choice(const ModelOptions& options, scene::BoomChoice base) {
@@ -109,6 +113,7 @@ scene::BoomChoice boom_choice(const ModelOptions& options, scene::BoomChoice bas
   if (options.no_static_modes) request.static_modes = false;
   request.stiffening = options.stiffening;
   request.mode_set = options.mode_set;
+  request.stress_recovery = options.stress_recovery;
   try {
     return study::boom_choice(request, base);
   } catch (const study::SettingError& error) {  // name where the element count came from
@@ -136,6 +141,7 @@ std::string_view option_name(study::Setting setting) {
     case study::Setting::modes: return "--modes";
     case study::Setting::stiffening: return "--stiffening";
     case study::Setting::mode_set: return "--mode-set";
+    case study::Setting::stress_recovery: return "--stress-recovery";
   }
   return "?";
 }

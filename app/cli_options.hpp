@@ -56,6 +56,7 @@ struct ModelOptions {
   bool no_static_modes = false;
   std::string stiffening;  // empty: the scene's boom.stiffening (or the baseline's)
   std::string mode_set;    // empty: clamped-free (or the baseline's)
+  std::string stress_recovery;  // empty: acceleration (or the baseline's)
 };
 // --boom --elements/-N --modes/-k --static-modes --no-static-modes --stiffening --mode-set.
 void add_model_options(CLI::App& sub, ModelOptions& options);

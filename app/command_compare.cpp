@@ -13,6 +13,7 @@
 #include "app/radiation_option.hpp"
 #include "study/radiation_compare.hpp"
 #include "app/commands.hpp"
+#include "report/boom_stress_report.hpp"
 #include "report/chart_notes.hpp"
 #include "report/compare_report.hpp"
 #include "report/crane_charts.hpp"
@@ -55,6 +56,19 @@ void write_outputs(report::StagedDirectory& out, const report::RunContext& conte
   charts.difference_floors = report::difference_floors(comparison, charts.names);
   out.write(charts.differences_csv, report::difference_csv(comparison, charts.names));
   report::draw_crane_charts(out, charts);
+  std::vector<report::StressChartSource> stress;
+  for (std::size_t m = 0; m < comparison.runs.size(); ++m) {
+    const study::ModelRun& run = comparison.runs[m];
+    if (!comparison.plotted[m] || run.result.boom_stress.empty()) continue;
+    const std::string name = "boom_stress_" + report::slug(run.choice.label()) + ".csv";
+    out.write(name, report::boom_stress_csv(run.result.boom_stress));
+    stress.push_back({name, run.choice.label(), false});
+  }
+  if (!comparison.reference.run.result.boom_stress.empty()) {
+    out.write("boom_stress_reference.csv", report::boom_stress_csv(comparison.reference.run.result.boom_stress));
+    stress.push_back({"boom_stress_reference.csv", report::reference_label(comparison.reference), true});
+  }
+  report::draw_boom_stress_chart(out, stress, scene, charts.subtitle, charts.command);
   out.write("report.md", report::compare_markdown(context, comparison) + report::charts_markdown(out));
   out.write("summary.json", report::with_charts_json(report::compare_json(context, comparison), out));
   out.commit();

@@ -15,6 +15,7 @@
 #include "app/radiation_option.hpp"
 #include "app/commands.hpp"
 #include "app/option_checks.hpp"
+#include "report/boom_stress_report.hpp"
 #include "report/chart_notes.hpp"
 #include "report/crane_charts.hpp"
 #include "report/gnuplot.hpp"
@@ -47,6 +48,12 @@ void write_outputs(report::StagedDirectory& out, const report::RunContext& conte
                                 run.choice.label(), solve::to_string(context.settings.kind), context.settings.relative_tolerance);
   charts.command = "ffrf run --out";
   report::draw_crane_charts(out, charts);
+  std::vector<report::StressChartSource> stress;
+  if (!run.result.boom_stress.empty()) {
+    out.write("boom_stress.csv", report::boom_stress_csv(run.result.boom_stress));
+    stress.push_back({"boom_stress.csv", run.choice.label(), false});
+  }
+  report::draw_boom_stress_chart(out, stress, *context.scene, charts.subtitle, charts.command);
   out.write("summary.json", report::with_charts_json(report::run_json(context, run), out));
   out.commit();
   fmt::print(stderr, "{}", report::chart_notes_text("run", out));
@@ -98,7 +105,7 @@ int run_crane(const RunOptions& options) {
     return solver_failure("run", std::string(solve::to_string(failure.kind())), failure, options.out);
   }
   if (out) write_outputs(*out, context, run);
-  fmt::print("{}", options.json ? report::run_json(context, run) : report::dynamics_text(run));
+  fmt::print("{}", options.json ? report::run_json(context, run) : report::dynamics_text(*scene, run));
   if (!options.out.empty() && !options.json) fmt::print("\nwrote {}\n", options.out);
   return exit_ok;
 }

@@ -166,6 +166,14 @@ std::string compare_markdown(const RunContext& ctx, const Comparison& c) {
          "Rayleigh MPM / spectral distance D).\n\n```\n" + irregular_errors_text(model_labels(c), c.irregular) + "```\n\n";
     if (c.reference.run.irregular) r += "Reference run's statistics:\n\n```" + irregular_text(*c.reference.run.irregular) + "```\n\n";
   }
+  r += "## Stresses along the boom\n\nThe largest extreme-fibre stress |N|/A + |M|c/I over the boom's sections at each output "
+       "(c = " + fmt::format("{:.3g}", scene.boom.fibre_distance) + " m), recovered from each modal boom both ways in the same run: "
+       "by **mode displacement** (from the modes' own deflection Φη) and by **mode acceleration** (the static response of the "
+       "nodal model to every load the modes leave unbalanced added: Φη + K⁻¹r); a nodal boom's stresses are its own "
+       "displacements', a rigid boom's the quasi-static ones. History error: the normalized RMS error of the peak-stress history "
+       "against the reference's, " + window_text(c.window_start) + "; largest peak: its largest value there, and the relative "
+       "error of that design value. The verdict judges the peak stress of a pinned boom by the recovery each model names "
+       "(`--stress-recovery`).\n\n![boom_stress](boom_stress.png)\n\n" + stress_recovery_table(c) + "\n";
   r += "## Wire rope\n\nDynamic amplification factor here: the maximum tension over the whole run divided by the static "
        "tension.\n\n" + wire_table(c) + "\n";
   r += "## Solver costs\n\nWall time of the integration alone; real-time factor = simulated time / wall time; work = steps × "
@@ -215,6 +223,16 @@ std::string compare_json(const RunContext& ctx, const Comparison& c) {
                                                         {"scale", s.scale * unit}};
     }
     errors["daf_error"] = c.errors[m].daf_error;
+    if (m < c.stress.size()) {
+      Json stress = Json::object();
+      for (const multibody::StressRecovery method : multibody::all_stress_recoveries) {
+        const study::PeakStressError& e = c.stress[m][method];
+        stress[std::string(multibody::to_string(method))] =
+            Json{{"normalized_rms", e.normalized_rms}, {"largest_peak_MPa", e.peak * 1e-6}, {"largest_peak_error", e.design_peak}};
+      }
+      stress["reference_largest_peak_MPa"] = c.stress[m].reference_peak * 1e-6;
+      errors["boom_peak_stress_by_recovery"] = std::move(stress);
+    }
     errors["worst_normalized_rms"] = c.worst[m].error;
     errors["worst_output"] = channel_name(c.worst[m].channel);
     model["errors_to_reference"] = std::move(errors);
@@ -272,6 +290,20 @@ std::string compare_text(const RunContext& ctx, const Comparison& c) {
   t += "(worst: the largest total normalized RMS error over the judged outputs, what the verdict judges; static, dynamic: "
        "its two parts for that output — the equilibrium offset, and the motion about each model's own equilibrium; x wall, "
        "x work: the reference's wall time and solver work (RHS evaluations x state size) over the model's)\n\n";
+  if (!c.stress.empty()) {
+    t += fmt::format("boom stress: the largest peak fibre stress {}: {:.4g} MPa in the reference; each modal boom's "
+                     "peak-stress history error by mode displacement / by mode acceleration (the recovery it reports marked *)\n",
+                     window_text(c.window_start), c.stress.front().reference_peak * 1e-6);
+    for (std::size_t m = 0; m < c.runs.size() && m < c.stress.size(); ++m) {
+      const scene::BoomChoice& choice = c.runs[m].choice;
+      if (choice.kind != scene::BoomKind::modal) continue;
+      const bool acceleration = choice.stress_recovery == multibody::StressRecovery::mode_acceleration;
+      t += fmt::format("  {:<{}} {:>9}{} / {:>9}{}\n", choice.label(), width,
+                       sci(c.stress[m][multibody::StressRecovery::mode_displacement].normalized_rms), acceleration ? " " : "*",
+                       sci(c.stress[m][multibody::StressRecovery::mode_acceleration].normalized_rms), acceleration ? "*" : " ");
+    }
+    t += "\n";
+  }
   if (has_irregular_errors(c)) t += irregular_errors_text(model_labels(c), c.irregular);
   t += "verdict     " + wrapped(verdict_sentence(c), 100, 12) + "\n";
   return t;

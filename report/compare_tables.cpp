@@ -129,4 +129,36 @@ std::string cost_table(const Comparison& c) {
   return t;
 }
 
+std::string stress_recovery_table(const Comparison& c) {
+  using multibody::StressRecovery;
+  std::string t = fmt::format(
+      "| model | stress by | history error, mode displacement | history error, mode acceleration | largest peak [MPa], "
+      "displacement | largest peak [MPa], acceleration | its error, displacement | its error, acceleration |\n"
+      "|---|---|--:|--:|--:|--:|--:|--:|\n");
+  for (std::size_t m = 0; m < c.runs.size() && m < c.stress.size(); ++m) {
+    const scene::BoomChoice& choice = c.runs[m].choice;
+    const study::StressRecoveryErrors& e = c.stress[m];
+    const bool both = choice.kind == scene::BoomKind::modal;
+    const auto cell = [&](StressRecovery method, double value, bool scientific) {
+      if (!both && method == StressRecovery::mode_displacement && choice.kind == scene::BoomKind::rigid) return std::string("-");
+      return scientific ? sci(value) : fmt::format("{:.4g}", value * 1e-6);
+    };
+    const char* own = choice.kind == scene::BoomKind::rigid ? "quasi-static"
+                      : choice.kind == scene::BoomKind::nodal
+                          ? "nodal"
+                          : (choice.stress_recovery == StressRecovery::mode_acceleration ? "acceleration" : "displacement");
+    t += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", choice.label(), own,
+                     cell(StressRecovery::mode_displacement, e[StressRecovery::mode_displacement].normalized_rms, true),
+                     sci(e[StressRecovery::mode_acceleration].normalized_rms),
+                     cell(StressRecovery::mode_displacement, e[StressRecovery::mode_displacement].peak, false),
+                     fmt::format("{:.4g}", e[StressRecovery::mode_acceleration].peak * 1e-6),
+                     cell(StressRecovery::mode_displacement, e[StressRecovery::mode_displacement].design_peak, true),
+                     sci(e[StressRecovery::mode_acceleration].design_peak));
+  }
+  if (!c.stress.empty()) {
+    t += fmt::format("| {} | nodal | - | - | - | {:.4g} | - | - |\n", reference_label(c.reference), c.stress.front().reference_peak * 1e-6);
+  }
+  return t;
+}
+
 }  // namespace ffrf::report

@@ -28,5 +28,9 @@ std::string error_table(const study::Comparison& comparison, ErrorKind kind);
 std::string static_table(const scene::Scene& scene, const study::Comparison& comparison);
 std::string wire_table(const study::Comparison& comparison);
 std::string cost_table(const study::Comparison& comparison);
+// One row per model: its peak boom stress by mode displacement and by mode acceleration against the
+// reference's (normalized RMS error of the history, error of the largest value), the recovery its
+// channels report marked.
+std::string stress_recovery_table(const study::Comparison& comparison);
 
 }  // namespace ffrf::report

@@ -75,7 +75,8 @@ std::string heading_table(const study::OperabilityStudy& s, hydro::WaveHeading h
 std::string operability_csv(const study::OperabilityStudy& s) {
   std::string csv =
       "hs_m,tp_s,heading,status,model,governing,verdict,daf,daf_standard_error,min_tension_ratio,snap_ratio,"
-      "cargo_heave_mpm_m,root_moment_mpm_Nm,compression_mpm_N,u_daf,u_slack,u_snap,u_cargo_motion,u_root_moment,u_buckling,"
+      "cargo_heave_mpm_m,root_moment_mpm_Nm,compression_mpm_N,peak_stress_mpm_MPa,u_daf,u_slack,u_snap,u_cargo_motion,u_root_moment,"
+      "u_boom_stress,u_buckling,"
       "seeds,work,verified,converged_model,converged_governing,converged_verdict,converged_u_governing,converged_work,"
       "steepness,steepness_limit,band_lower_radps,band_upper_radps,band_variance_share,components,repeat_period_sec,"
       "record_repeats,independent_wave_cycles,failure,wall_s,converged_wall_s\n";
@@ -85,14 +86,14 @@ std::string operability_csv(const study::OperabilityStudy& s) {
                        study::to_string(c.status()), physical ? c.model.label() : std::string());
     if (c.ok) {
       const study::CellStatistics& st = c.statistics;
-      csv += fmt::format("{},{},{:.6g},{:.3g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},", study::to_string(c.verdict.governing),
+      csv += fmt::format("{},{},{:.6g},{:.3g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},", study::to_string(c.verdict.governing),
                          verdict_word(c.verdict.pass), st.daf, st.daf_standard_error, st.minimum_tension / st.static_tension,
                          st.snap_peak / st.static_tension, st.cargo_heave_mpm.mean, st.root_moment_mpm.mean,
-                         st.compression_mpm.mean);
+                         st.compression_mpm.mean, st.peak_stress_mpm.mean * 1e-6);
       for (Criterion criterion : study::all_criteria) csv += fmt::format("{:.6g},", c.verdict[criterion].utilisation);
       csv += fmt::format("{},{:.6g},", st.seeds, st.work);
     } else {
-      csv += ",,,,,,,,,,,,,,,,,";
+      csv += ",,,,,,,,,,,,,,,,,,,";
     }
     if (c.verified && c.converged_ok) {
       csv += fmt::format("yes,\"{}\",{},{},{:.6g},{:.6g},", c.converged.label(), study::to_string(c.converged_verdict.governing),
@@ -173,37 +174,42 @@ std::string operability_markdown(const study::OperabilityStudy& s, const Operabi
       "| snap | peak after slack ≤ DAF limit × static | snap peak / ({:g} T_s) |\n"
       "| cargo_motion | MPM heave amplitude ≤ {:g} m | MPM / limit |\n"
       "| root_moment | MPM root moment ≤ {} | MPM / capacity |\n"
+      "| boom_stress | MPM peak fibre stress along the boom ≤ {} | MPM / allowable |\n"
       "| buckling | MPM compression ≤ {:g} × Euler load | MPM / ({:g} P_E) |\n\n"
       "A cell passes when every utilisation is ≤ 1; the governing criterion is the largest (docs/operability.md). A cell "
       "whose sea is steeper than DNV-RP-C205's breaking limit (Hs/λp above 1/15 at Tp ≤ 8 s, 1/25 at Tp ≥ 15 s) is not "
       "physical: no records, no verdict.\n\n",
       k.daf_limit, k.slack_margin, k.daf_limit, k.cargo_motion_limit,
-      k.root_moment_capacity > 0.0 ? fmt::format("{:.4g} N m", k.root_moment_capacity) : fmt::format("{:g} × static moment", k.daf_limit),
+      !std::isfinite(k.root_moment_capacity) ? std::string("— (not judged: a pinned heel carries no moment)")
+      : k.root_moment_capacity > 0.0        ? fmt::format("{:.4g} N m", k.root_moment_capacity)
+                                            : fmt::format("{:g} × static moment", k.daf_limit),
+      k.allowable_stress > 0.0 ? fmt::format("{:.4g} MPa (boom.allowable_stress)", k.allowable_stress * 1e-6)
+                               : std::string("— (not judged: the scene gives no boom.allowable_stress)"),
       k.buckling_ratio, k.buckling_ratio);
   for (hydro::WaveHeading heading : headings_of(s)) {
     md += fmt::format("## {} sea\n\n{}\n", heading_name(heading), heading_table(s, heading, true));
   }
   md += "![operability map](operability.png)\n\n## Cells\n\n"
-        "| Hs [m] | Tp [s] | heading | model | verdict | governing | DAF (± s.e.) | T_min/T_s | cargo MPM [m] | root moment MPM [MN m] | compression MPM [MN] |\n"
-        "|--:|--:|---|---|---|---|--:|--:|--:|--:|--:|\n";
+        "| Hs [m] | Tp [s] | heading | model | verdict | governing | DAF (± s.e.) | T_min/T_s | cargo MPM [m] | root moment MPM [MN m] | peak stress MPM [MPa] | compression MPM [MN] |\n"
+        "|--:|--:|---|---|---|---|--:|--:|--:|--:|--:|--:|\n";
   for (const CellResult& c : s.cells) {
     if (c.status() == study::CellStatus::not_physical) {
-      md += fmt::format("| {:g} | {:g} | {} | | not physical: {} | | | | | | |\n", c.cell.significant_height,
+      md += fmt::format("| {:g} | {:g} | {} | | not physical: {} | | | | | | | |\n", c.cell.significant_height,
                         c.cell.peak_period, heading_name(c.cell.heading), c.failure);
       continue;
     }
     if (!c.ok) {
-      md += fmt::format("| {:g} | {:g} | {} | {} | failed: {} | | | | | | |\n", c.cell.significant_height, c.cell.peak_period,
+      md += fmt::format("| {:g} | {:g} | {} | {} | failed: {} | | | | | | | |\n", c.cell.significant_height, c.cell.peak_period,
                         heading_name(c.cell.heading), c.model.label(), c.failure);
       continue;
     }
     const study::CellStatistics& st = c.statistics;
-    md += fmt::format("| {:g} | {:g} | {} | {} | {} | {} ({:.3f}) | {:.4f} ± {:.4f} | {:.3f} | {:.3f} | {:.2f} | {:.2f} |\n",
+    md += fmt::format("| {:g} | {:g} | {} | {} | {} | {} ({:.3f}) | {:.4f} ± {:.4f} | {:.3f} | {:.3f} | {:.2f} | {:.4g} | {:.2f} |\n",
                       c.cell.significant_height, c.cell.peak_period, heading_name(c.cell.heading), c.model.label(),
                       verdict_word(c.verdict.pass), study::to_string(c.verdict.governing),
                       c.verdict[c.verdict.governing].utilisation, st.daf, st.daf_standard_error,
                       st.minimum_tension / st.static_tension, st.cargo_heave_mpm.mean, st.root_moment_mpm.mean / 1e6,
-                      st.compression_mpm.mean / 1e6);
+                      st.peak_stress_mpm.mean * 1e-6, st.compression_mpm.mean / 1e6);
   }
   md += "\n## The sea of each cell\n\nEach cell's records keep the band of its own JONSWAP spectrum that holds the "
         "stated share of its variance m0 (the rest split equally between the low and high tails; the share computed back "
@@ -253,6 +259,7 @@ std::string operability_json(const study::OperabilityStudy& s, const Operability
                      {"slack_margin", s.criteria.slack_margin},
                      {"cargo_motion_limit_m", s.criteria.cargo_motion_limit},
                      {"root_moment_capacity_Nm", s.criteria.root_moment_capacity},
+                     {"allowable_stress_MPa", s.criteria.allowable_stress * 1e-6},
                      {"buckling_ratio", s.criteria.buckling_ratio}};
   doc["engine"] = {{"description", s.farm.engine}, {"processes", s.farm.processes}, {"computed", s.farm.computed},
                    {"resumed", s.farm.resumed}, {"failed", s.farm.failed}, {"wall_s", s.farm.wall_seconds}};

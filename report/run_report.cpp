@@ -16,6 +16,7 @@
 
 #include "hydro/infinite_frequency.hpp"
 #include "multibody/output_channels.hpp"
+#include "report/boom_stress_report.hpp"
 #include "report/irregular_report.hpp"
 
 namespace ffrf::report {
@@ -95,6 +96,7 @@ std::string static_report(const scene::Scene& scene, const scene::BoomChoice& ch
   text += stiffening == scene::Stiffening::none
               ? "  model     linear-elastic boom: geometric stiffening off (--stiffening static|centrifugal|both)\n"
               : fmt::format("  model     linear-elastic boom with {} geometric stiffening\n", scene::to_string(stiffening));
+  text += boom_stress_static_line(scene, o);
   if (scene.simulation.cargo_lift > 0.0) {
     text += fmt::format("  start     cargo raised {:g} m above this posture and released at rest\n", scene.simulation.cargo_lift);
   }
@@ -203,6 +205,7 @@ Json model_json(const scene::Scene& scene, const study::ModelRun& run) {
                                                   {"displacement_from_static", series[i].about_static}};
   }
   json["outputs"] = std::move(outputs);
+  json["boom_stress"] = boom_stress_json(scene, run);
   Json wire{{"static_tension_N", run.statics.outputs.wire_tension},
             {"dynamic_amplification_factor", run.amplification},
             {"slack_events", run.slack_events()},
@@ -276,7 +279,7 @@ std::string run_header_text(const RunContext& c, const study::ModelRun& run) {
   return text;
 }
 
-std::string dynamics_text(const study::ModelRun& run) {
+std::string dynamics_text(const scene::Scene& scene, const study::ModelRun& run) {
   std::string text = fmt::format("\ndynamics ({}; motions are displacements from static equilibrium; RMS about the static value)\n",
                       run.window.after_ramp ? fmt::format("statistics over t > {:g} s, after the wave ramp", run.window.start_s)
                       : run.window.ramp_end_s > 0.0
@@ -295,6 +298,7 @@ std::string dynamics_text(const study::ModelRun& run) {
                         run.amplification, run.slack_events());
   }
   text += fmt::format("  max constraint residual {:.3g} m\n", run.max_constraint_residual);
+  if (!run.result.boom_stress.empty()) text += "  " + boom_stress_text(scene, run);
   if (run.irregular) text += irregular_text(*run.irregular);
   if (!run.result.detections.empty()) {
     text += "\ndetected\n";

@@ -45,7 +45,7 @@ std::string failure_json(const RunContext& context, const std::string& model, co
 // The human summary: the header (scene, model, integrator), then static_report(), then the
 // dynamics (statistics table, wire, solver costs).
 std::string run_header_text(const RunContext& context, const study::ModelRun& run);
-std::string dynamics_text(const study::ModelRun& run);
+std::string dynamics_text(const scene::Scene& scene, const study::ModelRun& run);
 
 // time_s and every crane_series() column, one row per output time.
 std::string timeseries_csv(const study::ModelRun& run);

@@ -12,11 +12,12 @@ namespace {
 
 const std::string kScene = source_file("cases/paper_floating_crane.toml");
 constexpr double kCargoWeight = 1.3e6 * 9.81;  // [N], the reference scene's cargo
-const char* const kCharts[] = {"crane_heave", "crane_pitch",    "cargo_heave", "cargo_pitch",
-                               "wire_tension", "tip_transverse", "tip_axial"};
+const char* const kCharts[] = {"crane_heave",    "crane_pitch", "cargo_heave", "cargo_pitch",
+                               "wire_tension",   "tip_transverse", "tip_axial", "boom_stress"};
 const char* const kHeader =
     "time_s,crane_surge_m,crane_heave_m,crane_pitch_deg,cargo_surge_m,cargo_heave_m,cargo_pitch_deg,tip_axial_m,"
-    "tip_transverse_m,wire_tension_N,luffing_tension_N,joint_force_x_N,joint_force_y_N,joint_moment_Nm,constraint_residual_m,"
+    "tip_transverse_m,wire_tension_N,luffing_tension_N,joint_force_x_N,joint_force_y_N,joint_moment_Nm,boom_peak_stress_MPa,"
+    "boom_peak_stress_x_m,boom_stress_utilisation,constraint_residual_m,"
     "kinetic_energy_J,gravity_energy_J,strain_energy_J,wire_energy_J,spring_energy_J";
 
 bool is_png(const fs::path& path) {
@@ -62,6 +63,14 @@ TEST(CliRun, WritesTheDocumentedCsvJsonAndCharts) {
     EXPECT_EQ(std::stod(first[column(kHeader, motion)]), 0.0) << motion << ": displacement from static equilibrium";
   }
   EXPECT_NEAR(std::stod(split(rows.back(), ',')[0]), 3.0, 1e-12);
+  // The stresses along the boom: one row per node of the 3-element mesh, the envelope holding the peak.
+  const auto stress = split(read_text(out / "boom_stress.csv"), '\n');
+  ASSERT_EQ(stress.size(), 1u + 4u);
+  EXPECT_EQ(stress[0],
+            "x_m,axial_min_N,axial_max_N,moment_min_Nm,moment_max_Nm,stress_min_MPa,stress_max_MPa,peak_axial_N,peak_moment_Nm,"
+            "peak_top_MPa,peak_bottom_MPa");
+  EXPECT_EQ(std::stod(split(stress[1], ',')[0]), 0.0);
+  EXPECT_EQ(std::stod(split(stress[4], ',')[0]), 120.0);
 
   const Json json = JsonParser(r.out).parse();
   // --json prints summary.json as the run made it; the file adds which charts were drawn (the
@@ -88,6 +97,12 @@ TEST(CliRun, WritesTheDocumentedCsvJsonAndCharts) {
   EXPECT_LT(std::abs(statics["hull_trim_deg"].number), 1.0);
   EXPECT_LT(statics["tip_transverse_m"].number, 0.0);
   EXPECT_EQ(statics["geometric_stiffening"].text, "none");
+  // The stresses: recovered from the nodal displacements, the peak of the run at least the one at rest.
+  const Json& stresses = json["boom_stress"];
+  EXPECT_EQ(stresses["recovery"].text, "the nodal displacements");
+  EXPECT_NEAR(stresses["fibre_distance_m"].number, std::sqrt(11.4 / 1.27), 1e-12);
+  EXPECT_GE(stresses["peak_MPa"].number, stresses["static_peak_MPa"].number);
+  EXPECT_NEAR(stresses["static_peak_MPa"].number, statics["boom_peak_stress_MPa"].number, 1e-9);
   // Beam statics of the boom: the root carries the axial components of its weight and the (vertical)
   // wire's pull, (1 200 t g + T) sin(60° + trim), in compression (the deflection changes it by < 0.1 %).
   const double elevation = std::numbers::pi / 3.0 + statics["hull_trim_deg"].number * std::numbers::pi / 180.0;
