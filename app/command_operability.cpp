@@ -122,10 +122,10 @@ int run_operability_command(const OperabilityOptions& options) {
   request.significant_heights = *hs;
   request.peak_periods = *tp;
   request.headings.clear();
-  for (const std::string& heading : options.headings) {
-    if (heading == "following") request.headings.push_back(hydro::WaveHeading::following);
-    else if (heading == "head") request.headings.push_back(hydro::WaveHeading::head);
-    else return bad_input(name, fmt::format("--heading {}: not a heading (following or head)", heading));
+  try {
+    for (const std::string& heading : options.headings) request.headings.push_back(study::parse_heading(heading));
+  } catch (const study::SettingError& error) {
+    return bad_input(name, option_message(error));
   }
   request.seeds = options.seeds;
   request.duration = options.duration;
@@ -185,13 +185,7 @@ int run_operability_command(const OperabilityOptions& options) {
   }
   if (!result.farm.root) return exit_ok;
   report::OperabilityContext context{options.scene, options.command_line, request.duration, request.seeds,
-                                     request.peak_enhancement, request.tolerance,
-                                     fmt::format("irregular, JONSWAP γ = {:g}, long-crested, {}; each cell's band holds {:g} % "
-                                                 "of its variance m0 (tails split equally)",
-                                                 request.peak_enhancement,
-                                                 request.components > 0 ? fmt::format("{} components per record", request.components)
-                                                                        : std::string("components every 2π/duration (never repeats)"),
-                                                 100.0 * request.variance_share)};
+                                     request.peak_enhancement, request.tolerance, report::operability_sea_text(request)};
   fmt::print(stderr, "{}", report::write_operability_outputs(options.out, result, context));
   fmt::print("{}\nwrote {} (report.md, operability.csv, operability.png, summary.json; journal {})\n",
              report::operability_text(result), options.out, result.farm.journal.string());

@@ -35,22 +35,16 @@ struct RecommendOptions {
   std::string out;
 };
 
-// "cargo_heave,wire_tension" → the channels; throws BadOption naming an unknown one.
+// "cargo_heave,wire_tension" → the channels (study::channels_named); throws BadOption naming an unknown one.
 std::vector<multibody::OutputChannel> parse_outputs(const std::string& text) {
-  std::string names;
-  for (const auto channel : multibody::all_channels) names += (names.empty() ? "" : ",") + std::string(multibody::channel_name(channel));
-  std::vector<multibody::OutputChannel> outputs;
+  std::vector<std::string> names;
   std::stringstream stream(text);
-  for (std::string item; std::getline(stream, item, ',');) {
-    const auto found = std::find_if(multibody::all_channels.begin(), multibody::all_channels.end(),
-                                    [&](multibody::OutputChannel c) { return multibody::channel_name(c) == item; });
-    if (found == multibody::all_channels.end()) {
-      throw BadOption(fmt::format("--outputs {}: unknown output '{}'; choose from {}", text, item, names));
-    }
-    outputs.push_back(*found);
+  for (std::string item; std::getline(stream, item, ',');) names.push_back(item);
+  try {
+    return study::channels_named(names);
+  } catch (const study::SettingError& error) {
+    throw BadOption(option_message(error));
   }
-  if (outputs.empty()) throw BadOption(fmt::format("--outputs {}: no output given; choose from {}", text, names));
-  return outputs;
 }
 
 int run_recommend(const RecommendOptions& options) {

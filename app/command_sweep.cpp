@@ -49,8 +49,6 @@ struct SweepOptions {
   std::string tolerance = "1%";
 };
 
-constexpr double quick_duration = 40.0;
-
 std::string read_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path.string() + ": cannot be read");
@@ -103,21 +101,20 @@ int run_sweep(const SweepOptions& options) {
   if (options.jobs < 0) {
     return bad_input("sweep", fmt::format("--jobs {}: not a thread count (valid range [1, inf), 0: all cores)", options.jobs));
   }
-  request.jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  request.jobs = study::worker_threads(options.jobs);
   request.reference = options.reference;
   std::optional<scene::Scene> scene = load_scene(options.scene, "sweep", true);
   if (!scene) return exit_bad_input;
   try {
     apply_radiation_option(*scene, options.radiation);
-    // A [bem] scene: the radiation models are an axis of the grid, unless --radiation fixes one.
-    request.radiation_axis = scene->bem.has_value() && options.radiation.empty();
-    // A pinned boom: the modal boom's mode set is an axis too.
-    request.mode_set_axis = scene->boom.mount && scene->boom.mount->pinned;
+    // A [bem] scene: the radiation models are an axis of the grid, unless --radiation fixes one; a
+    // pinned boom: the modal boom's mode set is an axis too.
+    study::add_scene_axes(request, *scene, !options.radiation.empty());
     request.stiffening = stiffening_option(options.stiffening);
     request.tolerance = parse_tolerance(options.tolerance);
     study::validate(request.reference);
     DynamicsOptions dynamics;  // checks the duration against the scene
-    dynamics.duration = options.duration.value_or(request.grid == study::SweepGrid::quick ? quick_duration : scene->simulation.duration);
+    dynamics.duration = options.duration.value_or(study::default_sweep_duration(*scene, request.grid));
     request.duration = integrator_settings(dynamics, *scene).duration;
   } catch (const BadOption& error) {
     return bad_input("sweep", error.what());
@@ -208,7 +205,7 @@ Command add_sweep_command(CLI::App& parent) {
   sub->add_option("--merge", options->merge, "Join these shard CSVs (sweep.csv of each shard's --out) into --out DIR")
       ->expected(1, -1);
   sub->add_option("--duration", options->duration,
-                  fmt::format("Simulated time [s] (default: {:g} s with --quick, the scene's duration otherwise)", quick_duration))
+                  fmt::format("Simulated time [s] (default: {:g} s with --quick, the scene's duration otherwise)", study::quick_sweep_duration))
       ->check(scene_key_range(scene::scene_key("simulation.duration")));
   sub->add_flag("--quick", options->quick,
                 "The small grid (the default): rigid, nodal N 1/4/16, modal k 1/2/4 +- static; cvode and generalized-alpha");

@@ -1,10 +1,13 @@
 // The one error window, judged outputs and worst error of the studies (see error_measure.hpp).
 #include "study/error_measure.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
 #include "scene/irregular_sea.hpp"
+#include "study/run_pipeline.hpp"
 
 namespace ffrf::study {
 
@@ -27,6 +30,25 @@ std::vector<multibody::OutputChannel> judged_outputs(const scene::Scene& scene) 
           OutputChannel::crane_pitch, OutputChannel::wire_tension, OutputChannel::joint_moment};
 }
 
+std::vector<multibody::OutputChannel> channels_named(const std::vector<std::string>& names) {
+  std::string choices;
+  for (const auto channel : multibody::all_channels) {  // piece by piece, as output_list
+    if (!choices.empty()) choices += ',';
+    choices += multibody::channel_name(channel);
+  }
+  if (names.empty()) throw SettingError(Setting::outputs, "", "no output given; choose from " + choices);
+  std::vector<multibody::OutputChannel> channels;
+  for (const std::string& name : names) {
+    const auto found = std::find_if(multibody::all_channels.begin(), multibody::all_channels.end(),
+                                    [&](multibody::OutputChannel c) { return multibody::channel_name(c) == name; });
+    if (found == multibody::all_channels.end()) {
+      throw SettingError(Setting::outputs, name, fmt::format("unknown output '{}'; choose from {}", name, choices));
+    }
+    channels.push_back(*found);
+  }
+  return channels;
+}
+
 double convergence_change(const scene::Scene& scene, const multibody::RunErrors& errors) {
   const bool pinned = scene.boom.mount && scene.boom.mount->pinned;
   double worst = 0.0;
@@ -39,7 +61,10 @@ double convergence_change(const scene::Scene& scene, const multibody::RunErrors&
 
 std::string output_list(const std::vector<multibody::OutputChannel>& outputs) {
   std::string s;
-  for (const auto channel : outputs) s += (s.empty() ? "" : ",") + std::string(multibody::channel_name(channel));
+  for (const auto channel : outputs) {  // piece by piece: a false -Wstringop-overflow of GCC 12 through the PCH
+    if (!s.empty()) s += ',';
+    s += multibody::channel_name(channel);
+  }
   return s;
 }
 
