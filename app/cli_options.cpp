@@ -241,9 +241,31 @@ std::optional<scene::Stiffening> stiffening_option(const std::string& stiffening
   return parsed;
 }
 
-std::optional<scene::Scene> load_scene(const std::string& path, const std::string& command, bool needs_base) {
+void add_set_option(CLI::App& sub, std::vector<std::string>& values) {
+  sub.add_option("--set", values,
+                 "Set a scene key for this run, as if the scene file said so: KEY=VALUE with the value as in the file, "
+                 "a unit where it has one (--set boom.angle=\"55 deg\" --set cargo.mass=\"2400 t\"); repeatable; "
+                 "checked like the file (docs/scenes.md)")
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+scene::SceneOverrides scene_overrides(const std::vector<std::string>& values) {
+  scene::SceneOverrides overrides;
+  for (const std::string& value : values) overrides.values.push_back(scene::parse_override(value, overrides.origin));
+  return overrides;
+}
+
+std::string overrides_text(const scene::Scene& scene) {
+  std::string text;
+  for (const std::string& value : scene.overrides) text += "\n--set " + value;
+  return text;
+}
+
+std::optional<scene::Scene> load_scene(const std::string& path, const std::vector<std::string>& set,
+                                       const std::string& command, bool needs_base) {
   try {
-    scene::Scene scene = scene::load_scene(path);
+    scene::Scene scene = scene::load_scene(path, scene_overrides(set));
     for (const std::string& warning : scene.warnings) fmt::print(stderr, "warning: {}\n", warning);
     if (needs_base && !scene.has_base()) {
       bad_input(command, fmt::format("{}: not a crane scene: it has neither a [hull] section (a crane needs [hull], [cargo], "

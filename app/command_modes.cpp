@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
@@ -34,6 +35,7 @@ using namespace ffrf::study;
 
 struct ModesOptions {
   std::string scene;
+  std::vector<std::string> set;  // --set KEY=VALUE
   std::optional<int> elements;
   std::optional<int> modes;
   std::string boundary;
@@ -175,7 +177,7 @@ int run_spinning(const ModesOptions& options, const scene::Scene& scene, const f
 }
 
 int run_modes(const ModesOptions& options) {
-  const std::optional<scene::Scene> loaded = load_scene(options.scene, "modes", false);
+  const std::optional<scene::Scene> loaded = load_scene(options.scene, options.set, "modes", false);
   if (!loaded) return exit_bad_input;
   const scene::Scene& scene = *loaded;
   study::ModesRequest request{options.elements, options.modes, options.boundary, options.solver};
@@ -215,6 +217,7 @@ Command add_modes_command(CLI::App& parent) {
   auto options = std::make_shared<ModesOptions>();
   CLI::App* sub = parent.add_subcommand("modes", "Natural frequencies and mode shapes of the boom vs Euler–Bernoulli");
   sub->add_option("scene", options->scene, "Scene file (TOML)")->required();
+  add_set_option(*sub, options->set);
   sub->add_option("--elements,-N", options->elements, "Number of beam elements (default: boom.elements of the scene)")
       ->check(scene_key_count(scene::scene_key("boom.elements")));
   sub->add_option("--modes,-k", options->modes, "Number of modes (default: 6, plus the rigid modes for free-free)")

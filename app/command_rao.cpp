@@ -37,6 +37,7 @@ namespace {
 
 struct RaoOptions {
   std::string scene;
+  std::vector<std::string> set;  // --set KEY=VALUE
   ModelOptions model;
   std::string periods;      // "a:b:n" [s]
   std::string frequencies;  // "w1,w2,..." [rad/s]
@@ -142,7 +143,7 @@ void write_outputs(report::StagedDirectory& out, const study::RaoResult& result,
 
 int run_rao(const RaoOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const std::optional<scene::Scene> scene = load_scene(options.scene, "rao", true);
+  const std::optional<scene::Scene> scene = load_scene(options.scene, options.set, "rao", true);
   if (!scene) return exit_bad_input;
   study::RaoRequest request;
   study::TimeDomainCheckRequest check_request;
@@ -219,6 +220,7 @@ Command add_rao_command(CLI::App& parent) {
              "nodal and modal k = 2 + static booms (the scene's boom.elements) side by side, the grid refined at the resonance "
              "peaks, a sea spectrum over the charts; --check-time-domain against regular-wave runs");
   sub->add_option("scene", options->scene, "Scene file (TOML) with [hull], [boom], [cargo] and [wire]")->required();
+  add_set_option(*sub, options->set);
   add_model_options(*sub, options->model);
   auto* periods = sub->add_option("--periods", options->periods,
                                   fmt::format("Wave periods a:b:n [s], n evenly spaced from a to b (default {})", default_periods));

@@ -11,6 +11,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "app/cli_options.hpp"
 #include "app/radiation_option.hpp"
@@ -26,6 +27,7 @@ namespace {
 
 struct RecommendOptions {
   std::string scene;
+  std::vector<std::string> set;  // --set KEY=VALUE
   std::string tolerance = "1%";
   std::string outputs;  // empty: the judged outputs of the scene
   std::string radiation;  // overrides bem.radiation_model
@@ -48,7 +50,7 @@ std::vector<multibody::OutputChannel> parse_outputs(const std::string& text) {
 }
 
 int run_recommend(const RecommendOptions& options) {
-  std::optional<scene::Scene> scene = load_scene(options.scene, "recommend", true);
+  std::optional<scene::Scene> scene = load_scene(options.scene, options.set, "recommend", true);
   if (!scene) return exit_bad_input;
   study::RecommendRequest request;
   multibody::RunSettings radiation_settings;
@@ -112,6 +114,7 @@ Command add_recommend_command(CLI::App& parent) {
       "recommend", "The cheapest boom model and integrator whose error stays within a tolerance: reasoned from the "
                    "physics, then proved by verification runs against a converged reference");
   sub->add_option("scene", options->scene, "Scene file (TOML) of a crane or a hub")->required();
+  add_set_option(*sub, options->set);
   sub->add_option("--tolerance", options->tolerance,
                   "Largest worst normalized RMS error over the outputs, in (0, 1) or as a percentage (1%)")
       ->capture_default_str();

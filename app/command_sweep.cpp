@@ -13,6 +13,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 #include <thread>
 
 #include <unistd.h>
@@ -37,6 +38,7 @@ namespace {
 
 struct SweepOptions {
   std::string scene;
+  std::vector<std::string> set;  // --set KEY=VALUE
   std::string out;
   std::string radiation;  // overrides bem.radiation_model of every configuration
   int jobs = 0;
@@ -103,7 +105,7 @@ int run_sweep(const SweepOptions& options) {
   }
   request.jobs = study::worker_threads(options.jobs);
   request.reference = options.reference;
-  std::optional<scene::Scene> scene = load_scene(options.scene, "sweep", true);
+  std::optional<scene::Scene> scene = load_scene(options.scene, options.set, "sweep", true);
   if (!scene) return exit_bad_input;
   try {
     apply_radiation_option(*scene, options.radiation);
@@ -137,7 +139,7 @@ int run_sweep(const SweepOptions& options) {
   farm.study = fmt::format("ffrf sweep {} --{}", options.scene, study::to_string(request.grid));
   farm.settings = fmt::format("{}\n{}\ngrid={} duration={:.17g} reference={} {:.17g} {:.17g} {} stiffening={} tolerance={:.17g} "
                               "max_explicit_steps={} radiation={}\n",
-                              version_text(), read_file(options.scene), study::to_string(request.grid), request.duration,
+                              version_text(), read_file(options.scene) + overrides_text(*scene), study::to_string(request.grid), request.duration,
                               request.reference.start_elements, request.reference.start_relative_tolerance,
                               request.reference.bound, request.reference.max_levels, options.stiffening, request.tolerance,
                               request.max_explicit_steps, request.radiation_axis ? "axis" : options.radiation);
@@ -198,6 +200,7 @@ Command add_sweep_command(CLI::App& parent) {
   CLI::App* sub = parent.add_subcommand(
       "sweep", "Boom model x integrator x tolerance grid against a converged reference: accuracy-speed chart, Pareto front");
   sub->add_option("scene", options->scene, "Scene file (TOML) of a crane");
+  add_set_option(*sub, options->set);
   sub->add_option("--out", options->out,
                   "Write sweep.csv, accuracy_speed.png, mode_count.png (with gnuplot scripts and data) and report.md here");
   sub->add_option("--jobs,-j", options->jobs, "Worker threads (0: one per core)")->capture_default_str()->check(whole_number(0, 1024));
