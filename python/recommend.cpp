@@ -40,6 +40,8 @@ py::dict recommend(const SceneValue& value, const py::dict& keywords) {
     chosen = py::dict(py::arg("label") = c.label(), py::arg("boom") = std::string(scene::to_string(c.choice.kind)),
                       py::arg("elements") = c.choice.elements, py::arg("modes") = c.choice.modes,
                       py::arg("static_modes") = c.choice.static_modes,
+                      py::arg("stiffening") = std::string(scene::to_string(
+                          c.choice.stiffening.value_or(rec.reference_scene.boom.stiffening))),
                       py::arg("integrator") = std::string(solve::to_string(c.integrator)),
                       py::arg("rtol") = rec.reasoning.relative_tolerance, py::arg("error") = c.error,
                       py::arg("work") = c.work(), py::arg("wall_seconds") = c.wall_seconds,

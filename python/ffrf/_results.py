@@ -119,7 +119,7 @@ class Comparison(Result):
 
 class Recommendation(Result):
     """The cheapest model within the tolerance (``ffrf.recommend``): ``chosen`` (dict: label, boom,
-    elements, modes, static_modes, integrator, rtol, error, work, wall_seconds and ``command``, the
+    elements, modes, static_modes, stiffening, integrator, rtol, error, work, wall_seconds and ``command``, the
     ``ffrf run`` line that reproduces it; None when no candidate met the tolerance), ``decision`` (the
     sentence), ``candidates`` (summary.json's list)."""
 

@@ -52,11 +52,14 @@ def test_recommend_equals_the_command_line_and_meets_the_tolerance():
     assert chosen["error"] <= 0.01
     assert chosen["label"] in rec.decision
     assert chosen["command"].startswith(f"ffrf run {PAPER} --boom {chosen['boom']}")
-    # Its run, as the command line's line says, is a run of that model.
-    run = ffrf.run(PAPER, boom=chosen["boom"], elements=chosen["elements"], duration=SHORT, rtol=chosen["rtol"],
-                   atol=chosen["rtol"], integrator=chosen["integrator"],
+    # Its run with the settings the command line's line names is the model that passed: the same
+    # label, and the same solver work as its verification run.
+    assert f"--stiffening {chosen['stiffening']}" in chosen["command"]
+    run = ffrf.run(PAPER, boom=chosen["boom"], elements=chosen["elements"], stiffening=chosen["stiffening"], duration=SHORT,
+                   rtol=chosen["rtol"], atol=chosen["rtol"], integrator=chosen["integrator"],
                    **({"modes": chosen["modes"], "static_modes": chosen["static_modes"]} if chosen["boom"] == "modal" else {}))
-    assert run.model in chosen["label"]
+    assert chosen["label"].startswith(run.model)
+    assert run.work == chosen["work"]
 
 
 def test_recommend_with_values_records_them_in_its_command():

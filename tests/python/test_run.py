@@ -94,3 +94,28 @@ def test_a_failed_solver_raises_solver_failure():
     assert failure.time >= 0.0
     assert "step" in failure.adjust or "rtol" in failure.adjust
     assert str(failure).startswith(f"solver failure ({failure.kind}):")
+
+
+def test_the_gil_is_released_while_a_study_runs():
+    # Another Python thread keeps running while the crane is integrated.
+    import threading
+    import time
+    ticks = []
+    done = threading.Event()
+
+    def tick():
+        while not done.is_set():
+            ticks.append(time.monotonic())
+            time.sleep(0.001)
+
+    ticker = threading.Thread(target=tick)
+    ticker.start()
+    started = time.monotonic()
+    ffrf.run(PAPER, boom="nodal", elements=32, duration=120.0)
+    finished = time.monotonic()
+    done.set()
+    ticker.join()
+    during = [t for t in ticks if started < t < finished]
+    # Holding the GIL through the call would leave the ticker no tick at all until it returned.
+    assert finished - started > 0.2
+    assert len(during) >= 20
