@@ -42,3 +42,10 @@ def test_stability_equals_the_command_line_and_leaves_nothing(tmp_path, monkeypa
     out = tmp_path / "report"
     ffrf.stability(SPIN_UP, quick=True, out=out)
     assert (out / "report.md").is_file() and (out / "summary.json").is_file()
+
+
+def test_stability_on_the_reference_crane_names_its_experiments():
+    # A crane with a cargo: the explicit step limits, the drift, the dropped cargo's wire and the buckling margin.
+    stability = ffrf.stability(PAPER, quick=True)
+    assert list(stability.summary["sections"]) == ["explicit", "drift", "wire", "buckling"]
+    assert_same(stability.summary, json.loads(cli("stability", PAPER, "--quick", "--json").stdout))
