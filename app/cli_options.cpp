@@ -142,6 +142,19 @@ std::string_view option_name(study::Setting setting) {
     case study::Setting::stiffening: return "--stiffening";
     case study::Setting::mode_set: return "--mode-set";
     case study::Setting::stress_recovery: return "--stress-recovery";
+    case study::Setting::integrator: return "--integrator";
+    case study::Setting::formulation: return "--formulation";
+    case study::Setting::solver: return "--solver";
+    case study::Setting::step_limit: return "--max-steps";
+    case study::Setting::wall_clock_limit: return "--max-wall-time";
+    case study::Setting::step_floor: return "--min-step";
+    case study::Setting::wave_periods: return "--periods";
+    case study::Setting::wave_frequencies: return "--frequencies";
+    case study::Setting::outputs: return "--outputs";
+    case study::Setting::eigen_solver: return "--solver";
+    case study::Setting::boundary: return "--boundary";
+    case study::Setting::grid: return "--quick/--medium/--full";
+    case study::Setting::headings: return "--heading";
   }
   return "?";
 }
@@ -151,41 +164,11 @@ std::string option_message(const study::SettingError& error) {
 }
 
 solve::Integrator integrator_choice(const DynamicsOptions& options) {
-  if (!options.integrator.empty() && (!options.formulation.empty() || !options.solver.empty())) {
-    throw BadOption(fmt::format("--integrator {} names a formulation and a solver: give either --integrator or "
-                                "--formulation/--solver",
-                                options.integrator));
+  try {
+    return study::integrator_choice(options.integrator, options.formulation, options.solver);
+  } catch (const study::SettingError& error) {
+    throw BadOption(option_message(error));
   }
-  if (options.formulation.empty() && options.solver.empty()) {
-    const std::string name = options.integrator.empty() ? "cvode" : options.integrator;
-    const auto kind = solve::parse_integrator(name);
-    if (!kind) {
-      throw BadOption(fmt::format("--integrator {}: unknown integrator; choose one of {}", name, solve::integrator_choices()));
-    }
-    return *kind;
-  }
-  solve::Integrator choice = solve::Integrator::cvode;
-  if (!options.formulation.empty()) {
-    const auto formulation = solve::parse_formulation(options.formulation);
-    if (!formulation) {
-      throw BadOption(fmt::format("--formulation {}: unknown formulation; choose one of {}", options.formulation,
-                                  solve::formulation_choices()));
-    }
-    choice.formulation = *formulation;
-  }
-  if (!options.solver.empty()) {
-    const auto solver = solve::parse_solver(options.solver);
-    if (!solver) {
-      throw BadOption(fmt::format("--solver {}: unknown solver; choose one of {}", options.solver, solve::solver_choices()));
-    }
-    choice.solver = *solver;
-  }
-  if (!solve::is_valid(choice)) {
-    throw BadOption(fmt::format("--formulation {} --solver {}: not an implemented integrator; valid pairs: {}",
-                                solve::to_string(choice.formulation), solve::to_string(choice.solver),
-                                solve::valid_integrators()));
-  }
-  return choice;
 }
 
 multibody::RunSettings integrator_settings(const DynamicsOptions& options, const scene::Scene& scene) {
@@ -264,9 +247,31 @@ std::optional<scene::Stiffening> stiffening_option(const std::string& stiffening
   return parsed;
 }
 
-std::optional<scene::Scene> load_scene(const std::string& path, const std::string& command, bool needs_base) {
+void add_set_option(CLI::App& sub, std::vector<std::string>& values) {
+  sub.add_option("--set", values,
+                 "Set a scene key for this run, as if the scene file said so: KEY=VALUE with the value as in the file, "
+                 "a unit where it has one (--set boom.angle=\"55 deg\" --set cargo.mass=\"2400 t\"); repeatable; "
+                 "checked like the file (docs/scenes.md)")
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+scene::SceneOverrides scene_overrides(const std::vector<std::string>& values) {
+  scene::SceneOverrides overrides;
+  for (const std::string& value : values) overrides.values.push_back(scene::parse_override(value, overrides.origin));
+  return overrides;
+}
+
+std::string overrides_text(const scene::Scene& scene) {
+  std::string text;
+  for (const std::string& value : scene.overrides) text += "\n--set " + value;
+  return text;
+}
+
+std::optional<scene::Scene> load_scene(const std::string& path, const std::vector<std::string>& set,
+                                       const std::string& command, bool needs_base) {
   try {
-    scene::Scene scene = scene::load_scene(path);
+    scene::Scene scene = scene::load_scene(path, scene_overrides(set));
     for (const std::string& warning : scene.warnings) fmt::print(stderr, "warning: {}\n", warning);
     if (needs_base && !scene.has_base()) {
       bad_input(command, fmt::format("{}: not a crane scene: it has neither a [hull] section (a crane needs [hull], [cargo], "

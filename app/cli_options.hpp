@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "solve/failure.hpp"
 #include "scene/crane_builder.hpp"
@@ -80,9 +81,20 @@ std::string_view option_name(study::Setting setting);
 // "--rtol 0: not a valid tolerance (valid range (0, 1))"
 std::string option_message(const study::SettingError& error);
 
-// Loads the scene; prints every problem on stderr and returns nothing on failure (exit 2). With
-// `needs_base`, a scene without [hull] or [hub] is refused (the crane commands).
-std::optional<scene::Scene> load_scene(const std::string& path, const std::string& command, bool needs_base);
+// --set KEY=VALUE (repeatable) of every command that reads a scene: a scene value given beside the
+// file, checked as the file's own (scene/scene_overrides.hpp).
+void add_set_option(CLI::App& sub, std::vector<std::string>& values);
+// The --set values; throws scene::SceneError for one that is not KEY=VALUE.
+scene::SceneOverrides scene_overrides(const std::vector<std::string>& values);
+
+// "\n--set boom.angle=55 deg" per value the scene was given beside its file (empty: none): what a
+// journal's settings add to the file's text, so that a rerun with other values starts afresh.
+std::string overrides_text(const scene::Scene& scene);
+
+// Loads the scene with the --set values; prints every problem on stderr and returns nothing on
+// failure (exit 2). With `needs_base`, a scene without [hull] or [hub] is refused (the crane commands).
+std::optional<scene::Scene> load_scene(const std::string& path, const std::vector<std::string>& set,
+                                       const std::string& command, bool needs_base);
 
 // "ffrf CMD: error: MESSAGE" on stderr; returns exit_bad_input.
 int bad_input(const std::string& command, const std::string& message);

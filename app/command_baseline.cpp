@@ -29,6 +29,7 @@ namespace fs = std::filesystem;
 
 struct RecordOptions {
   std::string scene;
+  std::vector<std::string> set;  // --set KEY=VALUE
   ModelOptions model;
   DynamicsOptions dynamics;
   std::string outputs;  // empty: the judged outputs
@@ -37,6 +38,7 @@ struct RecordOptions {
 
 struct CheckOptions {
   std::string scene;
+  std::vector<std::string> set;  // --set KEY=VALUE
   std::string baseline;
   ModelOptions model;  // given: overrides the baseline's
   std::string integrator;
@@ -108,7 +110,7 @@ study::BaselineTolerances tolerances(const CheckOptions& options) {
 }
 
 int record(const RecordOptions& options) {
-  const std::optional<scene::Scene> scene = load_scene(options.scene, "baseline record", true);
+  const std::optional<scene::Scene> scene = load_scene(options.scene, options.set, "baseline record", true);
   if (!scene) return exit_bad_input;
   study::BaselineRequest request;
   report::BaselineFile file;
@@ -146,7 +148,7 @@ int record(const RecordOptions& options) {
 }
 
 int check(const CheckOptions& options) {
-  const std::optional<scene::Scene> scene = load_scene(options.scene, "baseline check", true);
+  const std::optional<scene::Scene> scene = load_scene(options.scene, options.set, "baseline check", true);
   if (!scene) return exit_bad_input;
   report::BaselineFile baseline;
   study::BaselineTolerances limits;
@@ -208,6 +210,7 @@ Command add_baseline_command(CLI::App& parent) {
 
   CLI::App* rec = sub->add_subcommand("record", "Run one model and write its baseline file (docs/baselines.md)");
   rec->add_option("scene", record_options->scene, "Scene file (TOML) of a crane or a hub")->required();
+  add_set_option(*rec, record_options->set);
   add_model_options(*rec, record_options->model);
   add_dynamics_options(*rec, record_options->dynamics);
   rec->add_option("--outputs", record_options->outputs,
@@ -218,6 +221,7 @@ Command add_baseline_command(CLI::App& parent) {
   CLI::App* chk = sub->add_subcommand(
       "check", "Run the baseline's model again and judge every recorded quantity; exit 4 on a regression");
   chk->add_option("scene", check_options->scene, "Scene file (TOML)")->required();
+  add_set_option(*chk, check_options->set);
   chk->add_option("baseline", check_options->baseline, "Baseline file written by `ffrf baseline record`")->required();
   add_model_options(*chk, check_options->model);
   chk->add_option("--integrator", check_options->integrator,

@@ -1,10 +1,12 @@
-// `ffrf check SCENE`: validates a scene file against the scene schema and prints every problem
+// `ffrf check SCENE [--set KEY=VALUE]`: validates a scene file (with the values set beside it) against the scene schema and prints every problem
 // as `FILE:LINE: key = value: message (valid range ...)` (exit 2), or a one-line summary (exit 0).
 #include <fmt/format.h>
 
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "app/cli_options.hpp"
 #include "app/commands.hpp"
 #include "scene/irregular_sea.hpp"
 #include "scene/scene_loader.hpp"
@@ -61,11 +63,13 @@ std::string summary(const scene::Scene& scene) {
 
 Command add_check_command(CLI::App& parent) {
   auto scene_path = std::make_shared<std::string>();
+  auto set = std::make_shared<std::vector<std::string>>();
   CLI::App* sub = parent.add_subcommand("check", "Validate a scene file and list every problem");
   sub->add_option("scene", *scene_path, "Scene file (TOML)")->required();
-  return {sub, [scene_path] {
+  add_set_option(*sub, *set);
+  return {sub, [scene_path, set] {
             try {
-              const scene::Scene scene = scene::load_scene(*scene_path);
+              const scene::Scene scene = scene::load_scene(*scene_path, scene_overrides(*set));
               for (const std::string& warning : scene.warnings) fmt::print(stderr, "warning: {}\n", warning);
               fmt::print("{}: OK ({}{})\n", *scene_path, scene.name.empty() ? "" : scene.name + ": ", summary(scene));
               return exit_ok;

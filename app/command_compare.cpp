@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/cli_options.hpp"
 #include "app/radiation_option.hpp"
@@ -26,6 +27,7 @@ namespace {
 
 struct CompareOptions {
   std::string scene;
+  std::vector<std::string> set;  // --set KEY=VALUE
   DynamicsOptions dynamics;
   study::ReferenceOptions reference;
   std::string stiffening;
@@ -76,7 +78,7 @@ void write_outputs(report::StagedDirectory& out, const report::RunContext& conte
 }
 
 int run_compare(const CompareOptions& options) {
-  std::optional<scene::Scene> scene = load_scene(options.scene, "compare", true);
+  std::optional<scene::Scene> scene = load_scene(options.scene, options.set, "compare", true);
   if (!scene) return exit_bad_input;
   study::CompareRequest request;
   try {
@@ -144,6 +146,7 @@ Command add_compare_command(CLI::App& parent) {
       "compare", "Rigid, nodal N = 1 (the paper's model), nodal N = 16 and modal k = 1, 2, 4 (with and without static modes) booms on "
       "one scene against a converged reference: charts, errors, costs");
   sub->add_option("scene", options->scene, "Scene file (TOML) with [hull], [boom], [cargo] and [wire], or a [hub]")->required();
+  add_set_option(*sub, options->set);
   add_dynamics_options(*sub, options->dynamics);
   add_reference_options(*sub, options->reference);
   add_stiffening_option(*sub, options->stiffening);

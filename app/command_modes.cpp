@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
@@ -34,6 +35,7 @@ using namespace ffrf::study;
 
 struct ModesOptions {
   std::string scene;
+  std::vector<std::string> set;  // --set KEY=VALUE
   std::optional<int> elements;
   std::optional<int> modes;
   std::string boundary;
@@ -45,7 +47,6 @@ struct ModesOptions {
   std::optional<std::string> axial_force;  // P [N]
 };
 
-constexpr int default_elastic_modes = 6;
 constexpr int default_campbell_modes = 3;  // bending modes tracked over the spin range
 
 void progress(const std::string& message) { app::progress("modes", message); }
@@ -176,46 +177,31 @@ int run_spinning(const ModesOptions& options, const scene::Scene& scene, const f
 }
 
 int run_modes(const ModesOptions& options) {
-  const std::optional<scene::Scene> loaded = load_scene(options.scene, "modes", false);
+  const std::optional<scene::Scene> loaded = load_scene(options.scene, options.set, "modes", false);
   if (!loaded) return exit_bad_input;
   const scene::Scene& scene = *loaded;
-  fem::BeamMesh mesh = scene.boom.mesh;
-  if (options.elements) {
-    if (*options.elements < 1) {
-      return bad_input(fmt::format("--elements {} is not a valid element count (valid range [1, inf))", *options.elements));
-    }
-    mesh.element_count = *options.elements;
+  study::ModesRequest request{options.elements, options.modes, options.boundary, options.solver};
+  const bool spinning = options.spin || options.spin_range || options.axial_force;
+  if (spinning) request.count.reset();  // the spinning beam's count is checked there
+  study::ModesSetup setup;
+  try {
+    setup = study::modes_setup(scene, request);
+  } catch (const study::SettingError& error) {
+    return bad_input(option_message(error));
   }
-  fem::Boundary boundary = scene.boom.boundary;
-  if (!options.boundary.empty()) {
-    const auto parsed = fem::parse_boundary(options.boundary);
-    if (!parsed) {
-      return bad_input(fmt::format("--boundary {}: unknown boundary condition; choose one of {}", options.boundary,
-                                   fem::boundary_choices()));
-    }
-    boundary = *parsed;
-  }
-  const auto solver = modal::parse_eigen_solver(options.solver);
-  if (!solver) {
-    return bad_input(fmt::format("--solver {}: unknown solver; choose one of {}", options.solver,
-                                 modal::eigen_solver_choices()));
-  }
-  if (options.spin || options.spin_range || options.axial_force) return run_spinning(options, scene, mesh, boundary, *solver);
-  const int dof = free_dof_count(mesh, boundary);
-  const int count = options.modes.value_or(std::min(dof - 1, default_elastic_modes + fem::rigid_mode_count(boundary)));
-  if (count < 1) return bad_input(fmt::format("--modes {} is not a valid mode count (valid range [1, {}])", count, dof - 1));
-  if (count >= dof) {
-    return bad_input(fmt::format("--modes {} exceeds the {} modes available from the {} free DOFs of N = {} {} "
-                                 "(valid range [1, {}])",
-                                 count, dof - 1, dof, mesh.element_count, fem::to_string(boundary), dof - 1));
-  }
+  const fem::BeamMesh& mesh = setup.mesh;
+  if (spinning) return run_spinning(options, scene, mesh, setup.boundary, setup.solver);
+  const int dof = free_dof_count(mesh, setup.boundary);
+  const int count = setup.count;
+  const fem::Boundary boundary = setup.boundary;
+  const modal::EigenSolverKind solver = setup.solver;
 
   // The input is valid: from here on, DIR's old completeness marker no longer describes DIR.
   std::optional<StagedDirectory> out;
   if (!options.out.empty()) out.emplace(options.out, "summary.json");
 
   progress(fmt::format("solving {} modes, N = {} ({} DOFs) ...", count, mesh.element_count, dof));
-  const ModesResult result = solve_modes(mesh, boundary, *solver, count);
+  const ModesResult result = solve_modes(mesh, boundary, solver, count);
   progress_done();
   for (const std::string& warning : result.warnings) fmt::print(stderr, "ffrf modes: warning: {}\n", warning);
   const ModesContext context{options.scene, scene.name};
@@ -231,6 +217,7 @@ Command add_modes_command(CLI::App& parent) {
   auto options = std::make_shared<ModesOptions>();
   CLI::App* sub = parent.add_subcommand("modes", "Natural frequencies and mode shapes of the boom vs Euler–Bernoulli");
   sub->add_option("scene", options->scene, "Scene file (TOML)")->required();
+  add_set_option(*sub, options->set);
   sub->add_option("--elements,-N", options->elements, "Number of beam elements (default: boom.elements of the scene)")
       ->check(scene_key_count(scene::scene_key("boom.elements")));
   sub->add_option("--modes,-k", options->modes, "Number of modes (default: 6, plus the rigid modes for free-free)")

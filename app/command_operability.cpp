@@ -33,6 +33,7 @@ namespace {
 
 struct OperabilityOptions {
   std::string scene, out, hs, tp;
+  std::vector<std::string> set;  // --set KEY=VALUE
   std::vector<std::string> headings{"following"};
   int seeds = 3;
   double duration = 10800.0;
@@ -81,10 +82,12 @@ std::string echoed_command(const OperabilityOptions& o) {
   std::string headings;
   for (const std::string& h : o.headings) headings += (headings.empty() ? "" : ",") + h;
   const study::OperabilityCriteria& c = o.criteria;
-  return fmt::format("operability {} --hs {} --tp {} --heading {} --seeds {} --duration {:g} --gamma {:g} --components {} "
+  std::string set;
+  for (const std::string& value : o.set) set += fmt::format(" --set '{}'", value);
+  return fmt::format("operability {}{} --hs {} --tp {} --heading {} --seeds {} --duration {:g} --gamma {:g} --components {} "
                      "--band-share {:g} --tolerance {} --verify {} --converged-elements {} --daf-limit {:g} "
                      "--slack-margin {:g} --cargo-motion-limit {:g} --moment-capacity {:g} --buckling-ratio {:g} --out {}",
-                     o.scene, o.hs, o.tp, headings, o.seeds, o.duration, o.gamma, o.components, o.band_share, o.tolerance,
+                     o.scene, set, o.hs, o.tp, headings, o.seeds, o.duration, o.gamma, o.components, o.band_share, o.tolerance,
                      o.verify, o.converged_elements, c.daf_limit, c.slack_margin, c.cargo_motion_limit,
                      c.root_moment_capacity, c.buckling_ratio, o.out);
 }
@@ -122,10 +125,10 @@ int run_operability_command(const OperabilityOptions& options) {
   request.significant_heights = *hs;
   request.peak_periods = *tp;
   request.headings.clear();
-  for (const std::string& heading : options.headings) {
-    if (heading == "following") request.headings.push_back(hydro::WaveHeading::following);
-    else if (heading == "head") request.headings.push_back(hydro::WaveHeading::head);
-    else return bad_input(name, fmt::format("--heading {}: not a heading (following or head)", heading));
+  try {
+    for (const std::string& heading : options.headings) request.headings.push_back(study::parse_heading(heading));
+  } catch (const study::SettingError& error) {
+    return bad_input(name, option_message(error));
   }
   request.seeds = options.seeds;
   request.duration = options.duration;
@@ -135,7 +138,7 @@ int run_operability_command(const OperabilityOptions& options) {
   request.verify_cells = options.verify;
   request.converged_elements = options.converged_elements;
   request.criteria = options.criteria;
-  std::optional<scene::Scene> scene = load_scene(options.scene, name, true);
+  std::optional<scene::Scene> scene = load_scene(options.scene, options.set, name, true);
   if (!scene) return exit_bad_input;
   if (!scene->is_crane() || !scene->has_cargo()) return bad_input(name, fmt::format("{}: not a floating crane with a cargo", options.scene));
   try {
@@ -170,7 +173,7 @@ int run_operability_command(const OperabilityOptions& options) {
   // Everything besides the task keys that a record depends on.
   farm.settings = fmt::format("{}\n{}\nseeds={} duration={:.17g} gamma={:.17g} components={} band_share={:.17g} "
                               "tolerance={:.17g} converged={} verify={}\n",
-                              version_text(), read_text(options.scene), request.seeds, request.duration,
+                              version_text(), read_text(options.scene) + overrides_text(*scene), request.seeds, request.duration,
                               request.peak_enhancement, request.components, request.variance_share, request.tolerance,
                               request.converged_elements, request.verify_cells);
   farm.threads = options.threads;
@@ -185,13 +188,7 @@ int run_operability_command(const OperabilityOptions& options) {
   }
   if (!result.farm.root) return exit_ok;
   report::OperabilityContext context{options.scene, options.command_line, request.duration, request.seeds,
-                                     request.peak_enhancement, request.tolerance,
-                                     fmt::format("irregular, JONSWAP γ = {:g}, long-crested, {}; each cell's band holds {:g} % "
-                                                 "of its variance m0 (tails split equally)",
-                                                 request.peak_enhancement,
-                                                 request.components > 0 ? fmt::format("{} components per record", request.components)
-                                                                        : std::string("components every 2π/duration (never repeats)"),
-                                                 100.0 * request.variance_share)};
+                                     request.peak_enhancement, request.tolerance, report::operability_sea_text(request)};
   fmt::print(stderr, "{}", report::write_operability_outputs(options.out, result, context));
   fmt::print("{}\nwrote {} (report.md, operability.csv, operability.png, summary.json; journal {})\n",
              report::operability_text(result), options.out, result.farm.journal.string());
@@ -205,6 +202,7 @@ Command add_operability_command(CLI::App& parent) {
   CLI::App* sub = parent.add_subcommand(
       "operability", "Operability table over sea states (Hs x Tp x heading, seeds per cell) on the distributed engine");
   sub->add_option("scene", options->scene, "Scene file (TOML) of a floating crane with a cargo")->required();
+  add_set_option(*sub, options->set);
   sub->add_option("--hs", options->hs, "Significant wave heights a:b:n [m] (n values from a to b)")->required();
   sub->add_option("--tp", options->tp, "Peak periods a:b:n [s]")->required();
   sub->add_option("--heading", options->headings, "Headings: following, head (several: the grid's third axis)")

@@ -13,7 +13,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -38,6 +37,7 @@ namespace {
 
 struct RaoOptions {
   std::string scene;
+  std::vector<std::string> set;  // --set KEY=VALUE
   ModelOptions model;
   std::string periods;      // "a:b:n" [s]
   std::string frequencies;  // "w1,w2,..." [rad/s]
@@ -51,9 +51,10 @@ struct RaoOptions {
   std::string out;
 };
 
-constexpr const char* default_periods = "3:30:109";
-constexpr double max_period = 1000.0;      // [s]
-constexpr double max_frequency = 100.0;    // [rad/s]
+const std::string default_periods = fmt::format("{:g}:{:g}:{}", study::default_rao_shortest_period,
+                                                study::default_rao_longest_period, study::default_rao_period_count);
+constexpr double max_period = study::max_rao_period;        // [s]
+constexpr double max_frequency = study::max_rao_frequency;  // [rad/s]
 
 int bad_input(const std::string& message) { return app::bad_input("rao", message); }
 
@@ -83,10 +84,7 @@ std::vector<double> parse_period_range(const std::string& text) {
   if (!(a > 0.0) || !(b > a) || b > max_period || n != std::floor(n) || n < 2.0 || n > 10000.0) {
     throw BadOption(fmt::format("--periods {}: out of range ({})", text, expected));
   }
-  std::vector<double> omegas;
-  const int count = static_cast<int>(n);
-  for (int i = count - 1; i >= 0; --i) omegas.push_back(2.0 * std::numbers::pi / (a + (b - a) * i / (count - 1)));
-  return omegas;
+  return study::period_grid(a, b, static_cast<int>(n));
 }
 
 // "x,y,..." positive numbers below `maximum`.
@@ -106,10 +104,7 @@ std::vector<double> parse_list(const std::string& option, const std::string& tex
 // --spectrum: "jonswap:Hs:Tp[:gamma]" or "pm:Hs:Tp" (Hs in m, Tp in s), "none"; empty: the scene's own
 // parametric irregular sea when it has one (a sea of given components has no spectrum to draw).
 std::optional<hydro::WaveSpectrum> sea_spectrum(const std::string& text, const scene::Scene& scene) {
-  if (text.empty()) {
-    if (!scene.sea || scene.sea->spectrum == scene::SeaSpectrum::components) return std::nullopt;
-    return scene::sea_spectrum(*scene.sea);
-  }
+  if (text.empty()) return study::default_sea_spectrum(scene);
   if (text == "none") return std::nullopt;
   const std::vector<std::string> parts = fields(text, ':');
   const std::string expected = "expected jonswap:Hs:Tp[:gamma] or pm:Hs:Tp with 0 < Hs <= 30 m, 0 < Tp <= 100 s, 1 <= gamma <= 20, or none";
@@ -148,19 +143,19 @@ void write_outputs(report::StagedDirectory& out, const study::RaoResult& result,
 
 int run_rao(const RaoOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const std::optional<scene::Scene> scene = load_scene(options.scene, "rao", true);
+  const std::optional<scene::Scene> scene = load_scene(options.scene, options.set, "rao", true);
   if (!scene) return exit_bad_input;
   study::RaoRequest request;
   study::TimeDomainCheckRequest check_request;
   try {
     if (model_given(options.model)) request.models = {boom_choice(options.model, default_boom_choice(*scene))};
     request.angular_frequencies =
-        options.frequencies.empty() ? parse_period_range(options.periods.empty() ? default_periods : options.periods)
+        options.frequencies.empty() ? (options.periods.empty() ? study::default_rao_frequencies() : parse_period_range(options.periods))
                                     : parse_list("--frequencies", options.frequencies, max_frequency, "rad/s");
     check_request.periods = parse_list("--check-periods", options.check_periods, max_period, "s");
     check_request.wave_height = options.check_wave_height;
     check_request.tolerance = parse_tolerance(options.tolerance);
-    request.refine_peaks = !options.no_refine_peaks;
+    request.refine_peaks = study::default_refine_peaks && !options.no_refine_peaks;
     request.sea_spectrum = sea_spectrum(options.spectrum, *scene);
   } catch (const BadOption& error) {
     return bad_input(error.what());
@@ -225,6 +220,7 @@ Command add_rao_command(CLI::App& parent) {
              "nodal and modal k = 2 + static booms (the scene's boom.elements) side by side, the grid refined at the resonance "
              "peaks, a sea spectrum over the charts; --check-time-domain against regular-wave runs");
   sub->add_option("scene", options->scene, "Scene file (TOML) with [hull], [boom], [cargo] and [wire]")->required();
+  add_set_option(*sub, options->set);
   add_model_options(*sub, options->model);
   auto* periods = sub->add_option("--periods", options->periods,
                                   fmt::format("Wave periods a:b:n [s], n evenly spaced from a to b (default {})", default_periods));

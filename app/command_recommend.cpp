@@ -11,6 +11,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "app/cli_options.hpp"
 #include "app/radiation_option.hpp"
@@ -26,6 +27,7 @@ namespace {
 
 struct RecommendOptions {
   std::string scene;
+  std::vector<std::string> set;  // --set KEY=VALUE
   std::string tolerance = "1%";
   std::string outputs;  // empty: the judged outputs of the scene
   std::string radiation;  // overrides bem.radiation_model
@@ -35,26 +37,20 @@ struct RecommendOptions {
   std::string out;
 };
 
-// "cargo_heave,wire_tension" → the channels; throws BadOption naming an unknown one.
+// "cargo_heave,wire_tension" → the channels (study::channels_named); throws BadOption naming an unknown one.
 std::vector<multibody::OutputChannel> parse_outputs(const std::string& text) {
-  std::string names;
-  for (const auto channel : multibody::all_channels) names += (names.empty() ? "" : ",") + std::string(multibody::channel_name(channel));
-  std::vector<multibody::OutputChannel> outputs;
+  std::vector<std::string> names;
   std::stringstream stream(text);
-  for (std::string item; std::getline(stream, item, ',');) {
-    const auto found = std::find_if(multibody::all_channels.begin(), multibody::all_channels.end(),
-                                    [&](multibody::OutputChannel c) { return multibody::channel_name(c) == item; });
-    if (found == multibody::all_channels.end()) {
-      throw BadOption(fmt::format("--outputs {}: unknown output '{}'; choose from {}", text, item, names));
-    }
-    outputs.push_back(*found);
+  for (std::string item; std::getline(stream, item, ',');) names.push_back(item);
+  try {
+    return study::channels_named(names);
+  } catch (const study::SettingError& error) {
+    throw BadOption(option_message(error));
   }
-  if (outputs.empty()) throw BadOption(fmt::format("--outputs {}: no output given; choose from {}", text, names));
-  return outputs;
 }
 
 int run_recommend(const RecommendOptions& options) {
-  std::optional<scene::Scene> scene = load_scene(options.scene, "recommend", true);
+  std::optional<scene::Scene> scene = load_scene(options.scene, options.set, "recommend", true);
   if (!scene) return exit_bad_input;
   study::RecommendRequest request;
   multibody::RunSettings radiation_settings;
@@ -118,6 +114,7 @@ Command add_recommend_command(CLI::App& parent) {
       "recommend", "The cheapest boom model and integrator whose error stays within a tolerance: reasoned from the "
                    "physics, then proved by verification runs against a converged reference");
   sub->add_option("scene", options->scene, "Scene file (TOML) of a crane or a hub")->required();
+  add_set_option(*sub, options->set);
   sub->add_option("--tolerance", options->tolerance,
                   "Largest worst normalized RMS error over the outputs, in (0, 1) or as a percentage (1%)")
       ->capture_default_str();

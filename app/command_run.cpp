@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/cli_options.hpp"
 #include "app/radiation_option.hpp"
@@ -30,6 +31,7 @@ namespace {
 
 struct RunOptions {
   std::string scene;
+  std::vector<std::string> set;  // --set KEY=VALUE
   ModelOptions model;
   std::optional<double> spin_rate;  // overrides hub.spin_rate
   std::string radiation;            // overrides bem.radiation_model
@@ -60,7 +62,7 @@ void write_outputs(report::StagedDirectory& out, const report::RunContext& conte
 }
 
 int run_crane(const RunOptions& options) {
-  std::optional<scene::Scene> scene = load_scene(options.scene, "run", true);
+  std::optional<scene::Scene> scene = load_scene(options.scene, options.set, "run", true);
   if (!scene) return exit_bad_input;
   scene::BoomChoice choice;
   multibody::RunSettings settings;
@@ -116,6 +118,7 @@ Command add_run_command(CLI::App& parent) {
   auto options = std::make_shared<RunOptions>();
   CLI::App* sub = parent.add_subcommand("run", "Static equilibrium, then the dynamics of one crane model in the scene's waves");
   sub->add_option("scene", options->scene, "Scene file (TOML) with [hull], [boom], [cargo] and [wire], or a [hub]")->required();
+  add_set_option(*sub, options->set);
   add_model_options(*sub, options->model);
   sub->add_option("--spin-rate", options->spin_rate, "Final spin rate of a hub scene [rad/s] (default: hub.spin_rate)")
       ->check(scene_key_range(scene::scene_key("hub.spin_rate")));

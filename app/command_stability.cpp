@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
@@ -23,13 +24,14 @@ namespace {
 
 struct StabilityCommandOptions {
   std::string scene;
+  std::vector<std::string> set;  // --set KEY=VALUE
   std::string out;
   bool json = false;
   bool quick = false;
 };
 
 int run_stability(const StabilityCommandOptions& options) {
-  const std::optional<scene::Scene> scene = load_scene(options.scene, "stability", true);
+  const std::optional<scene::Scene> scene = load_scene(options.scene, options.set, "stability", true);
   if (!scene) return exit_bad_input;
   report::png_terminal();  // fail before the computation when gnuplot is missing
   std::filesystem::path target = options.out;
@@ -72,6 +74,7 @@ Command add_stability_command(CLI::App& parent) {
       "stability", "The stability map: where each method fails (explicit step limits, constraint drift, spin "
                    "divergence, slack wire and snap loads, BDF order, buckling margin), each failure named");
   sub->add_option("scene", options->scene, "Scene file (TOML) with a [hull] or a [hub]")->required();
+  add_set_option(*sub, options->set);
   sub->add_option("--out", options->out, "Write report.md, summary.json, the CSVs and the PNG charts into this directory");
   sub->add_flag("--json", options->json, "Print summary.json on stdout instead of the Markdown report");
   sub->add_flag("--quick", options->quick, "Fewer models and shorter horizons (a quick look)");

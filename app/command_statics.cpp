@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
@@ -22,6 +23,7 @@ namespace {
 
 struct StaticsOptions {
   std::string scene;
+  std::vector<std::string> set;  // --set KEY=VALUE
   ModelOptions model;
   std::string radiation;  // overrides bem.radiation_model
   bool json = false;
@@ -29,7 +31,7 @@ struct StaticsOptions {
 };
 
 int run_statics(const StaticsOptions& options) {
-  std::optional<scene::Scene> scene = load_scene(options.scene, "statics", true);
+  std::optional<scene::Scene> scene = load_scene(options.scene, options.set, "statics", true);
   if (!scene) return exit_bad_input;
   scene::BoomChoice choice;
   try {
@@ -66,6 +68,7 @@ Command add_statics_command(CLI::App& parent) {
   auto options = std::make_shared<StaticsOptions>();
   CLI::App* sub = parent.add_subcommand("statics", "The static equilibrium of one crane model in calm water, without the dynamics");
   sub->add_option("scene", options->scene, "Scene file (TOML) with [hull], [boom], [cargo] and [wire], or a [hub]")->required();
+  add_set_option(*sub, options->set);
   add_model_options(*sub, options->model);
   add_radiation_option(*sub, options->radiation);
   sub->add_flag("--json", options->json, "Print the JSON document on stdout instead of the text report");

@@ -13,6 +13,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 #include <thread>
 
 #include <unistd.h>
@@ -37,6 +38,7 @@ namespace {
 
 struct SweepOptions {
   std::string scene;
+  std::vector<std::string> set;  // --set KEY=VALUE
   std::string out;
   std::string radiation;  // overrides bem.radiation_model of every configuration
   int jobs = 0;
@@ -48,8 +50,6 @@ struct SweepOptions {
   std::string stiffening;
   std::string tolerance = "1%";
 };
-
-constexpr double quick_duration = 40.0;
 
 std::string read_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -103,21 +103,20 @@ int run_sweep(const SweepOptions& options) {
   if (options.jobs < 0) {
     return bad_input("sweep", fmt::format("--jobs {}: not a thread count (valid range [1, inf), 0: all cores)", options.jobs));
   }
-  request.jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  request.jobs = study::worker_threads(options.jobs);
   request.reference = options.reference;
-  std::optional<scene::Scene> scene = load_scene(options.scene, "sweep", true);
+  std::optional<scene::Scene> scene = load_scene(options.scene, options.set, "sweep", true);
   if (!scene) return exit_bad_input;
   try {
     apply_radiation_option(*scene, options.radiation);
-    // A [bem] scene: the radiation models are an axis of the grid, unless --radiation fixes one.
-    request.radiation_axis = scene->bem.has_value() && options.radiation.empty();
-    // A pinned boom: the modal boom's mode set is an axis too.
-    request.mode_set_axis = scene->boom.mount && scene->boom.mount->pinned;
+    // A [bem] scene: the radiation models are an axis of the grid, unless --radiation fixes one; a
+    // pinned boom: the modal boom's mode set is an axis too.
+    study::add_scene_axes(request, *scene, !options.radiation.empty());
     request.stiffening = stiffening_option(options.stiffening);
     request.tolerance = parse_tolerance(options.tolerance);
     study::validate(request.reference);
     DynamicsOptions dynamics;  // checks the duration against the scene
-    dynamics.duration = options.duration.value_or(request.grid == study::SweepGrid::quick ? quick_duration : scene->simulation.duration);
+    dynamics.duration = options.duration.value_or(study::default_sweep_duration(*scene, request.grid));
     request.duration = integrator_settings(dynamics, *scene).duration;
   } catch (const BadOption& error) {
     return bad_input("sweep", error.what());
@@ -140,7 +139,7 @@ int run_sweep(const SweepOptions& options) {
   farm.study = fmt::format("ffrf sweep {} --{}", options.scene, study::to_string(request.grid));
   farm.settings = fmt::format("{}\n{}\ngrid={} duration={:.17g} reference={} {:.17g} {:.17g} {} stiffening={} tolerance={:.17g} "
                               "max_explicit_steps={} radiation={}\n",
-                              version_text(), read_file(options.scene), study::to_string(request.grid), request.duration,
+                              version_text(), read_file(options.scene) + overrides_text(*scene), study::to_string(request.grid), request.duration,
                               request.reference.start_elements, request.reference.start_relative_tolerance,
                               request.reference.bound, request.reference.max_levels, options.stiffening, request.tolerance,
                               request.max_explicit_steps, request.radiation_axis ? "axis" : options.radiation);
@@ -201,6 +200,7 @@ Command add_sweep_command(CLI::App& parent) {
   CLI::App* sub = parent.add_subcommand(
       "sweep", "Boom model x integrator x tolerance grid against a converged reference: accuracy-speed chart, Pareto front");
   sub->add_option("scene", options->scene, "Scene file (TOML) of a crane");
+  add_set_option(*sub, options->set);
   sub->add_option("--out", options->out,
                   "Write sweep.csv, accuracy_speed.png, mode_count.png (with gnuplot scripts and data) and report.md here");
   sub->add_option("--jobs,-j", options->jobs, "Worker threads (0: one per core)")->capture_default_str()->check(whole_number(0, 1024));
@@ -208,7 +208,7 @@ Command add_sweep_command(CLI::App& parent) {
   sub->add_option("--merge", options->merge, "Join these shard CSVs (sweep.csv of each shard's --out) into --out DIR")
       ->expected(1, -1);
   sub->add_option("--duration", options->duration,
-                  fmt::format("Simulated time [s] (default: {:g} s with --quick, the scene's duration otherwise)", quick_duration))
+                  fmt::format("Simulated time [s] (default: {:g} s with --quick, the scene's duration otherwise)", study::quick_sweep_duration))
       ->check(scene_key_range(scene::scene_key("simulation.duration")));
   sub->add_flag("--quick", options->quick,
                 "The small grid (the default): rigid, nodal N 1/4/16, modal k 1/2/4 +- static; cvode and generalized-alpha");

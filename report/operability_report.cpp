@@ -135,6 +135,15 @@ ModelSavings model_savings(const study::OperabilityStudy& s) {
   return m;
 }
 
+std::string operability_sea_text(const study::OperabilityRequest& request) {
+  return fmt::format("irregular, JONSWAP γ = {:g}, long-crested, {}; each cell's band holds {:g} % of its variance m0 (tails "
+                     "split equally)",
+                     request.peak_enhancement,
+                     request.components > 0 ? fmt::format("{} components per record", request.components)
+                                            : std::string("components every 2π/duration (never repeats)"),
+                     100.0 * request.variance_share);
+}
+
 std::string operability_text(const study::OperabilityStudy& s) {
   std::size_t pass = 0, fail = 0, failed = 0, not_physical = 0;
   for (const CellResult& c : s.cells) {

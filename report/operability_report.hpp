@@ -24,6 +24,9 @@ struct OperabilityContext {
   std::string sea;       // what the records are: "irregular (JONSWAP γ = 3.3)" or the stand-in
 };
 
+// OperabilityContext::sea of a request: "irregular, JONSWAP γ = 3.3, long-crested, ...".
+std::string operability_sea_text(const study::OperabilityRequest& request);
+
 std::string operability_csv(const study::OperabilityStudy& study);
 std::string operability_markdown(const study::OperabilityStudy& study, const OperabilityContext& context);
 std::string operability_json(const study::OperabilityStudy& study, const OperabilityContext& context);

@@ -203,7 +203,9 @@ std::string recommend_json(const RecommendContext& ctx, const Recommendation& re
 
 std::string run_command_line(const std::string& scene_file, const Candidate& c, double rtol, double duration,
                              const scene::Scene& scene) {
-  std::string line = fmt::format("ffrf run {} --boom {}", scene_file, scene::to_string(c.choice.kind));
+  std::string line = fmt::format("ffrf run {}", scene_file);
+  for (const std::string& value : scene.overrides) line += fmt::format(" --set '{}'", value);  // the values set beside the file
+  line += fmt::format(" --boom {}", scene::to_string(c.choice.kind));
   if (c.choice.kind != scene::BoomKind::rigid) line += fmt::format(" --elements {}", c.choice.elements);
   if (c.choice.kind == scene::BoomKind::modal) {
     line += fmt::format(" --modes {} {}", c.choice.modes, c.choice.static_modes ? "--static-modes" : "--no-static-modes");

@@ -114,6 +114,7 @@ Json settings_json(const RunContext& c) {
               {"output_interval_s", c.settings.output_interval},
               {"ffrf_version", ffrf_version()},
               {"date", c.date}};
+  if (!c.scene->overrides.empty()) json["scene_overrides"] = c.scene->overrides;  // --set / with_values, in order
   if (c.scene->bem) {
     const scene::BemHull& bem = *c.scene->bem;
     json["radiation"] = study::radiation_label(*c.scene);

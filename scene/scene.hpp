@@ -213,6 +213,9 @@ struct Simulation {
 
 struct Scene {
   std::string file;  // path the scene was loaded from (for messages)
+  // Values given beside the file ("boom.angle=55 deg": `--set`, Python's `with_values`), in the order
+  // given; the loader checked them with the file's (scene/scene_overrides.hpp).
+  std::vector<std::string> overrides;
   std::string name;
   std::string description;
   Boom boom;

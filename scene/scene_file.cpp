@@ -45,7 +45,13 @@ std::optional<WrittenKey> key_on_line(std::string_view text, int line_number) {
   return WrittenKey{section + "." + std::string(leaf), std::string(value)};
 }
 
-Scene load_scene(const std::string& path) {
+Scene load_scene(const std::string& path) { return load_scene(path, SceneOverrides{}); }
+
+Scene load_scene(const std::string& path, const SceneOverrides& overrides) {
+  return load_scene_text(read_scene_file(path), path, overrides);
+}
+
+std::string read_scene_file(const std::string& path) {
   if (path.empty()) throw SceneError({{path, 0, 0, "", "", "an empty file name: give the scene file (TOML)"}});
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored)) {
@@ -65,7 +71,7 @@ Scene load_scene(const std::string& path) {
                                    max_scene_bytes)}});
   }
   if (in.bad()) throw SceneError({{path, 0, 0, "", "", fmt::format("cannot read the scene file: {}", std::strerror(errno))}});
-  return load_scene_text(text, path);
+  return text;
 }
 
 }  // namespace ffrf::scene

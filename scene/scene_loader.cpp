@@ -1,6 +1,7 @@
 // Scene loader: walks the TOML document against the schema table, collects every problem, and
-// builds the Scene value (scene_build.hpp). Only this file and key_values.cpp (one key's value
-// against its schema entry) know toml++.
+// builds the Scene value (scene_build.hpp). Only this file, key_values.cpp (one key's value
+// against its schema entry) and scene_overrides.cpp (values given beside the file, written into the
+// document first) know toml++.
 #include "scene/scene_loader.hpp"
 
 #include <fmt/format.h>
@@ -14,6 +15,7 @@
 #include "scene/computed_quantities.hpp"
 #include "scene/bem_keys.hpp"
 #include "scene/key_values.hpp"
+#include "scene/override_nodes.hpp"
 #include "scene/scene_build.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/scene_file.hpp"
@@ -39,7 +41,11 @@ std::size_t byte_offset(std::string_view line, std::size_t column) {
 
 class SceneReader final : public WrittenKeys {
  public:
-  SceneReader(std::string file, std::string_view text) : file_(std::move(file)) {
+  // `overridden`: the nodes of values given beside the file (override_nodes.hpp) and their text;
+  // `problems`: those found before (overrides that name no key).
+  SceneReader(std::string file, std::string_view text, OverrideValues overridden, std::string origin,
+              std::vector<SceneProblem> problems)
+      : file_(std::move(file)), problems_(std::move(problems)), overridden_(std::move(overridden)), origin_(std::move(origin)) {
     for (std::size_t start = 0; start <= text.size();) {
       const std::size_t end = std::min(text.find('\n', start), text.size());
       lines_.push_back(text.substr(start, end - start));
@@ -62,7 +68,8 @@ class SceneReader final : public WrittenKeys {
 
  private:
   void report(int line, std::string key, std::string value, std::string message) override {
-    problems_.push_back({file_, line, 0, std::move(key), std::move(value), std::move(message)});
+    std::string origin = overridden_.keys.contains(key) ? origin_ : std::string();
+    problems_.push_back({file_, line, 0, std::move(key), std::move(value), std::move(message), std::move(origin)});
   }
 
   // Pass 1: unknown sections and keys; remember where each known key and section is.
@@ -212,10 +219,10 @@ class SceneReader final : public WrittenKeys {
     // A pinned heel and the luffing wires come together, on a floating hull.
     const bool pinned = resolved_.contains(scene_key("boom.heel")) && resolved_.at(scene_key("boom.heel")).text == "pinned";
     if (pinned && (hub_ || !crane_)) {
-      report(line_of(*present_.at(scene_key("boom.heel"))), scene_key("boom.heel"), "\"pinned\"",
+      report(line_of(*present_.at(scene_key("boom.heel"))), scene_key("boom.heel"), shown(scene_key("boom.heel")),
              "a pinned heel belongs to a crane on a floating hull ([hull] with [luffing]); a hub scene clamps its boom");
     } else if (pinned && !sections_.contains("luffing")) {
-      report(line_of(*present_.at(scene_key("boom.heel"))), scene_key("boom.heel"), "\"pinned\"",
+      report(line_of(*present_.at(scene_key("boom.heel"))), scene_key("boom.heel"), shown(scene_key("boom.heel")),
              "a pinned boom needs the [luffing] wires that hold it (luffing.a_frame_x, luffing.a_frame_y, luffing.stiffness)");
     } else if (!pinned && sections_.contains("luffing")) {
       report(line_of(*sections_.at("luffing")), "luffing", "",
@@ -308,8 +315,9 @@ class SceneReader final : public WrittenKeys {
     return problems;
   }
 
-  // The value as written in the scene file (one-line values), else as parsed.
+  // The value as written in the scene file (one-line values) or as given beside it, else as parsed.
   std::string show_value(const toml::node& node) const {
+    if (const auto given = overridden_.shown.find(&node); given != overridden_.shown.end()) return given->second;
     const auto& region = node.source();
     if (region.begin.line == region.end.line && region.begin.line >= 1 && region.begin.line <= lines_.size() &&
         region.end.column > region.begin.column) {
@@ -324,6 +332,8 @@ class SceneReader final : public WrittenKeys {
   std::string file_;
   std::vector<std::string_view> lines_;
   std::vector<SceneProblem> problems_;
+  OverrideValues overridden_;
+  std::string origin_;
   bool crane_ = false;  // a hull crane
   bool hub_ = false;    // a hub scene
   bool cargo_ = false;  // cargo and wire present
@@ -347,8 +357,13 @@ std::string format_problem(const SceneProblem& problem) {
   std::string text = problem.file;
   if (problem.line > 0) text += fmt::format(":{}", problem.line);
   if (problem.column > 0) text += fmt::format(":{}", problem.column);
-  text += ": ";
-  if (!problem.key.empty()) text += problem.value.empty() ? problem.key + ": " : problem.key + " = " + problem.value + ": ";
+  if (!text.empty()) text += ": ";
+  if (!problem.key.empty()) {
+    text += problem.key;
+    if (!problem.value.empty()) text += " = " + problem.value;
+    if (!problem.origin.empty()) text += " (" + problem.origin + ")";
+    text += ": ";
+  }
   return text + problem.message;
 }
 
@@ -356,6 +371,10 @@ SceneError::SceneError(std::vector<SceneProblem> problems)
     : std::runtime_error(join_messages(problems)), problems_(std::move(problems)) {}
 
 Scene load_scene_text(std::string_view toml_text, const std::string& file) {
+  return load_scene_text(toml_text, file, SceneOverrides{});
+}
+
+Scene load_scene_text(std::string_view toml_text, const std::string& file, const SceneOverrides& overrides) {
   toml::table root;
   try {
     root = toml::parse(toml_text, file);
@@ -371,7 +390,11 @@ Scene load_scene_text(std::string_view toml_text, const std::string& file) {
     }
     throw SceneError({std::move(problem)});
   }
-  return SceneReader(file, toml_text).read(root);
+  OverrideValues written;
+  std::vector<SceneProblem> problems = write_overrides(root, overrides, file, written);
+  Scene scene = SceneReader(file, toml_text, std::move(written), overrides.origin, std::move(problems)).read(root);
+  for (const SceneOverride& item : overrides.values) scene.overrides.push_back(to_string(item));
+  return scene;
 }
 
 }  // namespace ffrf::scene

@@ -6,7 +6,8 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake pkg-config libeigen3-dev libarpack2-dev liblapack-dev libspectra-dev libsundials-dev
           libsuitesparse-dev libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev libgtest-dev
-          libbenchmark-dev gnuplot-nox libfftw3-dev libnetcdf-dev libopenmpi-dev openmpi-bin)
+          libbenchmark-dev gnuplot-nox libfftw3-dev libnetcdf-dev libopenmpi-dev openmpi-bin
+          pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

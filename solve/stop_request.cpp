@@ -18,6 +18,8 @@ void request_stop(int signal) noexcept {
 
 int stop_signal() noexcept { return requested_signal.load(); }
 
+void clear_stop_request() noexcept { requested_signal.store(0); }
+
 void throw_if_stop_requested() {
   if (const int signal = stop_signal(); signal != 0) throw Interrupted{signal};
 }

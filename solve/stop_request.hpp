@@ -12,6 +12,8 @@ void request_stop(int signal) noexcept;
 // The signal that asked to stop, 0 when none.
 int stop_signal() noexcept;
 inline bool stop_requested() noexcept { return stop_signal() != 0; }
+// Forgets the request once the stop is handled, for a front end that lives on (the Python module).
+void clear_stop_request() noexcept;
 
 struct Interrupted {
   int signal;  // SIGINT, SIGTERM

@@ -18,6 +18,13 @@ scene::BoomChoice default_boom_choice(const scene::Scene& scene) {
   return choice;
 }
 
+std::optional<scene::Stiffening> stiffening_setting(const std::string& name) {
+  if (name.empty()) return std::nullopt;
+  const auto stiffening = scene::parse_stiffening(name);
+  if (!stiffening) throw SettingError(Setting::stiffening, name, "unknown stiffening; choose one of none, static, centrifugal, both");
+  return stiffening;
+}
+
 scene::BoomChoice boom_choice(const BoomRequest& request, scene::BoomChoice choice) {
   if (!request.kind.empty()) {
     const auto kind = scene::parse_boom_kind(request.kind);
@@ -31,11 +38,7 @@ scene::BoomChoice boom_choice(const BoomRequest& request, scene::BoomChoice choi
     throw SettingError(Setting::elements, std::to_string(choice.elements), "not a valid element count (valid range [1, inf))");
   choice.modes = request.modes.value_or(choice.modes);
   choice.static_modes = request.static_modes.value_or(choice.static_modes);
-  if (!request.stiffening.empty()) {
-    choice.stiffening = scene::parse_stiffening(request.stiffening);
-    if (!choice.stiffening)
-      throw SettingError(Setting::stiffening, request.stiffening, "unknown stiffening; choose one of none, static, centrifugal, both");
-  }
+  if (!request.stiffening.empty()) choice.stiffening = stiffening_setting(request.stiffening);
   if (!request.mode_set.empty()) {
     const auto set = fem::parse_boundary(request.mode_set);
     if (!set || *set == fem::Boundary::free_free) {

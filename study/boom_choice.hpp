@@ -29,6 +29,10 @@ struct BoomRequest {
 // stiffening.
 scene::BoomChoice default_boom_choice(const scene::Scene& scene);
 
+// The geometric stiffening a front end names ("none", "static", "centrifugal", "both"; empty: not
+// given); throws SettingError (Setting::stiffening) naming the choices.
+std::optional<scene::Stiffening> stiffening_setting(const std::string& name);
+
 // `base` with what the request sets. Throws SettingError (study/run_pipeline.hpp) naming the
 // setting (boom model, boom elements, mode count, geometric stiffening), the value and the valid
 // range or choices; also when the run would not fit in memory (study/work_limits.hpp).

@@ -1,10 +1,13 @@
 // The one error window, judged outputs and worst error of the studies (see error_measure.hpp).
 #include "study/error_measure.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
 #include "scene/irregular_sea.hpp"
+#include "study/run_pipeline.hpp"
 
 namespace ffrf::study {
 
@@ -33,6 +36,25 @@ std::vector<multibody::OutputChannel> judged_outputs(const scene::Scene& scene) 
     if ((multibody::output_channel(channel).judged & kind) != 0) judged.push_back(channel);
   }
   return judged;
+}
+
+std::vector<multibody::OutputChannel> channels_named(const std::vector<std::string>& names) {
+  std::string choices;
+  for (const auto channel : multibody::all_channels) {  // piece by piece, as output_list
+    if (!choices.empty()) choices += ',';
+    choices += multibody::channel_name(channel);
+  }
+  if (names.empty()) throw SettingError(Setting::outputs, "", "no output given; choose from " + choices);
+  std::vector<multibody::OutputChannel> channels;
+  for (const std::string& name : names) {
+    const auto found = std::find_if(multibody::all_channels.begin(), multibody::all_channels.end(),
+                                    [&](multibody::OutputChannel c) { return multibody::channel_name(c) == name; });
+    if (found == multibody::all_channels.end()) {
+      throw SettingError(Setting::outputs, name, fmt::format("unknown output '{}'; choose from {}", name, choices));
+    }
+    channels.push_back(*found);
+  }
+  return channels;
 }
 
 double convergence_change(const scene::Scene& scene, const multibody::RunErrors& errors) {

@@ -29,6 +29,10 @@ double error_window(const scene::Scene& scene, double duration);
 // The judged outputs of a scene (see above), in report order.
 std::vector<multibody::OutputChannel> judged_outputs(const scene::Scene& scene);
 
+// The judged channels of their names ("cargo_heave"), in the order given; throws SettingError
+// (Setting::outputs) naming an unknown one (or none given) and the valid names.
+std::vector<multibody::OutputChannel> channels_named(const std::vector<std::string>& names);
+
 // The change between two reference levels: the worst normalized RMS error over the scene's judged
 // outputs and the boom's tip deflection.
 double convergence_change(const scene::Scene& scene, const multibody::RunErrors& errors);

@@ -10,6 +10,7 @@
 
 #include "fem/analytic_beam.hpp"
 #include "fem/assembly.hpp"
+#include "study/run_pipeline.hpp"
 
 namespace ffrf::study {
 namespace {
@@ -30,6 +31,35 @@ double spin_hub_radius(const scene::Scene& scene) { return scene::centrifugal_hu
 
 int free_dof_count(const fem::BeamMesh& mesh, fem::Boundary boundary) {
   return fem::make_dof_map(mesh, boundary).free_count();
+}
+
+ModesSetup modes_setup(const scene::Scene& scene, const ModesRequest& request) {
+  ModesSetup setup{scene.boom.mesh, scene.boom.boundary, modal::EigenSolverKind::arpack, 0};
+  if (request.elements) {
+    if (*request.elements < 1) {
+      throw SettingError(Setting::elements, std::to_string(*request.elements), "not a valid element count (valid range [1, inf))");
+    }
+    setup.mesh.element_count = *request.elements;
+  }
+  if (!request.boundary.empty()) {
+    const auto parsed = fem::parse_boundary(request.boundary);
+    if (!parsed) {
+      throw SettingError(Setting::boundary, request.boundary,
+                         "unknown boundary condition; choose one of " + fem::boundary_choices());
+    }
+    setup.boundary = *parsed;
+  }
+  const auto solver = modal::parse_eigen_solver(request.solver);
+  if (!solver) throw SettingError(Setting::eigen_solver, request.solver, "unknown solver; choose one of " + modal::eigen_solver_choices());
+  setup.solver = *solver;
+  const int dof = free_dof_count(setup.mesh, setup.boundary);
+  setup.count = request.count.value_or(std::min(dof - 1, default_elastic_modes + fem::rigid_mode_count(setup.boundary)));
+  if (setup.count < 1 || setup.count >= dof) {
+    throw SettingError(Setting::modes, std::to_string(setup.count),
+                       fmt::format("not a mode count of the {} free DOFs of N = {} {} (valid range [1, {}])", dof,
+                                   setup.mesh.element_count, fem::to_string(setup.boundary), dof - 1));
+  }
+  return setup;
 }
 
 ModesResult solve_modes(const fem::BeamMesh& mesh, fem::Boundary boundary, modal::EigenSolverKind solver, int count) {

@@ -44,6 +44,26 @@ double spin_hub_radius(const scene::Scene& scene);
 // Free DOFs of the mesh under the boundary condition.
 int free_dof_count(const fem::BeamMesh& mesh, fem::Boundary boundary);
 
+// What `ffrf modes` and `ffrf.modes` are asked for; an unset field is the scene's (boom.elements,
+// boom.boundary) or the default: default_elastic_modes elastic modes (and the rigid modes of a
+// free–free beam), at most the free DOFs less one, by ARPACK.
+inline constexpr int default_elastic_modes = 6;
+struct ModesRequest {
+  std::optional<int> elements;
+  std::optional<int> count;
+  std::string boundary;           // fem::boundary_choices(); empty: the scene's
+  std::string solver = "arpack";  // modal::eigen_solver_choices()
+};
+// The mesh, boundary, solver and mode count of a request on a scene. Throws SettingError (elements,
+// boundary, eigen_solver, modes) naming the value and the valid range or choices.
+struct ModesSetup {
+  fem::BeamMesh mesh{};
+  fem::Boundary boundary = fem::Boundary::clamped_free;
+  modal::EigenSolverKind solver = modal::EigenSolverKind::arpack;
+  int count = 0;
+};
+ModesSetup modes_setup(const scene::Scene& scene, const ModesRequest& request);
+
 // The lowest `count` modes (1 <= count < free DOFs); throws modal::EigenSolverError on failure.
 ModesResult solve_modes(const fem::BeamMesh& mesh, fem::Boundary boundary, modal::EigenSolverKind solver, int count);
 

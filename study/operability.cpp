@@ -49,6 +49,12 @@ std::string CellModel::label() const {
   return fmt::format("{}, {} rtol {:.0e}", choice.label(), solve::to_string(integrator), relative_tolerance);
 }
 
+hydro::WaveHeading parse_heading(std::string_view name) {
+  if (name == "following") return hydro::WaveHeading::following;
+  if (name == "head") return hydro::WaveHeading::head;
+  throw SettingError(Setting::headings, std::string(name), "not a heading (following or head)");
+}
+
 void validate(const OperabilityRequest& r) {
   const auto bad = [](const std::string& what) { throw std::invalid_argument(what); };
   if (r.significant_heights.empty() || r.peak_periods.empty() || r.headings.empty()) bad("operability: an empty grid axis");

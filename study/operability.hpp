@@ -37,6 +37,9 @@ struct SeaCell {
   std::string key() const;  // "Hs=2.5 Tp=9 heading=following" (exact: %.17g)
 };
 
+// "following" or "head"; throws SettingError (Setting::headings) for another name.
+hydro::WaveHeading parse_heading(std::string_view name);
+
 struct OperabilityRequest {
   std::vector<double> significant_heights, peak_periods;  // the grid's axes [m], [s]
   std::vector<hydro::WaveHeading> headings{hydro::WaveHeading::following};

@@ -14,6 +14,7 @@
 
 #include "multibody/crane_equations.hpp"
 #include "scene/crane_model_cache.hpp"
+#include "scene/irregular_sea.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/run_pipeline.hpp"
 #include "linalg/dense_solvers.hpp"
@@ -207,6 +208,46 @@ std::vector<NaturalMode> coupled_natural_modes(const scene::Scene& scene, const 
   calm.sea.reset();
   PreparedRun prepared = prepare_run(calm, choice, modes);
   return natural_modes(multibody::linearise_crane(*prepared.equations, prepared.statics.z));
+}
+
+std::vector<double> period_grid(double shortest, double longest, int count) {
+  std::vector<double> omegas;
+  for (int i = count - 1; i >= 0; --i) {
+    omegas.push_back(2.0 * std::numbers::pi / (shortest + (longest - shortest) * i / std::max(count - 1, 1)));
+  }
+  return omegas;
+}
+
+std::optional<hydro::WaveSpectrum> default_sea_spectrum(const scene::Scene& scene) {
+  if (!scene.sea || scene.sea->spectrum == scene::SeaSpectrum::components) return std::nullopt;
+  return scene::sea_spectrum(*scene.sea);
+}
+
+std::vector<double> default_rao_frequencies() {
+  return period_grid(default_rao_shortest_period, default_rao_longest_period, default_rao_period_count);
+}
+
+std::vector<double> frequencies_of_periods(const std::vector<double>& periods) {
+  if (periods.empty()) throw SettingError(Setting::wave_periods, "[]", "no wave period given");
+  std::vector<double> omegas;
+  for (double period : periods) {
+    if (!(period > 0.0 && period <= max_rao_period)) {
+      throw SettingError(Setting::wave_periods, fmt::format("{}", period),
+                         fmt::format("out of range (valid range (0, {:g}] s)", max_rao_period));
+    }
+    omegas.push_back(2.0 * std::numbers::pi / period);
+  }
+  return omegas;
+}
+
+void validate_frequencies(const std::vector<double>& angular_frequencies) {
+  if (angular_frequencies.empty()) throw SettingError(Setting::wave_frequencies, "[]", "no wave frequency given");
+  for (double omega : angular_frequencies) {
+    if (!(omega > 0.0 && omega <= max_rao_frequency)) {
+      throw SettingError(Setting::wave_frequencies, fmt::format("{}", omega),
+                         fmt::format("out of range (valid range (0, {:g}] rad/s)", max_rao_frequency));
+    }
+  }
 }
 
 RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoRequest& request,

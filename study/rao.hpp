@@ -85,6 +85,28 @@ struct RaoRequest {
   std::optional<hydro::WaveSpectrum> sea_spectrum;
 };
 
+// The frequencies of `ffrf rao` and `ffrf.rao` when none are given: default_rao_period_count wave
+// periods evenly from default_rao_shortest_period to default_rao_longest_period [s] (the heave and
+// pitch resonances of a floating crane and the swell), and the range a requested one must lie in.
+inline constexpr double default_rao_shortest_period = 3.0, default_rao_longest_period = 30.0;  // [s]
+inline constexpr int default_rao_period_count = 109;
+inline constexpr double max_rao_period = 1000.0;    // [s]
+inline constexpr double max_rao_frequency = 100.0;  // [rad/s]
+// `count` periods evenly from `shortest` to `longest` [s] as angular frequencies, longest period first.
+std::vector<double> period_grid(double shortest, double longest, int count);
+std::vector<double> default_rao_frequencies();  // period_grid of the defaults
+// The angular frequencies of wave periods [s], in their order; throws SettingError (wave_periods) for
+// none, or a period not in (0, max_rao_period].
+std::vector<double> frequencies_of_periods(const std::vector<double>& periods);
+// Throws SettingError (wave_frequencies) for none, or a frequency not in (0, max_rao_frequency] rad/s.
+void validate_frequencies(const std::vector<double>& angular_frequencies);
+
+// The front ends' defaults (`ffrf rao`, `ffrf.rao`): each model's grid refined around its resonance
+// peaks, and the scene's own sea spectrum over the RAOs when it has a parametric irregular sea
+// (JONSWAP or Pierson–Moskowitz; none for calm water, a regular wave or given components).
+inline constexpr bool default_refine_peaks = true;
+std::optional<hydro::WaveSpectrum> default_sea_spectrum(const scene::Scene& scene);
+
 // rigid; nodal N; modal k = 2 + static modes on N, with N the scene's boom.elements (as `ffrf run`
 // builds the boom unless told otherwise).
 std::vector<scene::BoomChoice> rao_models(const scene::Scene& scene);

@@ -35,6 +35,19 @@ std::string_view to_string(Setting setting) {
     case Setting::stiffening: return "geometric stiffening";
     case Setting::mode_set: return "mode set";
     case Setting::stress_recovery: return "stress recovery";
+    case Setting::integrator: return "integrator";
+    case Setting::formulation: return "constraint formulation";
+    case Setting::solver: return "solver";
+    case Setting::step_limit: return "step limit";
+    case Setting::wall_clock_limit: return "wall-clock limit";
+    case Setting::step_floor: return "step-size floor";
+    case Setting::wave_periods: return "wave periods";
+    case Setting::wave_frequencies: return "wave frequencies";
+    case Setting::outputs: return "outputs";
+    case Setting::eigen_solver: return "eigen solver";
+    case Setting::boundary: return "boundary condition";
+    case Setting::grid: return "sweep grid";
+    case Setting::headings: return "wave headings";
   }
   return "?";
 }
@@ -70,7 +83,54 @@ multibody::MonitorLimits monitor_limits(const scene::Scene& scene) {
   return limits;
 }
 
+solve::Integrator integrator_choice(const std::string& integrator, const std::string& formulation,
+                                    const std::string& solver) {
+  if (!integrator.empty() && (!formulation.empty() || !solver.empty())) {
+    throw SettingError(Setting::integrator, integrator,
+                       "names a formulation and a solver: give either the integrator or the formulation and the solver");
+  }
+  if (formulation.empty() && solver.empty()) {
+    const std::string name = integrator.empty() ? "cvode" : integrator;
+    const auto kind = solve::parse_integrator(name);
+    if (!kind) throw SettingError(Setting::integrator, name, "unknown integrator; choose one of " + solve::integrator_choices());
+    return *kind;
+  }
+  solve::Integrator choice = solve::Integrator::cvode;
+  if (!formulation.empty()) {
+    const auto parsed = solve::parse_formulation(formulation);
+    if (!parsed) throw SettingError(Setting::formulation, formulation, "unknown formulation; choose one of " + solve::formulation_choices());
+    choice.formulation = *parsed;
+  }
+  if (!solver.empty()) {
+    const auto parsed = solve::parse_solver(solver);
+    if (!parsed) throw SettingError(Setting::solver, solver, "unknown solver; choose one of " + solve::solver_choices());
+    choice.solver = *parsed;
+  }
+  if (!solve::is_valid(choice)) {
+    throw SettingError(Setting::solver, std::string(solve::to_string(choice.solver)),
+                       fmt::format("not an implemented integrator with the formulation {}; valid pairs: {}",
+                                   solve::to_string(choice.formulation), solve::valid_integrators()));
+  }
+  return choice;
+}
+
+void validate(const solve::WorkLimits& work) {
+  if (work.max_steps < 1 || work.max_steps > max_step_limit) {
+    throw SettingError(Setting::step_limit, fmt::format("{}", work.max_steps),
+                       fmt::format("not a step limit (valid range [1, {}])", max_step_limit));
+  }
+  if (!(work.max_wall_seconds > 0.0 && (work.max_wall_seconds <= max_wall_clock || std::isinf(work.max_wall_seconds)))) {
+    throw SettingError(Setting::wall_clock_limit, fmt::format("{}", work.max_wall_seconds),
+                       fmt::format("not a wall-clock limit (valid range (0, {:g}] s, or none)", max_wall_clock));
+  }
+  if (!(work.min_step >= 0.0 && work.min_step <= max_step_floor)) {
+    throw SettingError(Setting::step_floor, fmt::format("{}", work.min_step),
+                       fmt::format("not a step-size floor (valid range [0, {:g}] s; 0: none)", max_step_floor));
+  }
+}
+
 multibody::RunSettings integrator_settings(const scene::Scene& scene, const DynamicsRequest& request) {
+  validate(request.work);
   for (const auto& [setting, value] : {std::pair{Setting::relative_tolerance, request.relative_tolerance},
                                        std::pair{Setting::absolute_tolerance, request.absolute_tolerance}}) {
     if (!(value >= min_tolerance && value <= max_tolerance)) {

@@ -37,6 +37,8 @@ enum class Setting {
   relative_tolerance, absolute_tolerance, duration, fixed_step, max_order,
   reference_elements, reference_tolerance, reference_bound, reference_levels, tolerance, jobs, elements,
   boom_model, modes, stiffening, mode_set, stress_recovery,
+  integrator, formulation, solver, step_limit, wall_clock_limit, step_floor,
+  wave_periods, wave_frequencies, outputs, eigen_solver, boundary, grid, headings,
 };
 std::string_view to_string(Setting setting);  // "relative tolerance", ...
 
@@ -64,6 +66,20 @@ struct DynamicsRequest {
   solve::WorkLimits work = {};  // steps, wall clock and step-size floor of the run
 };
 
+// The integrator a front end names: a valid pair by its name (`integrator`: "cvode", "ida", ...), or
+// the `formulation` and the `solver` apart (the one not given from cvode = minimal × bdf); all three
+// empty: cvode. Throws SettingError (Setting::integrator, formulation or solver) for an unknown name,
+// for both ways at once and for a pair that is not implemented, with the valid names or pairs.
+solve::Integrator integrator_choice(const std::string& integrator, const std::string& formulation,
+                                    const std::string& solver);
+
+// The work limits a run accepts: steps over the run [1, max_step_limit], wall clock (0, max_wall_clock]
+// s (infinite: none), the adaptive solvers' step floor [0, max_step_floor] s.
+inline constexpr long max_step_limit = 1'000'000'000;
+inline constexpr double max_wall_clock = 1e6, max_step_floor = 3600.0;
+// Throws SettingError (step_limit, wall_clock_limit, step_floor) for a limit out of its range.
+void validate(const solve::WorkLimits& work);
+
 // The tolerances every run accepts: tighter than 1e-12 is at the edge of what the integrators
 // resolve in double precision (IDA at 1e-14 crawls for minutes over 2 s of the reference crane),
 // looser than 0.1 resolves nothing.
@@ -74,7 +90,7 @@ inline constexpr double min_tolerance = 1e-12, max_tolerance = 0.1;
 // undamped boom (BDF 3–5 are held to tiny steps by its undamped stiff modes on the imaginary
 // axis; 2 is A-stable), 5 otherwise. Throws SettingError for a value out of range, for more output
 // samples than scene::max_output_samples and for more fixed steps than max_fixed_steps
-// (study/work_limits.hpp).
+// (study/work_limits.hpp), and for work limits out of range (validate above).
 multibody::RunSettings integrator_settings(const scene::Scene& scene, const DynamicsRequest& request);
 
 // The failure detectors' bounds for a scene (deflection and drift limits, the boom's Euler load,

@@ -81,6 +81,17 @@ SweepResult run_configuration(const SweepSetup& setup, const SweepConfig& config
   return r;
 }
 
+double default_sweep_duration(const scene::Scene& scene, SweepGrid grid) {
+  return grid == SweepGrid::quick ? quick_sweep_duration : scene.simulation.duration;
+}
+
+int worker_threads(int jobs) { return jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+
+void add_scene_axes(SweepRequest& request, const scene::Scene& scene, bool radiation_fixed) {
+  request.radiation_axis = scene.bem.has_value() && !radiation_fixed;
+  request.mode_set_axis = scene.boom.mount && scene.boom.mount->pinned;
+}
+
 SweepStudy sweep_scene(const scene::Scene& scene, const SweepRequest& request) {
   if (request.jobs < 0) {
     throw SettingError(Setting::jobs, fmt::format("{}", request.jobs), "not a thread count (valid range [1, inf), 0: one per core)");

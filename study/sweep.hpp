@@ -59,6 +59,16 @@ struct SweepRequest {
   bool mode_set_axis = false;
 };
 
+// The duration of every run when none is given: quick_sweep_duration for the quick grid (a first look
+// past the wave ramp), the scene's simulation.duration for the others.
+inline constexpr double quick_sweep_duration = 40.0;  // [s]
+double default_sweep_duration(const scene::Scene& scene, SweepGrid grid);
+// Worker threads of a sweep: `jobs`, or one per core for 0 (the front ends' default).
+int worker_threads(int jobs);
+// The axes a scene adds to the grid: the radiation models of a [bem] hull (unless its radiation model
+// is kept as given: `radiation_fixed`), the pinned-pinned mode set of a boom pinned at its heel.
+void add_scene_axes(SweepRequest& request, const scene::Scene& scene, bool radiation_fixed);
+
 struct SweepStudy {
   double tolerance = 0.01;  // of the verdict
   scene::Scene scene;       // the scene as every run models it (the stiffening decided)

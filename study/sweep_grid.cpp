@@ -1,6 +1,8 @@
 // The sweep grid (see sweep_grid.hpp).
 #include "study/sweep_grid.hpp"
 
+#include "study/run_pipeline.hpp"
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -56,6 +58,13 @@ std::string_view to_string(SweepGrid grid) {
     case SweepGrid::full: return "full";
   }
   return "?";
+}
+
+SweepGrid parse_sweep_grid(std::string_view name) {
+  for (const SweepGrid grid : {SweepGrid::quick, SweepGrid::medium, SweepGrid::full}) {
+    if (to_string(grid) == name) return grid;
+  }
+  throw SettingError(Setting::grid, std::string(name), "unknown sweep grid; choose one of quick, medium, full");
 }
 
 std::string grid_description(SweepGrid grid) {

@@ -18,6 +18,8 @@ namespace ffrf::study {
 
 enum class SweepGrid { quick, medium, full };
 std::string_view to_string(SweepGrid grid);
+// "quick", "medium", "full"; throws SettingError (Setting::grid) naming the choices.
+SweepGrid parse_sweep_grid(std::string_view name);
 // One paragraph saying what the grid contains.
 std::string grid_description(SweepGrid grid);
 

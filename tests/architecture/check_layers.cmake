@@ -5,8 +5,11 @@
 #   a generic second-order system) on linalg alone: multibody implements its system interface, and
 #   solve knows nothing of fem, modal, nodal, hydro, sea or the crane; distributed/ (the task-farm engine)
 #   knows nothing of ffrf and serves study/ and app/;
-#   CLI11 only in app/, nlohmann-json only in report/, toml++ only in scene/, netCDF only in hydro/;
-#   no printing (fmt::print, printf, std::cout/cerr, puts) in scene/, study/, report/;
+#   python/ (the Python module) on scene, study and report (and solve's stop requests and failures,
+#   distributed's session) beside app, which it never includes;
+#   CLI11 only in app/, nlohmann-json only in report/, toml++ only in scene/, netCDF only in hydro/,
+#   pybind11 only in python/;
+#   no printing (fmt::print, printf, std::cout/cerr, puts) in scene/, study/, report/, python/;
 #   the test programs of tests/<layer> link no library of a layer above it.
 # Run as: cmake -DSOURCE_DIR=<repository> -P check_layers.cmake. Every violation is listed with its
 # file and line; the script fails when there is one.
@@ -29,7 +32,8 @@ set(allowed_scene linalg fem modal nodal hydro sea solve multibody)
 set(allowed_study linalg fem modal nodal hydro sea solve multibody scene distributed)
 set(allowed_report linalg fem modal nodal hydro sea solve multibody scene study distributed)
 set(allowed_app linalg fem modal nodal hydro sea solve multibody scene study report distributed)
-set(layers linalg fem modal nodal hydro sea distributed solve multibody scene study report app)
+set(allowed_python solve scene study report distributed)
+set(layers linalg fem modal nodal hydro sea distributed solve multibody scene study report app python)
 
 set(violations "")
 set(checked 0)
@@ -63,7 +67,10 @@ foreach(layer IN LISTS layers)
       if(line MATCHES "^[ \t]*#[ \t]*include[ \t]*<netcdf" AND NOT layer STREQUAL "hydro")
         list(APPEND violations "${shown}:${number}: netCDF outside hydro/ (${line})")
       endif()
-      if(layer MATCHES "^(scene|study|report)$" AND
+      if(line MATCHES "^[ \t]*#[ \t]*include[ \t]*<pybind11/" AND NOT layer STREQUAL "python")
+        list(APPEND violations "${shown}:${number}: pybind11 outside python/ (${line})")
+      endif()
+      if(layer MATCHES "^(scene|study|report|python)$" AND
          line MATCHES "(fmt::print|std::cout|std::cerr|std::clog|[^a-z_]printf[ \t]*\\(|[^a-z_]puts[ \t]*\\()")
         list(APPEND violations "${shown}:${number}: ${layer}/ prints (it returns results; app/ prints) (${line})")
       endif()
