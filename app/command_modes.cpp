@@ -1,5 +1,6 @@
 // `ffrf modes SCENE`: natural frequencies and mode shapes of the scene's boom, next to the
-// analytic Euler–Bernoulli values. Text table, --json on stdout, --out DIR with CSV, JSON and
+// analytic Euler–Bernoulli values; for a boom pinned at its heel also its modes as the crane
+// supports it (heel pin, luffing wires: study/supported_boom.hpp). Text table, --json on stdout, --out DIR with CSV, JSON and
 // gnuplot charts (written completely or not at all). With --spin Ω and/or --axial-force P: the modes
 // of the spinning / prestressed beam next to the power series; with --spin-range a:b:n: the
 // Campbell diagram (study/campbell.hpp).
@@ -102,6 +103,7 @@ void write_outputs(StagedDirectory& out, const ModesResult& result, const ModesC
   out.write("modes.csv", mode_shapes_csv(result));
   out.write("mode_shapes_sampled.csv", sampled_shapes_csv(result));
   out.write("frequencies.csv", frequencies_csv(result));
+  if (result.supported) out.write("supported_boom.csv", supported_boom_csv(*result.supported));
   const auto convergence = frequency_convergence(result.mesh, result.boundary, result.solver, [](int elements) {
     progress(fmt::format("convergence study: N = {} ...", elements));
   });
@@ -201,7 +203,9 @@ int run_modes(const ModesOptions& options) {
   if (!options.out.empty()) out.emplace(options.out, "summary.json");
 
   progress(fmt::format("solving {} modes, N = {} ({} DOFs) ...", count, mesh.element_count, dof));
-  const ModesResult result = solve_modes(mesh, boundary, solver, count);
+  ModesResult result = solve_modes(mesh, boundary, solver, count);
+  if (scene.boom.mount && scene.boom.mount->pinned) progress("the boom as supported: heel pin and luffing wires ...");
+  add_supported_boom(scene, count, result);
   progress_done();
   for (const std::string& warning : result.warnings) fmt::print(stderr, "ffrf modes: warning: {}\n", warning);
   const ModesContext context{options.scene, scene.name};
@@ -228,8 +232,8 @@ Command add_modes_command(CLI::App& parent) {
       ->capture_default_str();
   sub->add_flag("--json", options->json, "Print the results as JSON on stdout");
   sub->add_option("--out", options->out,
-                  "Write modes.csv, mode_shapes_sampled.csv, frequencies.csv, frequency_convergence.csv, summary.json and "
-                  "PNG charts "
+                  "Write modes.csv, mode_shapes_sampled.csv, frequencies.csv, frequency_convergence.csv, summary.json, "
+                  "supported_boom.csv (a pinned boom) and PNG charts "
                   "(with their gnuplot scripts) into this directory; with --spin/--axial-force: prestressed_frequencies.csv "
                   "and summary.json; with --spin-range: campbell.csv, campbell.png (+ .gp) and summary.json");
   sub->add_option("--spin", options->spin,

@@ -23,7 +23,10 @@ py::dict modes(const SceneValue& value, const py::dict& keywords) {
   if (options.given("solver")) request.solver = options.text("solver");
   const study::ModesSetup setup = study::modes_setup(value.scene, request);
   study::ModesResult result;
-  run_interruptible([&] { result = study::solve_modes(setup.mesh, setup.boundary, setup.solver, setup.count); });
+  run_interruptible([&] {
+    result = study::solve_modes(setup.mesh, setup.boundary, setup.solver, setup.count);
+    study::add_supported_boom(value.scene, setup.count, result);
+  });
   const report::ModesContext context{value.path, value.scene.name};
   std::vector<double> hz, analytic_hz;
   std::vector<std::string> kinds;

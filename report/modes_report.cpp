@@ -33,7 +33,38 @@ std::string header(const std::string& terminal, const std::string& output, const
       output, terminal, title);
 }
 
+std::string supported_table(const study::SupportedBoomModes& s) {
+  std::string out = fmt::format(
+      "\nsupported boom: pinned at its heel on the held deck, on its luffing wires ({:.6g} kN together at rest),\n"
+      "under its own weight, without the cargo; nodal N = {}, linearised about that equilibrium\n",
+      s.luffing_tension / 1e3, s.elements);
+  out += fmt::format("{:>4}  {:<8} {:>16}  {:>10}  {:>10}  {:>20}  {:>8}\n", "mode", "kind", "f [Hz]", "boom strain",
+                     "axial share", "f pinned-pinned [Hz]", "ratio");
+  for (std::size_t j = 0; j < s.modes.size(); ++j) {
+    const study::SupportedBoomMode& m = s.modes[j];
+    const bool bending = m.kind == study::SupportedBoomMode::Kind::bending;
+    out += fmt::format("{:>4}  {:<8} {:>16.10g}  {:>10.3f}  {:>10.3f}  {:>20}  {:>8}\n", j + 1, study::to_string(m.kind), m.hz,
+                       m.strain_share, m.axial_share, bending ? fmt::format("{:.10g}", m.pinned_pinned_hz) : "-",
+                       bending ? fmt::format("{:.4f}", m.hz / m.pinned_pinned_hz) : "-");
+  }
+  out += "(boom strain: the share of the mode's potential energy the boom's deformation stores, the wires and gravity the\n"
+         " rest; swing: under half, the boom turning about its heel on the wires' spring; axial share: of its kinetic\n"
+         " energy; pinned-pinned: the simply supported span's Euler-Bernoulli bending frequency, which the supported\n"
+         " boom approaches as its wires stiffen)\n";
+  return out;
+}
+
 }  // namespace
+
+std::string supported_boom_csv(const study::SupportedBoomModes& s) {
+  std::string csv = "mode,kind,frequency_hz,boom_strain_energy_share,axial_energy_share,bending_order,pinned_pinned_frequency_hz\n";
+  for (std::size_t j = 0; j < s.modes.size(); ++j) {
+    const study::SupportedBoomMode& m = s.modes[j];
+    csv += fmt::format("{},{},{:.10g},{:.6g},{:.6g},{},{:.10g}\n", j + 1, study::to_string(m.kind), m.hz, m.strain_share,
+                       m.axial_share, m.bending_order, m.pinned_pinned_hz);
+  }
+  return csv;
+}
 
 std::string modes_table(const study::ModesResult& r, const ModesContext& context) {
   const modal::EigenStats& stats = r.pairs.stats;
@@ -58,6 +89,7 @@ std::string modes_table(const study::ModesResult& r, const ModesContext& context
                        mode.analytic_frequency ? fmt::format("{:.10g}", hertz(*mode.analytic_frequency)) : "-",
                        error ? fmt::format("{:.2e}", *error) : "-");
   }
+  if (r.supported) out += supported_table(*r.supported);
   return out;
 }
 
@@ -96,6 +128,22 @@ std::string modes_json(const study::ModesResult& r, const ModesContext& context,
          optional_number(mode.analytic_frequency ? std::optional<double>(hertz(*mode.analytic_frequency)) : std::nullopt)},
         {"relative_error", optional_number(relative_error(mode))},
         {"axial_energy_share", mode.axial_energy_share}});
+  }
+  if (r.supported) {
+    Json modes = Json::array();
+    for (const study::SupportedBoomMode& m : r.supported->modes) {
+      const bool bending = m.kind == study::SupportedBoomMode::Kind::bending;
+      modes.push_back(Json{{"kind", study::to_string(m.kind)},
+                           {"frequency_hz", m.hz},
+                           {"boom_strain_energy_share", m.strain_share},
+                           {"axial_energy_share", m.axial_share},
+                           {"bending_order", m.bending_order},
+                           {"pinned_pinned_frequency_hz", bending ? Json(m.pinned_pinned_hz) : Json(nullptr)}});
+    }
+    json["supported_boom"] = Json{{"elements", r.supported->elements},
+                                  {"luffing_tension_N", r.supported->luffing_tension},
+                                  {"support", "pinned heel on the held deck, luffing wires, own weight, no cargo"},
+                                  {"modes", std::move(modes)}};
   }
   if (!convergence.empty()) {
     json["convergence"] = Json::array();

@@ -25,6 +25,8 @@ std::string mode_shapes_csv(const study::ModesResult& result);
 // x_m, then modeJ_v_per_sqrtkg per mode: the transverse shape v(x) between the nodes by the
 // element's Hermite shape functions (8 points per element, at most 1000 intervals); for charts.
 std::string sampled_shapes_csv(const study::ModesResult& result);
+// A pinned boom's modes as the crane supports it (study/supported_boom.hpp): supported_boom.csv.
+std::string supported_boom_csv(const study::SupportedBoomModes& supported);
 std::string convergence_csv(const std::vector<study::ConvergencePoint>& convergence);
 
 // Charts (gnuplot scripts): the transverse shape v(x) of each bending mode, from

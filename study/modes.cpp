@@ -62,6 +62,14 @@ ModesSetup modes_setup(const scene::Scene& scene, const ModesRequest& request) {
   return setup;
 }
 
+void add_supported_boom(const scene::Scene& scene, int count, ModesResult& result) {
+  try {
+    result.supported = supported_boom_modes(scene, result.mesh.element_count, count);
+  } catch (const std::exception& error) {
+    result.warnings.push_back(fmt::format("the supported boom's modes were not computed: {}", error.what()));
+  }
+}
+
 ModesResult solve_modes(const fem::BeamMesh& mesh, fem::Boundary boundary, modal::EigenSolverKind solver, int count) {
   fem::validate(mesh);
   const auto assembly_start = std::chrono::steady_clock::now();

@@ -14,6 +14,7 @@
 #include "fem/mesh.hpp"
 #include "modal/eigen_solver.hpp"
 #include "modal/mode_kind.hpp"
+#include "study/supported_boom.hpp"
 
 namespace ffrf::study {
 
@@ -28,6 +29,8 @@ struct ModesResult {
   double assembly_seconds;
   double solve_seconds;
   std::vector<std::string> warnings;  // results to distrust, in words
+  // A pinned boom's modes as the crane supports it (add_supported_boom); empty for a clamped boom.
+  std::optional<SupportedBoomModes> supported;
 };
 
 // Shift for the shift-invert solvers: 0 when the boundary condition suppresses the rigid modes;
@@ -63,6 +66,11 @@ struct ModesSetup {
   int count = 0;
 };
 ModesSetup modes_setup(const scene::Scene& scene, const ModesRequest& request);
+
+// For a pinned scene: the supported boom's lowest `count` modes on the result's mesh into
+// result.supported (study/supported_boom.hpp); when its static equilibrium or eigenproblem fails,
+// a warning that says why instead. Nothing for a clamped boom.
+void add_supported_boom(const scene::Scene& scene, int count, ModesResult& result);
 
 // The lowest `count` modes (1 <= count < free DOFs); throws modal::EigenSolverError on failure.
 ModesResult solve_modes(const fem::BeamMesh& mesh, fem::Boundary boundary, modal::EigenSolverKind solver, int count);

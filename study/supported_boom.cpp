@@ -1,0 +1,98 @@
+// The pinned boom's natural modes as the crane supports it (see the header).
+#include "study/supported_boom.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "fem/element_space.hpp"
+#include "multibody/crane_equations.hpp"
+#include "multibody/crane_model.hpp"
+#include "multibody/crane_statics.hpp"
+#include "multibody/linearisation.hpp"
+#include "nodal/nodal_coordinates.hpp"
+#include "scene/crane_builder.hpp"
+
+namespace ffrf::study {
+
+std::string_view to_string(SupportedBoomMode::Kind kind) {
+  switch (kind) {
+    case SupportedBoomMode::Kind::swing: return "swing";
+    case SupportedBoomMode::Kind::bending: return "bending";
+    case SupportedBoomMode::Kind::axial: return "axial";
+  }
+  return "?";
+}
+
+std::optional<SupportedBoomModes> supported_boom_modes(const scene::Scene& scene, int elements, int count) {
+  if (!scene.is_crane() || !scene.boom.mount || !scene.boom.mount->pinned) return std::nullopt;
+  const auto beam = scene::boom_beam(scene, elements);  // clamped-free in the frame the heel's angle turns
+  auto parameters = scene::build_crane_parameters(scene, nodal::NodalCoordinates(beam), scene.boom.stiffening);
+  // The deck held at its as-built pose, out of the water; the boom alone on its heel and wires.
+  parameters.hull.fixed = true;
+  parameters.hull.hydrostatics = false;
+  parameters.hull.support_pose = Eigen::Vector3d::Zero();
+  parameters.cargo.present = false;
+  if (parameters.hoist_wire >= 0) {
+    parameters.wires.erase(parameters.wires.begin() + parameters.hoist_wire);
+    parameters.hoist_wire = -1;
+  }
+  parameters.stress.reset();  // (no stresses sampled here)
+  const std::unique_ptr<multibody::CraneEquations> equations = multibody::make_crane_equations(std::move(parameters));
+  const multibody::StaticEquilibrium statics = multibody::solve_static_equilibrium(*equations, equations->initial_guess());
+  const multibody::LinearisedCrane linear = multibody::linearise_crane(*equations, statics.z);
+
+  const Eigen::MatrixXd stiffness = 0.5 * (linear.stiffness + linear.stiffness.transpose());
+  const Eigen::MatrixXd mass = 0.5 * (linear.mass + linear.mass.transpose());
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(stiffness, mass);
+  if (solver.info() != Eigen::Success) {
+    throw std::runtime_error("supported boom modes: the linearised mass matrix is not positive definite (the eigenvalue solver "
+                             "failed); check the boom's section and mass per length");
+  }
+  SupportedBoomModes out;
+  out.elements = elements;
+  out.luffing_tension = statics.outputs.luffing_tension;
+  const int heel = equations->heel_offset();
+  const fem::BeamSection& section = scene.boom.mesh.section;
+  const double length = scene.boom.mesh.length;
+  const double span_rate = std::sqrt(section.bending_rigidity() / (section.mass_per_length * std::pow(length, 4)));
+  // The beam's consistent mass over its free nodal coordinates, the rigid turn about the heel in
+  // them (node at x: u = 0, v = x, φ = 1) and a mask of the axial ones (u).
+  const int free = beam->dofs.free_count();
+  const Eigen::MatrixXd beam_mass(nodal::NodalCoordinates(beam).mass_ff());
+  Eigen::VectorXd rotation(free), axial_part(free);
+  for (int i = 0; i < free; ++i) {
+    const int full = beam->dofs.free_to_full[static_cast<std::size_t>(i)];
+    const int node = full / fem::node_dofs, dof = full % fem::node_dofs;
+    rotation(i) = dof == 0 ? 0.0 : dof == 1 ? beam->mesh.node_position(node) : 1.0;
+    axial_part(i) = dof == 0 ? 1.0 : 0.0;
+  }
+  const Eigen::MatrixXd beam_stiffness(nodal::NodalCoordinates(beam).stiffness());
+  int order = 0;
+  for (int j = 0; j < std::min(count, linear.size()); ++j) {
+    const Eigen::VectorXd shape = solver.eigenvectors().col(j);
+    SupportedBoomMode mode;
+    mode.hz = std::sqrt(std::max(solver.eigenvalues()(j), 0.0)) / (2.0 * std::numbers::pi);
+    // The boom's displacement in the frame at rest: the heel's turn β r plus the elastic η. Its
+    // kinetic energy ω² dᵀM d / 2 is the mode's whole potential energy; the boom's deformation
+    // stores ηᵀK η / 2 of it (K ignores the rigid turn), the wires and gravity the rest.
+    const Eigen::VectorXd elastic = shape.segment(linear.elastic_at, free);
+    Eigen::VectorXd field = elastic;
+    if (heel >= 0) field += shape(heel) * rotation;
+    const Eigen::VectorXd field_momentum = beam_mass * field;
+    const double kinetic = field.dot(field_momentum), omega = 2.0 * std::numbers::pi * mode.hz;
+    mode.strain_share = omega > 0.0 ? std::min(elastic.dot(beam_stiffness * elastic) / (omega * omega * kinetic), 1.0) : 0.0;
+    mode.axial_share = axial_part.cwiseProduct(field).dot(field_momentum) / kinetic;
+    mode.kind = mode.strain_share < 0.5 ? SupportedBoomMode::Kind::swing
+                : mode.axial_share > 0.5 ? SupportedBoomMode::Kind::axial : SupportedBoomMode::Kind::bending;
+    if (mode.kind == SupportedBoomMode::Kind::bending) {
+      mode.bending_order = ++order;
+      mode.pinned_pinned_hz = std::pow(order * std::numbers::pi, 2) * span_rate / (2.0 * std::numbers::pi);
+    }
+    out.modes.push_back(mode);
+  }
+  return out;
+}
+
+}  // namespace ffrf::study
