@@ -4,7 +4,7 @@
 #include "cli_harness.hpp"
 
 namespace ffrf::test {
-namespace {
+namespace cli_test {
 
 constexpr const char* kCantilever = R"([boom]
 length = 10.0
@@ -155,5 +155,5 @@ TEST(CliModes, UnknownOptionIsAnError) {
   EXPECT_NE(run_ffrf("", dir.path()).exit_code, 0);  // a subcommand is required
 }
 
-}  // namespace
+}  // namespace cli_test
 }  // namespace ffrf::test

@@ -11,7 +11,7 @@
 #include "cli_harness.hpp"
 
 namespace ffrf::test {
-namespace {
+namespace cli_baseline_test {
 
 const std::string kCrane = source_file("cases/paper_floating_crane.toml");
 
@@ -161,5 +161,5 @@ TEST(CliBaseline, BadInputIsNamedWithExitTwo) {
   EXPECT_FALSE(fs::exists(dir / "x.json"));
 }
 
-}  // namespace
+}  // namespace cli_baseline_test
 }  // namespace ffrf::test

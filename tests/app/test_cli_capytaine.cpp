@@ -9,7 +9,7 @@
 #include "cli_harness.hpp"
 
 namespace ffrf::test {
-namespace {
+namespace cli_capytaine_test {
 
 const std::string kScene = source_file("cases/capytaine_barge_crane.toml");
 
@@ -50,5 +50,5 @@ TEST(CliCapytaine, PeriodsOutsideTheDatasetAreNamedAtItsKey) {
   EXPECT_NE(r.err.find("valid range 0.01 … 4 rad/s"), std::string::npos) << r.err;
 }
 
-}  // namespace
+}  // namespace cli_capytaine_test
 }  // namespace ffrf::test

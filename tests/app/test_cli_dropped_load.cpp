@@ -10,7 +10,7 @@
 
 #include "cli_harness.hpp"
 
-namespace {
+namespace cli_dropped_load_test {
 
 using namespace ffrf::test;
 
@@ -76,4 +76,4 @@ TEST(CliDroppedLoad, CompareAndRecommendFinishWithDefaultOptions) {
   EXPECT_EQ(recommend.err.find("very near"), std::string::npos) << recommend.err;
 }
 
-}  // namespace
+}  // namespace cli_dropped_load_test

@@ -8,7 +8,7 @@
 
 #include "cli_harness.hpp"
 
-namespace {
+namespace cli_integrators_test {
 
 using namespace ffrf::test;
 
@@ -56,4 +56,4 @@ TEST(CliIntegrators, AWorkLimitEndsTheRunNamingTheFailureAndTheOptions) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
-}  // namespace
+}  // namespace cli_integrators_test

@@ -5,7 +5,7 @@
 #include "cli_matrix.hpp"
 
 namespace ffrf::test {
-namespace {
+namespace cli_matrix_test {
 
 std::vector<MatrixCell> quick_cells() {
   std::vector<MatrixCell> cells;
@@ -65,5 +65,5 @@ TEST(CliCharts, AChartGnuplotFailsOnCostsTheRunNoResults) {
   EXPECT_GT(fs::file_size(out / "timeseries.csv"), 0u);
 }
 
-}  // namespace
+}  // namespace cli_matrix_test
 }  // namespace ffrf::test

@@ -13,7 +13,7 @@
 #include "cli_harness.hpp"
 
 namespace ffrf::test {
-namespace {
+namespace cli_modes_test {
 
 bool is_png(const fs::path& path) {
   const std::string bytes = read_text(path);
@@ -202,5 +202,5 @@ INSTANTIATE_TEST_SUITE_P(
                       BadSpinInput{"--spin 1 --boundary free-free", "need a held root"},
                       BadSpinInput{"--axial-force inf", "--axial-force inf"}));
 
-}  // namespace
+}  // namespace cli_modes_test
 }  // namespace ffrf::test

@@ -11,7 +11,7 @@
 #include "cli_harness.hpp"
 
 namespace ffrf::test {
-namespace {
+namespace cli_rao_test {
 
 const std::string kCrane = source_file("cases/paper_floating_crane.toml");
 
@@ -143,5 +143,5 @@ TEST(CliRao, MarksTheNaturalPeriodsAndOverlaysTheSea) {
   EXPECT_NE(bad.err.find("--spectrum jonswap:1.5: malformed"), std::string::npos) << bad.err;
 }
 
-}  // namespace
+}  // namespace cli_rao_test
 }  // namespace ffrf::test

@@ -8,7 +8,7 @@
 #include "cli_harness.hpp"
 
 namespace ffrf::test {
-namespace {
+namespace cli_run_test {
 
 const std::string kScene = source_file("cases/paper_floating_crane.toml");
 constexpr double kCargoWeight = 1.3e6 * 9.81;  // [N], the reference scene's cargo
@@ -245,5 +245,5 @@ TEST(CliCompare, ToleranceOutOfRangeIsBadInputBeforeAnythingRuns) {
   }
 }
 
-}  // namespace
+}  // namespace cli_run_test
 }  // namespace ffrf::test

@@ -6,7 +6,7 @@
 #include "cli_harness.hpp"
 
 namespace ffrf::test {
-namespace {
+namespace cli_run_errors_test {
 
 const std::string kScene = source_file("cases/paper_floating_crane.toml");
 
@@ -112,5 +112,5 @@ TEST(CliRunBadInput, SolverFailureRemovesTheOldCompletenessMarker) {
   EXPECT_FALSE(fs::exists(out / "summary.json")) << "the old results no longer pose as this run's";
 }
 
-}  // namespace
+}  // namespace cli_run_errors_test
 }  // namespace ffrf::test

@@ -14,7 +14,7 @@
 extern char** environ;
 
 namespace ffrf::test {
-namespace {
+namespace cli_signals_test {
 
 using Clock = std::chrono::steady_clock;
 
@@ -123,5 +123,5 @@ INSTANTIATE_TEST_SUITE_P(Signals, CliSignals,
                          ::testing::Values(SignalCase{SIGINT, 130, "SIGINT"}, SignalCase{SIGTERM, 143, "SIGTERM"}),
                          [](const ::testing::TestParamInfo<SignalCase>& signal_info) { return std::string(signal_info.param.name); });
 
-}  // namespace
+}  // namespace cli_signals_test
 }  // namespace ffrf::test

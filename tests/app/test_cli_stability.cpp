@@ -7,7 +7,7 @@
 #include "cli_harness.hpp"
 
 namespace ffrf::test {
-namespace {
+namespace cli_stability_test {
 
 TEST(CliStability, DroppedLoadWritesTheReportAndEveryApplicableSection) {
   TempDir dir;
@@ -58,5 +58,5 @@ TEST(CliStability, BadInputExitsTwoNamingTheProblem) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
-}  // namespace
+}  // namespace cli_stability_test
 }  // namespace ffrf::test

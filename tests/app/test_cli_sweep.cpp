@@ -9,7 +9,7 @@
 #include "cli_harness.hpp"
 
 namespace ffrf::test {
-namespace {
+namespace cli_sweep_test {
 
 const std::string kScene = source_file("cases/paper_floating_crane.toml");
 const std::string kShort = " --duration 25 --reference-levels 2 --jobs 2 ";
@@ -198,11 +198,11 @@ TEST(CliCompareGrown, ReportHasTheReferenceConvergenceTableAndModalRows) {
   EXPECT_LT(heave(7), heave(4));
 }
 
-}  // namespace
+}  // namespace cli_sweep_test
 }  // namespace ffrf::test
 
 namespace ffrf::test {
-namespace {
+namespace cli_sweep_test {
 
 // A scene with [bem]: the radiation model is an axis of the grid (three consecutive ids per
 // boom/integrator configuration), the CSV's last column names it, and the verdict names the radiation
@@ -234,5 +234,5 @@ TEST(CliSweepRadiation, ABemSceneCrossesTheGridWithTheRadiationModels) {
   EXPECT_TRUE(fs::exists(out / "radiation.dat"));
 }
 
-}  // namespace
+}  // namespace cli_sweep_test
 }  // namespace ffrf::test

@@ -18,7 +18,7 @@
 #include "cli_harness.hpp"
 
 namespace ffrf::test {
-namespace {
+namespace cli_terminal_test {
 
 struct TerminalRun {
   bool finished = false;
@@ -103,5 +103,5 @@ INSTANTIATE_TEST_SUITE_P(
                       ChartingCommand{"rao", "--periods 4:20:17 --check-time-domain --check-periods 10", "rao_hull.png"}),
     [](const ::testing::TestParamInfo<ChartingCommand>& p) { return std::string(p.param.name); });
 
-}  // namespace
+}  // namespace cli_terminal_test
 }  // namespace ffrf::test

@@ -12,7 +12,7 @@
 #include "cli_harness.hpp"
 
 namespace ffrf::test {
-namespace {
+namespace readme_numbers_test {
 
 // The lines between the block's BEGIN and END marks.
 std::vector<std::string> readme_block(const std::string& id) {
@@ -158,5 +158,5 @@ TEST(ReadmeNumbers, TheMainJobsCompareGivesEveryNumberTheReadmeQuotes) {
   EXPECT_EQ(checked_models, json["models"].items.size()) << "every model of the main job is in the README's table";
 }
 
-}  // namespace
+}  // namespace readme_numbers_test
 }  // namespace ffrf::test
