@@ -86,6 +86,8 @@ BoomStressModel make_boom_stress_model(BoomStressInputs in) {
 
 namespace {
 
+constexpr int sections_per_element = 4;
+
 // Each element's end forces r_e from the full nodal displacements, velocities and accelerations in
 // `work` and the frame's motion (see the header), then the section forces and fibre stresses.
 void fill_profile(const BoomStressModel& model, const BoomMotion& motion, std::span<const BoomPointLoad> point_loads,
@@ -124,8 +126,33 @@ void fill_profile(const BoomStressModel& model, const BoomMotion& motion, std::s
     const Eigen::Vector2d local = a.transpose() * load.force;
     work.end_forces[static_cast<std::size_t>(e)].noalias() -= fem::element_shape(xi, l).transpose() * local;
   }
-  fem::section_forces_from_end_forces(mesh, work.end_forces, out.forces);
-  const int sections = static_cast<int>(out.forces.position.size());
+  // Inside an element the distributed load is nearly its mean p_v, so N is linear and
+  // M(s) = M_start (1 − s/l) + M_end s/l − p_v s (l − s)/2 (exact for a uniform load).
+  const auto inside = [&](int e, double s) {
+    const fem::ElementForces& r = work.end_forces[static_cast<std::size_t>(e)];
+    const double t = s / l;
+    return std::pair{-r(0) * (1.0 - t) + r(3) * t, -r(2) * (1.0 - t) + r(5) * t - 0.5 * work.transverse_load(e) * s * (l - s)};
+  };
+  // The sections: each node (both elements' ends averaged) and the quarters of each element.
+  fem::section_forces_from_end_forces(mesh, work.end_forces, work.nodal_sections);
+  const int sections = sections_per_element * elements + 1;
+  out.forces.position.resize(sections);
+  out.forces.axial_force.resize(sections);
+  out.forces.bending_moment.resize(sections);
+  for (int e = 0; e <= elements; ++e) {
+    const int at = sections_per_element * e;
+    out.forces.position(at) = work.nodal_sections.position(e);
+    out.forces.axial_force(at) = work.nodal_sections.axial_force(e);
+    out.forces.bending_moment(at) = work.nodal_sections.bending_moment(e);
+    if (e == elements) break;
+    for (int k = 1; k < sections_per_element; ++k) {
+      const double s = l * k / sections_per_element;
+      const auto [axial, moment] = inside(e, s);
+      out.forces.position(at + k) = mesh.node_position(e) + s;
+      out.forces.axial_force(at + k) = axial;
+      out.forces.bending_moment(at + k) = moment;
+    }
+  }
   out.top.resize(sections);
   out.bottom.resize(sections);
   for (int s = 0; s < sections; ++s) {
@@ -134,18 +161,16 @@ void fill_profile(const BoomStressModel& model, const BoomMotion& motion, std::s
     out.top(s) = stress.top;
     out.bottom(s) = stress.bottom;
   }
-  // The peak between the nodes too: inside an element the distributed load is nearly its mean p_v, so
-  // N is linear and M(s) = M_start (1 − s/l) + M_end s/l − p_v s (l − s)/2 (exact for a uniform load);
-  // the largest |N|/A + |M|c/I over its vertex and eight points per element.
+  // The peak between the sections too: the largest |N|/A + |M|c/I over eight points per element
+  // and the vertex of its moment parabola.
   out.peak = 0.0;
   out.peak_position = 0.0;
   for (int e = 0; e < elements; ++e) {
     const fem::ElementForces& r = work.end_forces[static_cast<std::size_t>(e)];
-    const double n_start = -r(0), n_end = r(3), m_start = -r(2), m_end = r(5), p = work.transverse_load(e);
+    const double m_start = -r(2), m_end = r(5), p = work.transverse_load(e);
     const auto consider = [&](double s) {
-      const double t = s / l;
-      const double moment = m_start * (1.0 - t) + m_end * t - 0.5 * p * s * (l - s);
-      const double stress = fem::fibre_stress(mesh.section, model.fibre_distance, n_start * (1.0 - t) + n_end * t, moment).extreme();
+      const auto [axial, moment] = inside(e, s);
+      const double stress = fem::fibre_stress(mesh.section, model.fibre_distance, axial, moment).extreme();
       if (stress > out.peak) {
         out.peak = stress;
         out.peak_position = mesh.node_position(e) + s;

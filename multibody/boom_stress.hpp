@@ -109,6 +109,7 @@ struct BoomStressWorkspace {
   Eigen::Matrix3d reference = Eigen::Matrix3d::Zero();
   Eigen::Matrix<double, 3, Eigen::Dynamic> coupling;
   std::vector<fem::ElementForces> end_forces;
+  fem::SectionForces nodal_sections;  // N and M at the nodes (both elements' ends averaged)
   BodyWorkspace body;
 };
 

@@ -11,7 +11,9 @@
 namespace ffrf::multibody {
 
 struct BoomStressProfile {
-  fem::SectionForces forces;    // position, N (tension > 0), M at each section
+  // position, N (tension > 0), M at each section: the nodes and, between them, the element's own
+  // linear N and M under its mean transverse load at each quarter of its length
+  fem::SectionForces forces;
   Eigen::VectorXd top, bottom;  // the extreme fibres' stresses at y = ±c [Pa]
   double peak = 0.0;            // the largest |σ| along the boom, between the sections too [Pa]
   double peak_position = 0.0;   // where [m]

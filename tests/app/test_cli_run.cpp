@@ -63,14 +63,16 @@ TEST(CliRun, WritesTheDocumentedCsvJsonAndCharts) {
     EXPECT_EQ(std::stod(first[column(kHeader, motion)]), 0.0) << motion << ": displacement from static equilibrium";
   }
   EXPECT_NEAR(std::stod(split(rows.back(), ',')[0]), 3.0, 1e-12);
-  // The stresses along the boom: one row per node of the 3-element mesh, the envelope holding the peak.
+  // The stresses along the boom: one row per section of the 3-element mesh (its nodes and the quarters
+  // of each element: 40 m / 4 apart), the envelope holding the peak.
   const auto stress = split(read_text(out / "boom_stress.csv"), '\n');
-  ASSERT_EQ(stress.size(), 1u + 4u);
+  ASSERT_EQ(stress.size(), 1u + 13u);
   EXPECT_EQ(stress[0],
             "x_m,axial_min_N,axial_max_N,moment_min_Nm,moment_max_Nm,stress_min_MPa,stress_max_MPa,peak_axial_N,peak_moment_Nm,"
             "peak_top_MPa,peak_bottom_MPa");
   EXPECT_EQ(std::stod(split(stress[1], ',')[0]), 0.0);
-  EXPECT_EQ(std::stod(split(stress[4], ',')[0]), 120.0);
+  EXPECT_EQ(std::stod(split(stress[2], ',')[0]), 10.0);
+  EXPECT_EQ(std::stod(split(stress[13], ',')[0]), 120.0);
 
   const Json json = JsonParser(r.out).parse();
   // --json prints summary.json as the run made it; the file adds which charts were drawn (the
