@@ -28,7 +28,8 @@ std::string_view to_string(SupportedBoomMode::Kind kind) {
 std::optional<SupportedBoomModes> supported_boom_modes(const scene::Scene& scene, int elements, int count) {
   if (!scene.is_crane() || !scene.boom.mount || !scene.boom.mount->pinned) return std::nullopt;
   const auto beam = scene::boom_beam(scene, elements);  // clamped-free in the frame the heel's angle turns
-  auto parameters = scene::build_crane_parameters(scene, nodal::NodalCoordinates(beam), scene.boom.stiffening);
+  const nodal::NodalCoordinates coordinates(beam);
+  auto parameters = scene::build_crane_parameters(scene, coordinates, scene.boom.stiffening);
   // The deck held at its as-built pose, out of the water; the boom alone on its heel and wires.
   parameters.hull.fixed = true;
   parameters.hull.hydrostatics = false;
@@ -60,7 +61,7 @@ std::optional<SupportedBoomModes> supported_boom_modes(const scene::Scene& scene
   // The beam's consistent mass over its free nodal coordinates, the rigid turn about the heel in
   // them (node at x: u = 0, v = x, φ = 1) and a mask of the axial ones (u).
   const int free = beam->dofs.free_count();
-  const Eigen::MatrixXd beam_mass(nodal::NodalCoordinates(beam).mass_ff());
+  const Eigen::MatrixXd beam_mass(coordinates.mass_ff());
   Eigen::VectorXd rotation(free), axial_part(free);
   for (int i = 0; i < free; ++i) {
     const int full = beam->dofs.free_to_full[static_cast<std::size_t>(i)];
@@ -68,7 +69,7 @@ std::optional<SupportedBoomModes> supported_boom_modes(const scene::Scene& scene
     rotation(i) = dof == 0 ? 0.0 : dof == 1 ? beam->mesh.node_position(node) : 1.0;
     axial_part(i) = dof == 0 ? 1.0 : 0.0;
   }
-  const Eigen::MatrixXd beam_stiffness(nodal::NodalCoordinates(beam).stiffness());
+  const Eigen::MatrixXd beam_stiffness(coordinates.stiffness());
   int order = 0;
   for (int j = 0; j < std::min(count, linear.size()); ++j) {
     const Eigen::VectorXd shape = solver.eigenvectors().col(j);
