@@ -95,8 +95,9 @@ void add_model_options(CLI::App& sub, ModelOptions& options) {
   sub.add_option("--stiffening", options.stiffening,
                  "Geometric stiffening none|static|centrifugal|both (default: boom.stiffening of the scene)");
   sub.add_option("--mode-set", options.mode_set,
-                 "The modal boom's mode set (its floating frame's reference condition): clamped-free (the default) or, "
-                 "for a boom pinned at its heel, pinned-pinned (the chord frame)");
+                 "The modal boom's mode set (its floating frame's reference condition): clamped-free (the default), "
+                 "free-free (the unsupported boom's modes in the heel's tangent frame) or, for a boom pinned at its heel, "
+                 "pinned-pinned (the chord frame)");
   sub.add_option("--stress-recovery", options.stress_recovery,
                  "How the modal boom's stresses are recovered: acceleration (mode acceleration, the default: the static "
                  "response to every load the modes leave unbalanced added) or displacement (mode displacement: from the "

@@ -3,10 +3,17 @@
 
 #include <algorithm>
 
+#include "fem/analytic_beam.hpp"
 #include "fem/beam_model.hpp"
 #include "fem/boundary.hpp"
 
 namespace ffrf::modal {
+
+double rigid_mode_shift(const fem::BeamMesh& mesh, fem::Boundary boundary) {
+  if (fem::rigid_mode_count(boundary) == 0) return 0.0;
+  const fem::BeamSection& s = mesh.section;
+  return -s.bending_rigidity() / (s.mass_per_length * mesh.length * mesh.length * mesh.length * mesh.length);
+}
 
 int ModeCache::solve_count(int k, int free_dofs) {
   constexpr int block = 12;  // a mode-count sweep k = 1…12 in one solve
@@ -26,6 +33,7 @@ EigenPairs ModeCache::lowest_modes(const fem::BeamMesh& mesh, fem::Boundary boun
     const fem::BeamModel beam = fem::make_beam_model(mesh, boundary);
     EigenRequest request;
     request.nev = count;
+    request.sigma = rigid_mode_shift(mesh, boundary);
     found = modes_.emplace(key, solve_generalized(beam.stiffness, beam.mass, request, solver)).first;
     ++eigen_solves_;
   }

@@ -18,10 +18,15 @@
 
 namespace ffrf::modal {
 
+// Shift for the shift-invert solvers: 0 when the boundary condition suppresses the rigid modes;
+// for free–free −EI/(ρA L⁴) (the ω² of "βL = 1"), which makes K − σM positive definite while the
+// rigid modes (ω² = 0) stay ~500 times nearer σ than the first elastic mode (βL = 4.73).
+double rigid_mode_shift(const fem::BeamMesh& mesh, fem::Boundary boundary);
+
 class ModeCache {
  public:
   // The k lowest modes (ω² ascending, M-normalized vectors on the free DOFs) of the mesh under the
-  // boundary condition (shift σ = 0: the boundary must hold the beam). Throws EigenSolverError.
+  // boundary condition (shift: rigid_mode_shift). Throws EigenSolverError.
   EigenPairs lowest_modes(const fem::BeamMesh& mesh, fem::Boundary boundary, int k, EigenSolverKind solver);
   int eigen_solves() const;  // how many eigen solves the cache has run
 

@@ -115,7 +115,7 @@ study::BaselineModel read_model(const Node& n) {
   if (n.has("mode_set")) {
     const Node set = n.at("mode_set");
     const auto boundary = fem::parse_boundary(set.text());
-    if (!boundary || *boundary == fem::Boundary::free_free) set.fail("unknown mode set (valid: clamped-free, pinned-pinned)");
+    if (!boundary) set.fail("unknown mode set (valid: " + fem::boundary_choices() + ")");
     m.choice.mode_set = *boundary;
   }
   const Node stiffening = n.at("stiffening");

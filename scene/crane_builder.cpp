@@ -13,6 +13,7 @@
 #include "scene/recorded_sea.hpp"
 #include "fem/analytic_beam.hpp"
 #include "fem/axial_force.hpp"
+#include "modal/free_free_modes.hpp"
 #include "multibody/boom_stress.hpp"
 
 namespace ffrf::scene {
@@ -317,18 +318,19 @@ template multibody::CraneParameters<modal::ModalCoordinates> build_crane_paramet
                                                                                    StressRecovery);
 
 modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& choice, modal::ModeCache* cache) {
-  if (choice.kind == BoomKind::modal && choice.mode_set != fem::Boundary::clamped_free) {
+  const bool modal = choice.kind == BoomKind::modal;
+  if (modal && choice.mode_set == fem::Boundary::pinned_pinned && !(scene.boom.mount && scene.boom.mount->pinned)) {
     // The pinned-pinned set's frame is the chord frame: its origin at the heel pin, its angle free.
-    // A clamped heel holds the frame at the root tangent, which only the clamped-free set describes.
-    if (choice.mode_set != fem::Boundary::pinned_pinned || !scene.boom.mount || !scene.boom.mount->pinned) {
-      scene_problem(scene, scene_key("boom.heel"), scene.boom.mount && scene.boom.mount->pinned ? "\"pinned\"" : "\"clamped\"",
-                    "the " + std::string(fem::to_string(choice.mode_set)) +
-                        " mode set needs a boom pinned at its heel (boom.heel = \"pinned\", its chord frame turning about the "
-                        "pin); a clamped boom takes the clamped-free set, a free-free set is not offered");
-    }
+    // A clamped heel holds the frame at the root tangent, which the clamped-free and free-free sets
+    // (both taken in the tangent frame) describe.
+    scene_problem(scene, scene_key("boom.heel"), "\"clamped\"",
+                  "the pinned-pinned mode set needs a boom pinned at its heel (boom.heel = \"pinned\", its chord frame "
+                  "turning about the pin); a clamped boom takes the clamped-free or the free-free set");
   }
+  // The free-free set lives in the tangent frame: the clamped-free DOFs.
+  const bool chord = modal && choice.mode_set == fem::Boundary::pinned_pinned;
   auto beam = boom_beam(scene, choice.kind == BoomKind::rigid ? 1 : choice.elements,
-                        choice.kind == BoomKind::modal ? choice.mode_set : fem::Boundary::clamped_free);
+                        chord ? fem::Boundary::pinned_pinned : fem::Boundary::clamped_free);
   if (choice.kind == BoomKind::rigid) {
     modal::ModalBasis basis;
     basis.vectors = Eigen::MatrixXd(beam->dofs.free_count(), 0);
@@ -337,9 +339,12 @@ modal::ModalCoordinates modal_coordinates(const Scene& scene, const BoomChoice& 
   // One way to the vibration modes, cached or not, so a basis never depends on who built it.
   modal::ModeCache local;
   modal::ModeCache& modes_of_mesh = cache != nullptr ? *cache : local;
-  const modal::EigenPairs modes =
-      choice.modes > 0 ? modes_of_mesh.lowest_modes(beam->mesh, beam->boundary, choice.modes, choice.solver)
-                       : modal::EigenPairs{Eigen::VectorXd(0), Eigen::MatrixXd(beam->dofs.free_count(), 0), {}};
+  modal::EigenPairs modes{Eigen::VectorXd(0), Eigen::MatrixXd(beam->dofs.free_count(), 0), {}};
+  if (choice.modes > 0) {
+    modes = choice.mode_set == fem::Boundary::free_free
+                ? modal::free_free_modes_in_tangent_frame(*beam, choice.modes, choice.solver, modes_of_mesh)
+                : modes_of_mesh.lowest_modes(beam->mesh, beam->boundary, choice.modes, choice.solver);
+  }
   const std::vector<modal::UnitLoad> loads =
       choice.static_modes ? modal::tip_and_body_unit_loads(beam->mesh) : std::vector<modal::UnitLoad>{};
   modal::ModalBasis basis = modal::append_static_modes(beam->mesh, beam->dofs, beam->stiffness, beam->mass,

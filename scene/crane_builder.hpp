@@ -36,7 +36,8 @@ struct BoomChoice {
   modal::EigenSolverKind solver = modal::EigenSolverKind::arpack;
   std::optional<Stiffening> stiffening = std::nullopt;  // overrides the scene's boom.stiffening
   // The modal boom's mode set: the reference condition of its floating frame and of its modes —
-  // clamped-free (the frame clamped at the heel: the boom's root tangent) or, for a pinned heel,
+  // clamped-free (the frame clamped at the heel: the boom's root tangent), free-free (the unsupported
+  // boom's modes less their root's rigid motion, in the same tangent frame) or, for a pinned heel,
   // pinned-pinned (the chord frame: the tip on the frame's axis). docs/theory.md, "Mode sets".
   fem::Boundary mode_set = fem::Boundary::clamped_free;
   // How the stresses along the boom are recovered from the elastic coordinates (a modal boom's

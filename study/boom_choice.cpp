@@ -41,9 +41,9 @@ scene::BoomChoice boom_choice(const BoomRequest& request, scene::BoomChoice choi
   if (!request.stiffening.empty()) choice.stiffening = stiffening_setting(request.stiffening);
   if (!request.mode_set.empty()) {
     const auto set = fem::parse_boundary(request.mode_set);
-    if (!set || *set == fem::Boundary::free_free) {
+    if (!set) {
       throw SettingError(Setting::mode_set, request.mode_set,
-                         "unknown mode set; choose one of clamped-free, pinned-pinned (a free-free set is not offered)");
+                         fmt::format("unknown mode set; choose one of {}", fem::boundary_choices()));
     }
     if (choice.kind != scene::BoomKind::modal && *set != fem::Boundary::clamped_free) {
       throw SettingError(Setting::mode_set, request.mode_set, "a mode set belongs to a modal boom (--boom modal)");

@@ -17,12 +17,15 @@ std::vector<ComparedModel> compared_models(const scene::Scene& scene) {
       models.push_back({{BoomKind::modal, 16, k, static_modes}, k == 2});
     }
   }
-  // A pinned boom: the chord frame's pinned-pinned mode set beside the clamped-free one.
-  if (scene.boom.mount && scene.boom.mount->pinned) {
+  // The mode set as an axis: the free-free set in the same tangent frame, and for a pinned boom the
+  // chord frame's pinned-pinned set.
+  std::vector<fem::Boundary> sets{fem::Boundary::free_free};
+  if (scene.boom.mount && scene.boom.mount->pinned) sets.push_back(fem::Boundary::pinned_pinned);
+  for (const fem::Boundary set : sets) {
     for (const bool static_modes : {false, true}) {
       for (const int k : {1, 2, 4}) {
         scene::BoomChoice choice{BoomKind::modal, 16, k, static_modes};
-        choice.mode_set = fem::Boundary::pinned_pinned;
+        choice.mode_set = set;
         models.push_back({choice, false});
       }
     }

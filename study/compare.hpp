@@ -1,6 +1,7 @@
 // The comparison of boom models on one scene (`ffrf compare`): the converged reference first, then
 // the models of compared_models() (rigid, nodal N = 1 as in the paper, nodal N = 16, modal k = 1,
-// 2, 4 with and without static modes), each through the one pipeline from the scene's initial
+// 2, 4 with and without static modes, in the clamped-free and free-free mode sets and, for a pinned
+// boom, the pinned-pinned set too), each through the one pipeline from the scene's initial
 // state, each measured against the reference over the error window on the judged outputs
 // (study/error_measure.hpp): the total error per output split into its static and dynamic parts
 // (study/error_split.hpp), and the verdict against a tolerance (study/verdict.hpp). The reference's

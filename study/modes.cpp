@@ -10,6 +10,7 @@
 
 #include "fem/analytic_beam.hpp"
 #include "fem/assembly.hpp"
+#include "modal/mode_cache.hpp"
 #include "study/run_pipeline.hpp"
 
 namespace ffrf::study {
@@ -21,11 +22,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-double modes_shift(const fem::BeamMesh& mesh, fem::Boundary boundary) {
-  if (fem::rigid_mode_count(boundary) == 0) return 0.0;
-  const fem::BeamSection& s = mesh.section;
-  return -s.bending_rigidity() / (s.mass_per_length * std::pow(mesh.length, 4));
-}
+double modes_shift(const fem::BeamMesh& mesh, fem::Boundary boundary) { return modal::rigid_mode_shift(mesh, boundary); }
 
 double spin_hub_radius(const scene::Scene& scene) { return scene::centrifugal_hub_radius(scene); }
 
@@ -95,7 +92,7 @@ ModesResult solve_modes(const fem::BeamMesh& mesh, fem::Boundary boundary, modal
         rigid_expected, rigid_found, mesh.element_count));
   }
   return {mesh,          boundary, solver, std::move(matrices.dofs), request.sigma, std::move(pairs), std::move(modes),
-          assembly_seconds, solve_seconds, std::move(warnings)};
+          assembly_seconds, solve_seconds, std::move(warnings), std::nullopt};
 }
 
 std::vector<ConvergencePoint> frequency_convergence(const fem::BeamMesh& mesh, fem::Boundary boundary,

@@ -33,9 +33,7 @@ struct ModesResult {
   std::optional<SupportedBoomModes> supported;
 };
 
-// Shift for the shift-invert solvers: 0 when the boundary condition suppresses the rigid modes;
-// for free–free −EI/(ρA L⁴) (the ω² of "βL = 1"), which makes K − σM positive definite while the
-// rigid modes (ω² = 0) stay ~500 times nearer σ than the first elastic mode (βL = 4.73).
+// Shift for the shift-invert solvers (modal::rigid_mode_shift).
 double modes_shift(const fem::BeamMesh& mesh, fem::Boundary boundary);
 
 // Distance r [m] from the spin axis to the boom root on the beam axis, for `--spin` and

@@ -125,6 +125,9 @@ std::vector<Candidate> candidate_ladder(const scene::Scene& scene, const Recomme
     choice.mode_set = fem::Boundary::clamped_free;
   };
   add_static_mode_models(fem::Boundary::clamped_free, static_count);
+  // The free-free set in the same frame, with the same static modes and estimates (their span holds
+  // the same quasi-static response; only the verification run tells the sets apart).
+  add_static_mode_models(fem::Boundary::free_free, static_count);
   // A pinned boom: the chord frame's set too (docs/validation.md, "The pinned boom: which mode set?"),
   // with one static mode fewer (the frame carries the tip's transverse load), the same estimates.
   if (scene.boom.mount && scene.boom.mount->pinned) add_static_mode_models(fem::Boundary::pinned_pinned, static_count - 1);

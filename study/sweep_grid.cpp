@@ -98,11 +98,13 @@ std::vector<SweepConfig> sweep_grid(SweepGrid grid, bool radiation_axis, double 
   std::vector<BoomChoice> list = models(s);
   if (mode_set_axis) {
     const std::size_t plain = list.size();
-    for (std::size_t i = 0; i < plain; ++i) {
-      if (list[i].kind != BoomKind::modal) continue;
-      BoomChoice chord = list[i];
-      chord.mode_set = fem::Boundary::pinned_pinned;
-      list.push_back(chord);
+    for (const fem::Boundary set : {fem::Boundary::free_free, fem::Boundary::pinned_pinned}) {
+      for (std::size_t i = 0; i < plain; ++i) {
+        if (list[i].kind != BoomKind::modal) continue;
+        BoomChoice other = list[i];
+        other.mode_set = set;
+        list.push_back(other);
+      }
     }
   }
   for (const BoomChoice& choice : list) {

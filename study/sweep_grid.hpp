@@ -39,8 +39,8 @@ struct SweepConfig {
 // (constant, state-space, convolution: consecutive ids); without it the ids are those of the plain grid.
 // The adaptive integrators run at `choice_rtol` too (study::model_choice_rtol of the verdict's τ; the
 // grids' own tolerances include 1e-6, that of τ = 1 %), appended after the grid's own. With
-// `mode_set_axis` (a pinned boom) the modal models are repeated with the pinned-pinned mode set,
-// after all the others.
+// `mode_set_axis` (a pinned boom) the modal models are repeated with the free-free mode set, then
+// with the pinned-pinned one, after all the others.
 std::vector<SweepConfig> sweep_grid(SweepGrid grid, bool radiation_axis = false, double choice_rtol = 1e-6,
                                     bool mode_set_axis = false);
 // "constant", "state-space", "convolution"; empty when the configuration keeps the scene's model.

@@ -201,8 +201,9 @@ TEST(CliCompare, WritesReportWithTheModelsTheReferenceAndTheCharts) {
   const Json json = JsonParser(read_text(out / "summary.json")).parse();
   EXPECT_EQ(json["reference"]["model"].text, "nodal N=8");  // 3 s end within the wave ramp: one level only
   EXPECT_FALSE(json["reference"]["converged"].flag);
-  ASSERT_EQ(json["models"].items.size(), 9u);
+  ASSERT_EQ(json["models"].items.size(), 15u);  // rigid, nodal N=1 and 16, modal k=1,2,4 ± static in two mode sets
   EXPECT_EQ(json["models"][0]["model"].text, "rigid");
+  EXPECT_EQ(json["models"][14]["model"].text, "modal k=4+static free-free (N=16)");
   EXPECT_EQ(json["models"][1]["model"].text, "nodal N=1");
   EXPECT_EQ(json["models"][2]["elastic_dof"].number, 48);
   EXPECT_EQ(json["models"][4]["model"].text, "modal k=2 (N=16)");
@@ -213,7 +214,7 @@ TEST(CliCompare, WritesReportWithTheModelsTheReferenceAndTheCharts) {
   expect_mentions(report, {"## Verdict", "τ = 0.01", "speed-up (wall)", "speed-up (work)", "Static error", "Dynamic error",
                            "Static offset", "differences.csv"});
   EXPECT_EQ(json["verdict"]["tolerance"].number, 0.01);
-  EXPECT_EQ(json["verdict"]["passed"].number + static_cast<double>(json["verdict"]["failed"].items.size()), 9.0);
+  EXPECT_EQ(json["verdict"]["passed"].number + static_cast<double>(json["verdict"]["failed"].items.size()), 15.0);
   const Json& pitch = json["models"][0]["errors_to_reference"]["crane_pitch"];
   EXPECT_EQ(pitch["unit"].text, "deg") << "angles in degrees where a human reads them";
   EXPECT_GE(pitch["static_error"].number, 0.0);

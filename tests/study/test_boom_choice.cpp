@@ -93,12 +93,12 @@ TEST(BoomChoice, BadRequestsNameTheSettingValueAndChoices) {
   huge.elements = max_nodal_elements() + 1;
   EXPECT_EQ(refusal(huge, base).setting(), Setting::elements);
 
-  BoomRequest free_set;  // the free-free set needs mean-axis conditions the pinned frame does not have
-  free_set.kind = "modal";
-  free_set.mode_set = "free-free";
-  const SettingError free_free = refusal(free_set, base);
-  EXPECT_EQ(free_free.setting(), Setting::mode_set);
-  EXPECT_NE(free_free.problem().find("clamped-free, pinned-pinned"), std::string::npos) << free_free.what();
+  BoomRequest unknown_set;  // a set that is not a boundary condition, refused with the valid ones
+  unknown_set.kind = "modal";
+  unknown_set.mode_set = "hinged";
+  const SettingError unknown_mode_set = refusal(unknown_set, base);
+  EXPECT_EQ(unknown_mode_set.setting(), Setting::mode_set);
+  EXPECT_NE(unknown_mode_set.problem().find("clamped-free|free-free|pinned-pinned"), std::string::npos) << unknown_mode_set.what();
 
   BoomRequest nodal_set;  // a mode set belongs to a modal boom
   nodal_set.kind = "nodal";
@@ -141,6 +141,10 @@ TEST(BoomChoice, TheModeSetIsKeptAndNamedInTheLabel) {
   const scene::BoomChoice choice = boom_choice(request, default_boom_choice(scene));
   EXPECT_EQ(choice.mode_set, fem::Boundary::pinned_pinned);
   EXPECT_EQ(choice.label(), "modal k=2+static pinned-pinned (N=16)");
+  request.mode_set = "free-free";  // the tangent frame's second set, for any heel
+  const scene::BoomChoice free = boom_choice(request, default_boom_choice(test::scene_file("paper_floating_crane.toml")));
+  EXPECT_EQ(free.mode_set, fem::Boundary::free_free);
+  EXPECT_EQ(free.label(), "modal k=2+static free-free (N=16)");
 }
 
 }  // namespace boom_choice_test

@@ -41,16 +41,18 @@ TEST(SweepRadiation, TheGridIsCrossedWithTheThreeRadiationModelsOnlyWhenAsked) {
   }
 }
 
-// A pinned boom's sweep repeats every modal model with the chord frame's mode set, after the plain
-// grid's configurations, which keep their ids.
-TEST(SweepModeSets, ThePinnedPinnedSetIsAppendedAndThePlainIdsStay) {
+// A pinned boom's sweep repeats every modal model with the free-free and the chord frame's mode
+// sets, after the plain grid's configurations, which keep their ids.
+TEST(SweepModeSets, TheFreeFreeAndPinnedPinnedSetsAreAppendedAndThePlainIdsStay) {
   const std::vector<SweepConfig> plain = sweep_grid(SweepGrid::quick);
   const std::vector<SweepConfig> with_sets = sweep_grid(SweepGrid::quick, false, 1e-6, true);
-  std::size_t plain_modal = 0, chord = 0;
+  std::size_t plain_modal = 0, chord = 0, free = 0;
   for (const SweepConfig& c : plain) plain_modal += c.choice.kind == scene::BoomKind::modal ? 1 : 0;
   for (const SweepConfig& c : with_sets) chord += c.choice.mode_set == fem::Boundary::pinned_pinned ? 1 : 0;
+  for (const SweepConfig& c : with_sets) free += c.choice.mode_set == fem::Boundary::free_free ? 1 : 0;
   EXPECT_EQ(chord, plain_modal);
-  EXPECT_EQ(with_sets.size(), plain.size() + chord);
+  EXPECT_EQ(free, plain_modal);
+  EXPECT_EQ(with_sets.size(), plain.size() + chord + free);
   std::size_t same = 0;
   for (std::size_t i = 0; i < plain.size() && i < with_sets.size(); ++i) {
     same += plain[i].choice.label() == with_sets[i].choice.label() && plain[i].integrator == with_sets[i].integrator ? 1 : 0;
@@ -58,7 +60,7 @@ TEST(SweepModeSets, ThePinnedPinnedSetIsAppendedAndThePlainIdsStay) {
   // The quick grid's last plain configuration (the explicit run past its limit) follows the models.
   EXPECT_GE(same, plain.size() - 1);
   for (const SweepConfig& c : with_sets) {
-    if (c.choice.mode_set == fem::Boundary::pinned_pinned) {
+    if (c.choice.mode_set != fem::Boundary::clamped_free) {
       EXPECT_EQ(c.choice.kind, scene::BoomKind::modal) << c.choice.label();
     }
   }

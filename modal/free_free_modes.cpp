@@ -1,0 +1,51 @@
+// Free-free modes in the heel's tangent frame (see header).
+#include "modal/free_free_modes.hpp"
+
+#include <stdexcept>
+
+#include "fem/analytic_beam.hpp"
+#include "fem/boundary.hpp"
+#include "linalg/dense_solvers.hpp"
+
+namespace ffrf::modal {
+
+EigenPairs free_free_modes_in_tangent_frame(const fem::BeamModel& tangent_beam, int k, EigenSolverKind solver, ModeCache& cache) {
+  if (tangent_beam.boundary != fem::Boundary::clamped_free) {
+    throw std::invalid_argument("free-free modes are taken in the tangent frame: the beam's DOFs must be clamped-free");
+  }
+  const fem::BeamMesh& mesh = tangent_beam.mesh;
+  const fem::DofMap& tangent = tangent_beam.dofs;
+  const int rigid = fem::rigid_mode_count(fem::Boundary::free_free);
+  // The rigid modes have ω² = 0 and the first elastic one (βL = 4.73)² EI/(ρA L⁴): the lowest
+  // `rigid` eigenpairs are the rigid motions, the next k the elastic modes.
+  const EigenPairs all = cache.lowest_modes(mesh, fem::Boundary::free_free, k + rigid, solver);
+  const int nodes = mesh.node_count();
+  Eigen::MatrixXd shapes(tangent.free_count(), k);
+  for (int j = 0; j < k; ++j) {
+    const Eigen::VectorXd mode = all.eigenvectors.col(rigid + j);
+    const double u0 = mode(fem::full_dof(0, fem::NodeDof::axial));
+    const double v0 = mode(fem::full_dof(0, fem::NodeDof::transverse));
+    const double slope0 = mode(fem::full_dof(0, fem::NodeDof::rotation));
+    Eigen::VectorXd in_frame = mode;
+    for (int node = 0; node < nodes; ++node) {
+      in_frame(fem::full_dof(node, fem::NodeDof::axial)) -= u0;
+      in_frame(fem::full_dof(node, fem::NodeDof::transverse)) -= v0 + slope0 * mesh.node_position(node);
+      in_frame(fem::full_dof(node, fem::NodeDof::rotation)) -= slope0;
+    }
+    shapes.col(j) = fem::restrict_to_free(in_frame, tangent);
+  }
+  const Eigen::MatrixXd reduced_stiffness = shapes.transpose() * (tangent_beam.stiffness * shapes);
+  const Eigen::MatrixXd reduced_mass = shapes.transpose() * (tangent_beam.mass * shapes);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ritz(reduced_stiffness, reduced_mass);
+  if (ritz.info() != Eigen::Success) {
+    throw EigenSolverError("the free-free modes taken in the tangent frame are linearly dependent (Rayleigh–Ritz failed); "
+                           "use fewer modes or more elements");
+  }
+  EigenPairs pairs;
+  pairs.eigenvalues = ritz.eigenvalues();
+  pairs.eigenvectors = shapes * ritz.eigenvectors();  // Xᵀ (ΦᵀMΦ) X = I
+  pairs.stats = all.stats;
+  return pairs;
+}
+
+}  // namespace ffrf::modal
