@@ -36,6 +36,7 @@ std::string summary(const scene::Scene& scene) {
   if (scene.boom.mount->pinned && scene.luffing) {
     text += fmt::format(", heel pinned on {} luffing wire{} of {:g} N/m", scene.luffing->wires, scene.luffing->wires == 1 ? "" : "s",
                         scene.luffing->stiffness);
+    if (scene.luffing->parts > 1) text += fmt::format(" per part, {} parts of line", scene.luffing->parts);
   }
   if (scene.wave) {
     text += fmt::format(", wave {:g} m / {:g} s {}", scene.wave->height, scene.wave->period,

@@ -40,6 +40,7 @@ struct CraneOutputs {
   double wire_tension = 0.0;                             // the hoist wire's [N]
   double wire_length = 0.0;                              // [m]
   double luffing_tension = 0.0;                          // all luffing wires together [N] (a pinned boom's)
+  double luffing_line_pull = 0.0;                        // the largest luffing rope tension: a wire's pull / its parts of line [N]
   Eigen::Vector3d joint_reaction = Eigen::Vector3d::Zero();  // on the boom at B: Fx, Fy [N] (global), M [N m]
   double root_axial_force = 0.0;                         // boom axial force at B, tension > 0 [N]
   double constraint_residual = 0.0;                      // |C(q)| (0 in minimal coordinates) [m]

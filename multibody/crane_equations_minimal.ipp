@@ -365,7 +365,10 @@ CraneOutputs CraneEquationsOf<Coords, Pinned>::common_outputs() {
   out.strain_energy = m_.boom.strain_energy(boom_q_, boom_work_);
   for (std::size_t i = 0; i < m_.wires.size(); ++i) {
     out.wire_energy += wire_energy(m_.wires[i].rope, wires_[i].length);
-    if (static_cast<int>(i) != m_.hoist_wire) out.luffing_tension += wires_[i].tension;
+    if (static_cast<int>(i) != m_.hoist_wire) {
+      out.luffing_tension += wires_[i].tension;
+      out.luffing_line_pull = std::max(out.luffing_line_pull, wires_[i].tension / m_.wires[i].parts);
+    }
   }
   if (hull_free()) {
     const Eigen::Vector3d d = hull_q_ - m_.hull.support_pose;

@@ -5,6 +5,7 @@
 // matrices one evaluation fills, allocated once) and its run state (the radiation memory).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <type_traits>

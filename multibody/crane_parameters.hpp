@@ -98,11 +98,14 @@ struct BodyAttachment {
 };
 
 // A wire rope between two body points (multibody/wire_rope.hpp: tension only); its tension pulls the
-// two ends towards each other.
+// two ends towards each other. Reeved as a tackle of `parts` parts of line between two sheave blocks,
+// `rope` is the tackle's (the pull between the blocks: n times one part's stiffness and stretch
+// force), and each part of the rope carries the pull / n (the line pull).
 struct WireConnector {
   std::string name;  // "hoist wire": for events and messages
   WireModel rope;
   BodyAttachment from, to;
+  int parts = 1;  // parts of line (1: a single rope between the points)
 };
 
 template <fem::ElasticCoordinates Coords>

@@ -37,6 +37,8 @@ constexpr std::array channels{
                       [](const CraneOutputs& o) { return o.wire_tension; }},
     OutputChannelSpec{"luffing_tension", "luffing_tension_N", "luffing wires' tension", "N", "N", 1.0, false, 0, "",
                       [](const CraneOutputs& o) { return o.luffing_tension; }},
+    OutputChannelSpec{"luffing_line_pull", "luffing_line_pull_N", "luffing rope line pull", "N", "N", 1.0, false, 0, "",
+                      [](const CraneOutputs& o) { return o.luffing_line_pull; }},
     OutputChannelSpec{"joint_force_x", "joint_force_x_N", "joint force x at B", "N", "N", 1.0, false, 0, "",
                       [](const CraneOutputs& o) { return o.joint_reaction.x(); }},
     OutputChannelSpec{"joint_force_y", "joint_force_y_N", "joint force y at B", "N", "N", 1.0, false, 0, "",

@@ -214,15 +214,17 @@ void add_luffing_wires(const Scene& scene, multibody::CraneParameters<Coords>& m
   const double length = scene.boom.mesh.length;
   const double heel_inertia = scene.boom.mesh.total_mass() * length * length / 3.0;
   const double lever_squared = geometry.lever * geometry.lever;
-  const double rotational_stiffness = luffing.wires * luffing.stiffness * lever_squared;
+  const double tackle = tackle_stiffness(luffing);
+  const double rotational_stiffness = luffing.wires * tackle * lever_squared;
   const double damping = luffing.damping_ratio * 2.0 * std::sqrt(rotational_stiffness * heel_inertia) / (luffing.wires * lever_squared);
   multibody::BodyPoint a_frame;
   a_frame.undeformed = geometry.a_frame;
   for (int i = 0; i < luffing.wires; ++i) {
     model.wires.push_back({luffing.wires == 1 ? "luffing wire" : "luffing wire " + std::to_string(i + 1),
-                           {geometry.unstretched_length, luffing.stiffness, damping},
+                           {geometry.unstretched_length, tackle, damping},
                            {multibody::Body::boom, model.boom.point(geometry.attachment)},
-                           {multibody::Body::hull, a_frame}});
+                           {multibody::Body::hull, a_frame},
+                           luffing.parts});
   }
 }
 
@@ -303,7 +305,8 @@ multibody::CraneParameters<Coords> build_crane_parameters(const Scene& scene, Co
     model.wires.push_back({"hoist wire",
                            {wire.unstretched_length, wire.stiffness, wire.damping_ratio * critical_damping(cargo.mass, wire.stiffness)},
                            {multibody::Body::boom, std::move(tip)},
-                           {multibody::Body::cargo, std::move(hook)}});
+                           {multibody::Body::cargo, std::move(hook)},
+                           1});
   } else {
     model.cargo.present = false;
   }

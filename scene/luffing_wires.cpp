@@ -3,7 +3,9 @@
 // wire hanging vertically from the tip: the wires' tension T (all of them) on the lever
 // (P − B) × d, d the unit vector from the boom point P to the A-frame top, holds the boom's weight
 // at L/2 and the cargo's at L:
-//   T (P − B) × d = g (m_boom L/2 + m_cargo L) cos α,   each wire's stretch T / (n k), L0 = |F − P| − T / (n k).
+//   T (P − B) × d = g (m_boom L/2 + m_cargo L) cos α,   each wire's stretch T / (n k), L0 = |F − P| − T / (n k),
+// n wires, each a tackle of p parts of line of stiffness k₁ each: k = p k₁ (the blocks' separation
+// stretches all p parts; each carries 1/p of the pull).
 #include "scene/luffing_wires.hpp"
 
 #include <fmt/format.h>
@@ -13,6 +15,8 @@
 #include "scene/scene_key.hpp"
 
 namespace ffrf::scene {
+
+double tackle_stiffness(const Luffing& luffing) { return luffing.parts * luffing.stiffness; }
 
 LuffingGeometry luffing_geometry(const Scene& scene) {
   const Luffing& luffing = *scene.luffing;
@@ -33,7 +37,7 @@ LuffingGeometry luffing_geometry(const Scene& scene) {
   const double moment = scene.environment.gravity * (scene.boom.mesh.total_mass() * 0.5 * length + cargo_mass * length) *
                         std::cos(mount.angle);
   g.total_tension = g.lever > 0.0 ? moment / g.lever : 0.0;
-  g.unstretched_length = luffing.unstretched_length.value_or(g.length - g.total_tension / (luffing.wires * luffing.stiffness));
+  g.unstretched_length = luffing.unstretched_length.value_or(g.length - g.total_tension / (luffing.wires * tackle_stiffness(luffing)));
   return g;
 }
 
@@ -58,9 +62,9 @@ std::vector<SceneFinding> luffing_findings(const Scene& scene) {
     return found;
   }
   if (!luffing.unstretched_length && !(g.unstretched_length > 0.5 * g.length)) {
-    error({scene_key("luffing.stiffness"), scene_key("luffing.wires")},
+    error({scene_key("luffing.stiffness"), scene_key("luffing.wires"), scene_key("luffing.parts")},
           fmt::format("the luffing wires are too soft to hold the boom at boom.angle: {:.4g} N of tension would stretch "
-                      "them by {:.3g} m of their {:.3g} m (valid: less than half); stiffen them or add wires",
+                      "them by {:.3g} m of their {:.3g} m (valid: less than half); stiffen them, add wires or reeve more parts",
                       g.total_tension, g.length - g.unstretched_length, g.length));
   }
   return found;

@@ -23,6 +23,10 @@ struct LuffingGeometry {
   double unstretched_length = 0.0;  // each wire's (given or derived) [m]
 };
 
+// Each luffing wire's stiffness between the A-frame and the boom: its tackle's, luffing.parts parts
+// of line of luffing.stiffness each, p k₁ [N/m].
+double tackle_stiffness(const Luffing& luffing);
+
 // The geometry and rest tension of a pinned crane scene's luffing wires (scene.luffing set).
 LuffingGeometry luffing_geometry(const Scene& scene);
 

@@ -32,11 +32,12 @@ struct BoomMount {
 // The luffing wires of a pinned boom ([luffing]): from the A-frame top on the hull to a boom point.
 struct Luffing {
   double a_frame_x, a_frame_y;  // A-frame top relative to G1, hull frame [m]
-  double stiffness;             // each wire [N/m]
+  double stiffness;             // each wire's, of one part of line when reeved [N/m]
   int wires = 1;                // parallel wires
   std::optional<double> attachment;          // from the heel along the boom [m] (empty: the tip)
   std::optional<double> unstretched_length;  // each wire [m] (empty: holds the rigid boom at boom.angle)
   double damping_ratio = 0.0;
+  int parts = 1;  // parts of line in each wire's tackle: the tackle is `parts` times as stiff as one part
 };
 
 // Geometric (stress) stiffening of the boom (docs/theory.md, "Geometric stiffening").

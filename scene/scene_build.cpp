@@ -80,6 +80,7 @@ Scene build_scene(const WrittenKeys& keys, const std::string& file, const SceneP
         luffing.unstretched_length = keys.number(scene_key("luffing.unstretched_length"));
       }
       luffing.damping_ratio = keys.number(scene_key("luffing.damping_ratio"));
+      luffing.parts = static_cast<int>(keys.number(scene_key("luffing.parts")));
       scene.luffing = luffing;
     }
     scene.hull = Hull{keys.number(scene_key("hull.mass")),          keys.number(scene_key("hull.pitch_radius_of_gyration")),

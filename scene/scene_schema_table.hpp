@@ -205,12 +205,17 @@ inline constexpr std::array kKeys{
     required("luffing.a_frame_y", length, between(-1000.0, 1000.0),
              "y of the A-frame top relative to G1, hull frame; above the boom's heel."),
     required("luffing.stiffness", stiffness, between(1.0, 1e12),
-             "Axial stiffness of each luffing wire between the A-frame and the boom (its reeved tackle's EA/L)."),
+             "Axial stiffness of each luffing wire between the A-frame and the boom, EA/L; of one part of line when "
+             "luffing.parts > 1 (the tackle's is luffing.parts times it)."),
     integer("luffing.wires", between(1.0, 4.0), 1.0, "Number of parallel luffing wires, each of luffing.stiffness."),
+    integer("luffing.parts", between(1.0, 24.0), 1.0,
+            "Parts of line in each luffing wire's tackle (reeving between the A-frame's and the boom's sheave blocks): "
+            "the tackle is luffing.parts times as stiff as one part and each part carries 1/luffing.parts of its pull "
+            "(output luffing_line_pull_N)."),
     optional("luffing.attachment", length, between(0.0, 1000.0),
              "Distance along the boom from the heel B to the wires' boom point; at most boom.length. Default: the tip."),
     optional("luffing.unstretched_length", length, between(0.01, 5000.0),
-             "Unstretched length of each luffing wire. Default: the length that holds the rigid boom, and the cargo at "
+             "Unstretched block-to-block length of each luffing wire. Default: the length that holds the rigid boom, and the cargo at "
              "its tip, at boom.angle on the level hull."),
     defaulted("luffing.damping_ratio", ratio, kFraction, 0.0,
               "Axial damping of each wire as a fraction of critical for the boom's inertia about its heel on the "

@@ -189,6 +189,35 @@ TEST(PinnedBoom, ThePinnedPinnedModeSetNeedsAPinnedHeel) {
   }
 }
 
+// A tackle of p parts of line, each of stiffness k/p, is the single wire of stiffness k: the same
+// rest (the derived unstretched length included), the same frequencies, the same pull on the boom;
+// each part carries 1/p of it, and the two wires share the pull equally.
+TEST(PinnedBoom, AReevedTackleIsItsPartsOfLineInParallel) {
+  const scene::Scene single = scene::load_scene(FFRF_SOURCE_DIR "/cases/pinned_luffing_crane.toml");
+  ASSERT_EQ(single.luffing->parts, 1);
+  scene::Scene reeved = single;
+  reeved.luffing->parts = 4;
+  reeved.luffing->stiffness = single.luffing->stiffness / 4.0;
+  auto single_equations = scene::build_crane_equations(single, {scene::BoomKind::nodal, 4});
+  auto reeved_equations = scene::build_crane_equations(reeved, {scene::BoomKind::nodal, 4});
+  const multibody::StaticEquilibrium a = multibody::solve_static_equilibrium(*single_equations, single_equations->initial_guess());
+  const multibody::StaticEquilibrium b = multibody::solve_static_equilibrium(*reeved_equations, reeved_equations->initial_guess());
+  ASSERT_EQ(a.z.size(), b.z.size());
+  EXPECT_LT((a.z - b.z).norm(), 1e-9 * (1.0 + a.z.norm()));
+  EXPECT_NEAR(b.outputs.luffing_tension, a.outputs.luffing_tension, 1e-9 * a.outputs.luffing_tension);
+  const int wires = single.luffing->wires;
+  EXPECT_NEAR(a.outputs.luffing_line_pull, a.outputs.luffing_tension / wires, 1e-9 * a.outputs.luffing_tension);
+  EXPECT_NEAR(b.outputs.luffing_line_pull, a.outputs.luffing_tension / (4.0 * wires), 1e-9 * a.outputs.luffing_tension);
+  // About the rest: the stiffness and mass of the two cranes' linearisations (multibody/linearisation.hpp).
+  const multibody::LinearisedCrane la = multibody::linearise_crane(*single_equations, a.z);
+  const multibody::LinearisedCrane lb = multibody::linearise_crane(*reeved_equations, b.z);
+  EXPECT_LT((la.stiffness - lb.stiffness).norm(), 1e-7 * la.stiffness.norm());
+  EXPECT_LT((la.mass - lb.mass).norm(), 1e-9 * la.mass.norm());
+  EXPECT_LT((la.damping - lb.damping).norm(), 1e-7 * la.damping.norm());
+  std::printf("luffing pull %.6g N on %d wires; line pull %.6g N single, %.6g N in 4 parts\n", a.outputs.luffing_tension, wires,
+              a.outputs.luffing_line_pull, b.outputs.luffing_line_pull);
+}
+
 TEST(PinnedBoom, ADroppedLoadSlackensTheLuffingWiresAndTheRunNamesThem) {
   // The shipped pinned crane in calm water with its cargo lifted 3 m and released: the boom, loaded
   // at rest by the cargo, is suddenly unloaded and whips up off its luffing wires (their tension
