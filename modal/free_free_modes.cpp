@@ -16,7 +16,7 @@ EigenPairs free_free_modes_in_tangent_frame(const fem::BeamModel& tangent_beam, 
   const fem::BeamMesh& mesh = tangent_beam.mesh;
   const fem::DofMap& tangent = tangent_beam.dofs;
   const int rigid = fem::rigid_mode_count(fem::Boundary::free_free);
-  // The rigid modes have ω² = 0 and the first elastic one (βL = 4.73)² EI/(ρA L⁴): the lowest
+  // The rigid modes have ω² = 0 and the first elastic one (βL)⁴ EI/(ρA L⁴), βL = 4.73: the lowest
   // `rigid` eigenpairs are the rigid motions, the next k the elastic modes.
   const EigenPairs all = cache.lowest_modes(mesh, fem::Boundary::free_free, k + rigid, solver);
   const int nodes = mesh.node_count();
@@ -36,14 +36,17 @@ EigenPairs free_free_modes_in_tangent_frame(const fem::BeamModel& tangent_beam, 
   }
   const Eigen::MatrixXd reduced_stiffness = shapes.transpose() * (tangent_beam.stiffness * shapes);
   const Eigen::MatrixXd reduced_mass = shapes.transpose() * (tangent_beam.mass * shapes);
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ritz(reduced_stiffness, reduced_mass);
-  if (ritz.info() != Eigen::Success) {
-    throw EigenSolverError("the free-free modes taken in the tangent frame are linearly dependent (Rayleigh–Ritz failed); "
-                           "use fewer modes or more elements");
+  // The solver below factors the reduced mass by Cholesky without reporting a failure: check it here.
+  if (Eigen::LLT<Eigen::MatrixXd>(reduced_mass).info() != Eigen::Success) {
+    throw EigenSolverError("the free-free modes taken in the tangent frame are linearly dependent (their mass matrix is "
+                           "not positive definite); use fewer modes or more elements");
   }
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ritz(reduced_stiffness, reduced_mass);
   EigenPairs pairs;
   pairs.eigenvalues = ritz.eigenvalues();
   pairs.eigenvectors = shapes * ritz.eigenvectors();  // Xᵀ (ΦᵀMΦ) X = I
+  // The solvers' convention: M-normalized, ascending, the sign fixed by the largest entry.
+  normalize_and_sort(tangent_beam.mass, pairs.eigenvalues, pairs.eigenvectors);
   pairs.stats = all.stats;
   return pairs;
 }

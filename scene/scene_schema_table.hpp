@@ -207,7 +207,8 @@ inline constexpr std::array kKeys{
     required("luffing.stiffness", stiffness, between(1.0, 1e12),
              "Axial stiffness of each luffing wire between the A-frame and the boom, EA/L; of one part of line when "
              "luffing.parts > 1 (the tackle's is luffing.parts times it)."),
-    integer("luffing.wires", between(1.0, 4.0), 1.0, "Number of parallel luffing wires, each of luffing.stiffness."),
+    integer("luffing.wires", between(1.0, 4.0), 1.0,
+            "Number of parallel luffing wires, each of luffing.stiffness (times luffing.parts when reeved)."),
     integer("luffing.parts", between(1.0, 24.0), 1.0,
             "Parts of line in each luffing wire's tackle (reeving between the A-frame's and the boom's sheave blocks): "
             "the tackle is luffing.parts times as stiff as one part and each part carries 1/luffing.parts of its pull "

@@ -21,7 +21,7 @@ struct BoomRequest {
   std::optional<int> modes;          // k ∈ [1, elastic DOFs − 1] for a modal boom; unset: the base's
   std::optional<bool> static_modes;  // unset: the base's
   std::string stiffening;            // "none" | "static" | "centrifugal" | "both"; empty: the base's
-  std::string mode_set;              // "clamped-free" | "pinned-pinned" (modal); empty: the base's
+  std::string mode_set;              // "clamped-free" | "free-free" | "pinned-pinned" (modal); empty: the base's
   std::string stress_recovery;       // "displacement" | "acceleration" (modal); empty: the base's
 };
 

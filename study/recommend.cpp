@@ -186,7 +186,7 @@ void verify(const scene::Scene& scene, const Recommendation& rec, modal::ModeCac
 
 bool same_model(const Candidate& a, const Candidate& b, scene::Stiffening scene_stiffening) {
   return a.choice.kind == b.choice.kind && a.choice.elements == b.choice.elements && a.choice.modes == b.choice.modes &&
-         a.choice.static_modes == b.choice.static_modes &&
+         a.choice.static_modes == b.choice.static_modes && a.choice.mode_set == b.choice.mode_set &&
          a.choice.stiffening.value_or(scene_stiffening) == b.choice.stiffening.value_or(scene_stiffening);
 }
 

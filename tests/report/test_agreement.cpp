@@ -21,7 +21,7 @@ using namespace ffrf;
 
 bool same_model(const scene::BoomChoice& a, const scene::BoomChoice& b, scene::Stiffening modelled) {
   return a.kind == b.kind && (a.kind == scene::BoomKind::rigid || a.elements == b.elements) &&
-         (a.kind != scene::BoomKind::modal || (a.modes == b.modes && a.static_modes == b.static_modes)) &&
+         (a.kind != scene::BoomKind::modal || (a.modes == b.modes && a.static_modes == b.static_modes && a.mode_set == b.mode_set)) &&
          a.stiffening.value_or(modelled) == b.stiffening.value_or(modelled);
 }
 

@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "../multibody/pinned_boom_reference.hpp"
+#include "scene/luffing_wires.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/modes.hpp"
 #include "study/supported_boom.hpp"
@@ -33,7 +34,7 @@ test::PinnedBoom reference_boom(const scene::Scene& scene, double tension) {
   boom.EI = scene.boom.mesh.section.bending_rigidity();
   boom.EA = scene.boom.mesh.section.axial_rigidity();
   boom.mass_per_length = scene.boom.mesh.section.mass_per_length;
-  boom.wire_stiffness = scene.luffing->stiffness * scene.luffing->wires;
+  boom.wire_stiffness = scene::tackle_stiffness(*scene.luffing) * scene.luffing->wires;
   boom.wire_direction_local = frame.transpose() * to_a_frame.normalized();
   boom.wire_length = to_a_frame.norm();
   boom.wire_tension = tension;
