@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "held_boom.hpp"
 #include "multibody/crane_model.hpp"
 #include "multibody/crane_run.hpp"
 #include "multibody/crane_statics.hpp"
@@ -27,13 +28,8 @@ namespace {
 // wires of a pinned heel.
 template <class Parameters>
 std::unique_ptr<multibody::CraneEquations> isolated_boom(Parameters model) {
-  model.hull.fixed = true;
-  model.hull.hydrostatics = false;
-  model.hull.support_pose = Eigen::Vector3d(0.0, 0.0, -model.mount.angle);
-  model.cargo.present = false;
-  model.wires.erase(model.wires.begin() + model.hoist_wire);
-  model.hoist_wire = -1;
-  return multibody::make_crane_equations(std::move(model));
+  const Eigen::Vector3d pose = test::level_boom_pose(model);
+  return test::held_boom(std::move(model), pose);
 }
 
 std::unique_ptr<multibody::CraneEquations> isolated_boom(const scene::Scene& scene, const scene::BoomChoice& choice) {

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "fem/analytic_beam.hpp"
+#include "held_boom.hpp"
 #include "modal/modal_coordinates.hpp"
 #include "multibody/crane_model.hpp"
 #include "multibody/linearisation.hpp"
@@ -21,23 +22,12 @@ namespace {
 
 template <class Parameters>
 std::unique_ptr<multibody::CraneEquations> bare_cantilever(Parameters model) {
-  model.hull.fixed = true;
-  model.hull.hydrostatics = false;
-  model.hull.support_pose = Eigen::Vector3d::Zero();
   model.gravity = 0.0;
-  model.cargo.present = false;
-  model.wires.erase(model.wires.begin() + model.hoist_wire);
-  model.hoist_wire = -1;
-  return multibody::make_crane_equations(std::move(model));
+  return test::held_boom(std::move(model), Eigen::Vector3d::Zero());
 }
 
 Eigen::VectorXd lowest_frequencies(multibody::CraneEquations& equations, int count) {
-  const multibody::LinearisedCrane linear =
-      multibody::linearise_crane(equations, Eigen::VectorXd::Zero(equations.minimal_size()));
-  const Eigen::MatrixXd stiffness = 0.5 * (linear.stiffness + linear.stiffness.transpose());
-  const Eigen::MatrixXd mass = 0.5 * (linear.mass + linear.mass.transpose());
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(stiffness, mass);
-  return solver.eigenvalues().head(count).cwiseMax(0.0).cwiseSqrt();
+  return test::natural_frequencies(equations, Eigen::VectorXd::Zero(equations.minimal_size())).head(count);
 }
 
 TEST(ModeSets, TheFreeFreeSetOnAClampedBoomReachesTheNodalAndExactFrequencies) {

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "../multibody/pinned_boom_reference.hpp"
+#include "held_boom.hpp"
 #include "multibody/crane_model.hpp"
 #include "multibody/crane_run.hpp"
 #include "multibody/crane_statics.hpp"
@@ -37,15 +38,9 @@ struct HeldPinnedBoom {
 // cargo and its hoist wire, gravity g.
 template <class Parameters>
 std::unique_ptr<multibody::CraneEquations> held_equations(Parameters model, double gravity) {
-  const double angle = model.mount.angle;
-  model.hull.fixed = true;
-  model.hull.hydrostatics = false;
-  model.hull.support_pose = Eigen::Vector3d(0.0, 0.0, -angle);
   model.gravity = gravity;
-  model.cargo.present = false;
-  model.wires.erase(model.wires.begin() + model.hoist_wire);
-  model.hoist_wire = -1;
-  return multibody::make_crane_equations(std::move(model));
+  const Eigen::Vector3d pose = test::level_boom_pose(model);
+  return test::held_boom(std::move(model), pose);
 }
 
 // The shipped pinned crane's boom, pinned to a held hull turned by −boom.angle so that the boom lies
@@ -89,12 +84,7 @@ HeldPinnedBoom held_pinned_boom(int elements, const Eigen::Vector2d& direction, 
 
 // The crane's natural frequencies about rest: K φ = ω² M φ of its linearisation.
 Eigen::VectorXd crane_frequencies(multibody::CraneEquations& equations) {
-  const multibody::LinearisedCrane linear =
-      multibody::linearise_crane(equations, Eigen::VectorXd::Zero(equations.minimal_size()));
-  const Eigen::MatrixXd stiffness = 0.5 * (linear.stiffness + linear.stiffness.transpose());
-  const Eigen::MatrixXd mass = 0.5 * (linear.mass + linear.mass.transpose());
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(stiffness, mass);
-  return solver.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+  return test::natural_frequencies(equations, Eigen::VectorXd::Zero(equations.minimal_size()));
 }
 
 TEST(PinnedBoom, FrequenciesOnAnObliqueWireMatchAnIndependentFrameModel) {
