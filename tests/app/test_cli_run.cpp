@@ -237,6 +237,30 @@ TEST(CliRun, AHubSceneWithoutCargoHullOrWireGetsOnlyTheBoomCharts) {
   }
 }
 
+// The mode set on the command line: the free-free set runs on the paper's clamped crane to a complete
+// output named by its label; the chord frame's set is refused there, naming the key that decides it,
+// and nothing is written.
+TEST(CliRun, TheModeSetIsAnOptionOfTheModalBoom) {
+  TempDir dir;
+  const fs::path out = dir / "free";
+  const RunResult r = run_ffrf("run " + kScene + " --boom modal --modes 2 --mode-set free-free --duration 2 --out '" +
+                                   out.string() + "'",
+                               dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(split(read_text(out / "timeseries.csv"), '\n').at(0), kHeader);
+  const Json json = JsonParser(read_text(out / "summary.json")).parse();
+  EXPECT_EQ(json["model"].text, "modal k=2+static free-free (N=16)");
+  EXPECT_TRUE(is_png(out / "cargo_heave.png"));
+
+  const fs::path refused = dir / "chord";
+  const RunResult chord = run_ffrf("run " + kScene + " --boom modal --mode-set pinned-pinned --duration 2 --out '" +
+                                       refused.string() + "'",
+                                   dir.path());
+  EXPECT_EQ(chord.exit_code, 2);
+  expect_mentions(chord.err, {"boom.heel", "\"clamped\"", "pinned-pinned", "free-free"});
+  EXPECT_FALSE(fs::exists(refused));
+}
+
 TEST(CliCompare, ToleranceOutOfRangeIsBadInputBeforeAnythingRuns) {
   TempDir dir;
   for (const std::string command : {"compare", "sweep"}) {
