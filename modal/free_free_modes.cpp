@@ -5,6 +5,7 @@
 
 #include "fem/analytic_beam.hpp"
 #include "fem/boundary.hpp"
+#include "fem/rigid_motion.hpp"
 #include "linalg/dense_solvers.hpp"
 
 namespace ffrf::modal {
@@ -19,19 +20,16 @@ EigenPairs free_free_modes_in_tangent_frame(const fem::BeamModel& tangent_beam, 
   // The rigid modes have ω² = 0 and the first elastic one (βL)⁴ EI/(ρA L⁴), βL = 4.73: the lowest
   // `rigid` eigenpairs are the rigid motions, the next k the elastic modes.
   const EigenPairs all = cache.lowest_modes(mesh, fem::Boundary::free_free, k + rigid, solver);
-  const int nodes = mesh.node_count();
+  const fem::DofMap all_dofs = fem::make_dof_map(mesh, fem::Boundary::free_free);
+  const Eigen::VectorXd along = fem::rigid_motion(mesh, all_dofs, fem::RigidMotion::axial_translation);
+  const Eigen::VectorXd across = fem::rigid_motion(mesh, all_dofs, fem::RigidMotion::transverse_translation);
+  const Eigen::VectorXd turn = fem::rigid_motion(mesh, all_dofs, fem::RigidMotion::turn_about_root);
   Eigen::MatrixXd shapes(tangent.free_count(), k);
   for (int j = 0; j < k; ++j) {
     const Eigen::VectorXd mode = all.eigenvectors.col(rigid + j);
-    const double u0 = mode(fem::full_dof(0, fem::NodeDof::axial));
-    const double v0 = mode(fem::full_dof(0, fem::NodeDof::transverse));
-    const double slope0 = mode(fem::full_dof(0, fem::NodeDof::rotation));
-    Eigen::VectorXd in_frame = mode;
-    for (int node = 0; node < nodes; ++node) {
-      in_frame(fem::full_dof(node, fem::NodeDof::axial)) -= u0;
-      in_frame(fem::full_dof(node, fem::NodeDof::transverse)) -= v0 + slope0 * mesh.node_position(node);
-      in_frame(fem::full_dof(node, fem::NodeDof::rotation)) -= slope0;
-    }
+    const Eigen::VectorXd in_frame = mode - mode(fem::full_dof(0, fem::NodeDof::axial)) * along -
+                                     mode(fem::full_dof(0, fem::NodeDof::transverse)) * across -
+                                     mode(fem::full_dof(0, fem::NodeDof::rotation)) * turn;
     shapes.col(j) = fem::restrict_to_free(in_frame, tangent);
   }
   const Eigen::MatrixXd reduced_stiffness = shapes.transpose() * (tangent_beam.stiffness * shapes);

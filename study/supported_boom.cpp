@@ -1,12 +1,12 @@
 // The pinned boom's natural modes as the crane supports it (see the header).
 #include "study/supported_boom.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
-#include "fem/element_space.hpp"
+#include "fem/rigid_motion.hpp"
+#include "linalg/dense_solvers.hpp"
 #include "multibody/crane_equations.hpp"
 #include "multibody/crane_model.hpp"
 #include "multibody/crane_statics.hpp"
@@ -46,11 +46,12 @@ std::optional<SupportedBoomModes> supported_boom_modes(const scene::Scene& scene
 
   const Eigen::MatrixXd stiffness = 0.5 * (linear.stiffness + linear.stiffness.transpose());
   const Eigen::MatrixXd mass = 0.5 * (linear.mass + linear.mass.transpose());
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(stiffness, mass);
-  if (solver.info() != Eigen::Success) {
-    throw std::runtime_error("supported boom modes: the linearised mass matrix is not positive definite (the eigenvalue solver "
-                             "failed); check the boom's section and mass per length");
+  // The generalized solver factors the mass by Cholesky without reporting a failure: check it first.
+  if (Eigen::LLT<Eigen::MatrixXd>(mass).info() != Eigen::Success) {
+    throw std::runtime_error("supported boom modes: the linearised mass matrix is not positive definite; check the "
+                             "boom's section and mass per length");
   }
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(stiffness, mass);
   SupportedBoomModes out;
   out.elements = elements;
   out.luffing_tension = statics.outputs.luffing_tension;
@@ -62,13 +63,8 @@ std::optional<SupportedBoomModes> supported_boom_modes(const scene::Scene& scene
   // them (node at x: u = 0, v = x, φ = 1) and a mask of the axial ones (u).
   const int free = beam->dofs.free_count();
   const Eigen::MatrixXd beam_mass(coordinates.mass_ff());
-  Eigen::VectorXd rotation(free), axial_part(free);
-  for (int i = 0; i < free; ++i) {
-    const int full = beam->dofs.free_to_full[static_cast<std::size_t>(i)];
-    const int node = full / fem::node_dofs, dof = full % fem::node_dofs;
-    rotation(i) = dof == 0 ? 0.0 : dof == 1 ? beam->mesh.node_position(node) : 1.0;
-    axial_part(i) = dof == 0 ? 1.0 : 0.0;
-  }
+  const Eigen::VectorXd rotation = fem::rigid_motion(beam->mesh, beam->dofs, fem::RigidMotion::turn_about_root);
+  const Eigen::VectorXd axial_part = fem::rigid_motion(beam->mesh, beam->dofs, fem::RigidMotion::axial_translation);
   const Eigen::MatrixXd beam_stiffness(coordinates.stiffness());
   int order = 0;
   for (int j = 0; j < std::min(count, linear.size()); ++j) {
