@@ -27,9 +27,10 @@ EigenPairs free_free_modes_in_tangent_frame(const fem::BeamModel& tangent_beam, 
   Eigen::MatrixXd shapes(tangent.free_count(), k);
   for (int j = 0; j < k; ++j) {
     const Eigen::VectorXd mode = all.eigenvectors.col(rigid + j);
-    const Eigen::VectorXd in_frame = mode - mode(fem::full_dof(0, fem::NodeDof::axial)) * along -
-                                     mode(fem::full_dof(0, fem::NodeDof::transverse)) * across -
-                                     mode(fem::full_dof(0, fem::NodeDof::rotation)) * turn;
+    const Eigen::VectorXd root_motion = mode(fem::full_dof(0, fem::NodeDof::axial)) * along +
+                                        mode(fem::full_dof(0, fem::NodeDof::transverse)) * across +
+                                        mode(fem::full_dof(0, fem::NodeDof::rotation)) * turn;
+    const Eigen::VectorXd in_frame = mode - root_motion;
     shapes.col(j) = fem::restrict_to_free(in_frame, tangent);
   }
   const Eigen::MatrixXd reduced_stiffness = shapes.transpose() * (tangent_beam.stiffness * shapes);
