@@ -37,6 +37,10 @@ std::string summary(const scene::Scene& scene) {
     text += fmt::format(", heel pinned on {} luffing wire{} of {:g} N/m", scene.luffing->wires, scene.luffing->wires == 1 ? "" : "s",
                         scene.luffing->stiffness);
     if (scene.luffing->parts > 1) text += fmt::format(" per part, {} parts of line", scene.luffing->parts);
+    if (scene.a_frame && scene.backstay) {
+      text += fmt::format(", A-frame {:g} t on its deck pin with {} backstay{} of {:g} N/m", scene.a_frame->mass / 1e3,
+                          scene.backstay->wires, scene.backstay->wires == 1 ? "" : "s", scene.backstay->stiffness);
+    }
   }
   if (scene.wave) {
     text += fmt::format(", wave {:g} m / {:g} s {}", scene.wave->height, scene.wave->period,

@@ -22,6 +22,7 @@ struct Planar {
   using Rotation = Eigen::Matrix2d;         // A(θ)
   using Pose = Eigen::Vector3d;             // (x, y, θ)
   using SecondMoment = double;              // ∫ρ ūᵀū: a polar moment about the one rotation axis
+  using RotaryInertia = double;             // a rigid body's about its centre of mass and the plane's normal
 
   static Rotation rotation(double theta) {
     const double c = std::cos(theta), s = std::sin(theta);
@@ -45,6 +46,7 @@ concept Space = requires {
   typename S::Rotation;
   typename S::Pose;
   typename S::SecondMoment;
+  typename S::RotaryInertia;
 } && S::body_dofs == S::dimension + S::rotation_dofs;
 
 static_assert(Space<Planar>);

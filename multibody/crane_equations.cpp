@@ -5,29 +5,19 @@
 #include <string>
 
 namespace ffrf::multibody {
-namespace {
-
-// The rows of the minimal coordinates: hull (surge, heave, pitch) when it floats, cargo (x, y, θ),
-// the pinned heel's moment, then the boom's elastic coordinates.
-struct RowLayout {
-  int hull = -1, cargo = -1, heel = -1, elastic = 0;
-  explicit RowLayout(const CraneEquations& equations)
-      : cargo(equations.cargo_offset()), heel(equations.heel_offset()), elastic(equations.minimal_size() - equations.elastic_size()) {
-    if (elastic - (cargo >= 0 ? 3 : 0) - (heel >= 0 ? 1 : 0) == 3) hull = 0;
-  }
-  bool is_moment(int row) const {
-    return (hull >= 0 && row == hull + 2) || (cargo >= 0 && row == cargo + 2) || (heel >= 0 && row == heel);
-  }
-  bool is_rigid(int row) const { return row < elastic; }
-};
-
-}  // namespace
 
 solve::ResidualRow CraneEquations::residual_row(int row) const {
-  const RowLayout rows(*this);
+  const CraneLayout& rows = layout();
+  int free_body = -1, pinned_body = -1;  // the rigid body whose rows these are
+  for (std::size_t i = 0; i < rows.bodies.size(); ++i) {
+    const BodyBlock& block = rows.bodies[i];
+    if (!block.pinned && row >= block.minimal && row < block.minimal + 3) free_body = static_cast<int>(i);
+    if (block.pinned && row == block.minimal) pinned_body = static_cast<int>(i);
+  }
   solve::ResidualRow meaning;
-  meaning.moment = rows.is_moment(row);
-  meaning.rigid = rows.is_rigid(row);
+  meaning.moment = (rows.hull >= 0 && row == rows.hull + 2) || (free_body >= 0 && row == rows.bodies[free_body].minimal + 2) ||
+                   pinned_body >= 0 || (rows.heel >= 0 && row == rows.heel);
+  meaning.rigid = row < rows.elastic;
   if (rows.hull >= 0 && row == rows.hull) {
     meaning.what = "the hull's surge force";
     meaning.check = "check the mooring's surge stiffness (mooring.surge_stiffness > 0 holds the hull)";
@@ -41,13 +31,22 @@ solve::ResidualRow CraneEquations::residual_row(int row) const {
     meaning.check =
         "the hull cannot trim to balance the load moment before a deck edge or the keel leaves its waterline: "
         "lighten the load, shorten the outreach or move G1 (hull.g1_aft_of_mid_length)";
-  } else if (rows.cargo >= 0 && row >= rows.cargo && row < rows.cargo + 3) {
+  } else if (free_body >= 0 && free_body == cargo_body()) {
     static const char* const names[] = {"the cargo's horizontal force", "the cargo's vertical force (wire tension against weight)",
                                         "the cargo's pitch moment about its hook"};
-    meaning.what = names[row - rows.cargo];
+    meaning.what = names[row - rows.bodies[free_body].minimal];
     meaning.check =
         "the cargo cannot hang still below the boom tip: check the wire (wire.stiffness, wire.unstretched_length) "
         "and the hook (cargo.hook_x, cargo.hook_y)";
+  } else if (free_body >= 0) {
+    static const char* const names[] = {"horizontal force", "vertical force", "pitch moment about its centre of mass"};
+    meaning.what = "the " + body_name(free_body) + "'s " + names[row - rows.bodies[free_body].minimal];
+    meaning.check = "the " + body_name(free_body) + " cannot hang still on its wires: check their lengths and stiffnesses";
+  } else if (pinned_body >= 0) {
+    meaning.what = "the " + body_name(pinned_body) + "'s moment about its pin";
+    meaning.check = "the " + body_name(pinned_body) +
+                    " cannot stand on its pin: check that the wires that hold it are taut at rest (the backstays' "
+                    "unstretched length against the A-frame's geometry) and stiff enough";
   } else if (rows.heel >= 0 && row == rows.heel) {
     meaning.what = "the boom's moment about its pinned heel";
     meaning.check =
@@ -67,10 +66,11 @@ std::string CraneEquations::static_model_check() const {
 }
 
 std::vector<int> CraneEquations::rigid_body_blocks() const {
-  const RowLayout rows(*this);
+  const CraneLayout& rows = layout();
   std::vector<int> blocks;
-  for (const int body : {rows.hull, rows.cargo}) {
-    if (body >= 0) blocks.push_back(body);
+  if (rows.hull >= 0) blocks.push_back(rows.hull);
+  for (const BodyBlock& block : rows.bodies) {
+    if (!block.pinned) blocks.push_back(block.minimal);
   }
   return blocks;
 }

@@ -1,14 +1,16 @@
 // The crane's equations as the solvers see them (solve/second_order_system.hpp), and what the crane
 // adds for its own recorders, detectors and studies: the outputs of a state, the wires' stretches,
 // the layout of its coordinates (multibody/crane_layout.hpp) and the hull loads' counters.
-//  * Minimal coordinates z = (hull x, y, θ | cargo x, y, θ | heel β | η): the boom frame is
-//    eliminated by the heel joint at B (a clamp leaves no coordinate, a pin the luffing angle β).
-//    Without hull DOFs when the hull is held fixed.
-//  * Full coordinates q = (hull | cargo | boom R_B, θ_B, η) with the heel as 3 (clamp) or 2 (pin)
-//    constraints C(q, t) = 0 and Lagrange multipliers: M(q) q̈ = Q(q, q̇, t) − C_qᵀ λ (paper eqs. 17,
-//    22, 31–34).
+//  * Minimal coordinates z = (hull x, y, θ | free bodies' x, y, θ | pinned bodies' γ | heel β | η)
+//    (multibody/crane_layout.hpp): the boom frame is eliminated by the heel joint at B (a clamp leaves
+//    no coordinate, a pin the luffing angle β), a body pinned to the hull by its pin (its angle γ
+//    relative to the hull). Without hull DOFs when the hull is held fixed.
+//  * Full coordinates q = (hull | every rigid body | boom R_B, θ_B, η) with the heel as 3 (clamp) or 2
+//    (pin) constraints and each pinned body's pin as 2, C(q, t) = 0, and Lagrange multipliers:
+//    M(q) q̈ = Q(q, q̇, t) − C_qᵀ λ (paper eqs. 17, 22, 31–34).
 //    With a driven base (prescribed motion) C depends on t: C_q v + C_t = 0 at velocity level.
-// The hull block is absent when the base is held or driven, the cargo block when there is no cargo.
+// The hull block is absent when the base is held or driven; the rigid bodies (the cargo, an A-frame)
+// are the model's list, each with its block.
 // The event functions are the wires' stretches ℓ − L0 (slack below zero), one per wire.
 #pragma once
 
@@ -17,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "multibody/crane_layout.hpp"
+#include "multibody/wire_role.hpp"
 #include "solve/second_order_system.hpp"
 
 namespace ffrf::sea {
@@ -41,6 +45,8 @@ struct CraneOutputs {
   double wire_length = 0.0;                              // [m]
   double luffing_tension = 0.0;                          // all luffing wires together [N] (a pinned boom's)
   double luffing_line_pull = 0.0;                        // the largest luffing rope tension: a wire's pull / its parts of line [N]
+  double backstay_tension = 0.0;                         // all backstays together [N] (an A-frame pinned to the deck)
+  double a_frame_rotation = 0.0;                         // the A-frame's angle γ about its pin relative to the hull [rad]
   Eigen::Vector3d joint_reaction = Eigen::Vector3d::Zero();  // on the boom at B: Fx, Fy [N] (global), M [N m]
   double root_axial_force = 0.0;                         // boom axial force at B, tension > 0 [N]
   double constraint_residual = 0.0;                      // |C(q)| (0 in minimal coordinates) [m]
@@ -89,6 +95,7 @@ class CraneEquations : public solve::SecondOrderSystem {
   virtual int wire_count() const = 0;
   virtual int hoist_wire() const = 0;
   virtual std::string wire_name(int wire) const = 0;
+  virtual WireRole wire_role(int wire) const = 0;
   virtual void wire_stretches_minimal(double t, ConstRef z, Ref stretch) = 0;
   virtual void wire_stretches_full(double t, ConstRef q, Ref stretch) = 0;
   // The event functions: every wire's stretch, event i the wire i.
@@ -96,10 +103,16 @@ class CraneEquations : public solve::SecondOrderSystem {
   void minimal_events(double t, ConstRef z, Ref g) override { wire_stretches_minimal(t, z, g); }
   void full_events(double t, ConstRef q, Ref g) override { wire_stretches_full(t, q, g); }
 
-  // Index of the cargo's (x, y, θ) in the minimal coordinates; −1 without a cargo.
-  virtual int cargo_offset() const = 0;
+  // Where each body's and joint's coordinates sit (multibody/crane_layout.hpp), and the rigid bodies'
+  // names in its order ("cargo", "A-frame").
+  virtual const CraneLayout& layout() const = 0;
+  virtual std::string body_name(int body) const = 0;
+  // The cargo's place among the rigid bodies (−1: none), and the index of its (x, y, θ) in the minimal
+  // coordinates (−1 without a cargo).
+  virtual int cargo_body() const = 0;
+  int cargo_offset() const { return cargo_body() < 0 ? -1 : layout().bodies[cargo_body()].minimal; }
   // Index of the pinned heel's luffing angle β in the minimal coordinates; −1 for a clamped boom.
-  virtual int heel_offset() const { return -1; }
+  int heel_offset() const { return layout().heel; }
   // Elastic coordinate count (0 for the rigid boom).
   virtual int elastic_size() const = 0;
   // The stresses along the boom at the last output sample, by the model's recovery (nullptr when the
@@ -111,8 +124,9 @@ class CraneEquations : public solve::SecondOrderSystem {
   virtual const sea::IncidentWaveRecord* wave_record() const { return nullptr; }
   virtual std::string exact_kinematics_reason() const { return {}; }
 
-  // The static solver's view of the rows: hull (surge, heave, pitch) when it floats, cargo (x, y, θ),
-  // then the boom's elastic coordinates, each with what to check when it stays out of balance.
+  // The static solver's view of the rows: hull (surge, heave, pitch) when it floats, each free body's
+  // (x, y, θ), each pinned body's moment about its pin, the pinned heel's moment, then the boom's
+  // elastic coordinates, each with what to check when it stays out of balance.
   solve::ResidualRow residual_row(int row) const override;
   std::string static_model_check() const override;
   std::vector<int> rigid_body_blocks() const override;

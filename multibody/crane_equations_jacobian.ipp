@@ -7,7 +7,7 @@
 //  * the wires' share of the columns whose coordinates move a wire's attachment on the boom (the
 //    nonzero columns of its shape rows: the tip node's DOFs of a nodal boom, every modal coordinate)
 //    by forward differences of the wires' loads alone;
-//  * the dense columns (hull, cargo, the heel's angle and, in full coordinates, the boom frame) by
+//  * the dense columns (hull, rigid bodies, the heel's angle and, in full coordinates, the boom frame) by
 //    forward differences of the whole residual: 12 (minimal) or 18 (full) evaluations for the
 //    clamped crane whatever the element count.
 // Increments: δ = f·s_j for positions and f·max(|ẋ_j|, s_j) for velocities, s_j the coordinate's
@@ -19,60 +19,71 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 
 namespace ffrf::multibody::detail {
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::minimal_residual(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, Ref out) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::minimal_residual(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, Ref out) {
   minimal_forces(t, z, z_dot, true);
   const auto eta_ddot = z_ddot.tail(n_);
   out.tail(n_) = elastic_rhs_;
   out.tail(n_).noalias() -= m_.boom.coords().mass_ff() * eta_ddot;
   if (layout_.rigid_size() > 0) {
-    const FrameJacobian& jr = frame_jacobian_;
-    const RigidMatrix rigid_mass = rigid_inertia() + jr.transpose() * boom_reference_mass_ * jr;
+    const RigidMatrix mass = rigid_mass();
     const RigidVector rigid_a = rigid_part(z_ddot);
-    RigidVector rigid = rigid_rhs_ - rigid_mass * rigid_a;
+    RigidVector rigid = rigid_rhs_ - mass * rigid_a;
     rigid.noalias() -= rigid_elastic_mass_ * eta_ddot;
     scatter_rigid(rigid, out);
     out.tail(n_).noalias() -= rigid_elastic_mass_.transpose() * rigid_a;
   }
-  if (has_cargo()) out.segment<3>(layout_.cargo) = cargo_force_ - cargo_inertia().cwiseProduct(z_ddot.segment<3>(layout_.cargo));
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const BodyBlock& block = layout_.bodies[i];
+    if (block.pinned) continue;
+    out.segment<3>(block.minimal) = body_forces_[i] - body_inertia(static_cast<int>(i)).cwiseProduct(z_ddot.segment<3>(block.minimal));
+  }
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::minimal_wire_residual(double t, ConstRef z, ConstRef z_dot, Ref out) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::minimal_wire_residual(double t, ConstRef z, ConstRef z_dot, Ref out) {
   out.setZero();
   if (m_.wires.empty()) return;
   set_minimal_state(t, z, z_dot);
   wire_boom_force_.setZero();
-  Eigen::Vector3d hull = Eigen::Vector3d::Zero(), cargo = Eigen::Vector3d::Zero();
-  add_wire_loads(false, wire_boom_force_, hull, cargo);
+  Eigen::Vector3d hull = Eigen::Vector3d::Zero();
+  for (Eigen::Vector3d& force : wire_body_forces_) force.setZero();
+  add_wire_loads(false, wire_boom_force_, hull, wire_body_forces_);
   if (layout_.rigid_size() > 0) {
     RigidVector rigid = frame_jacobian().transpose() * wire_boom_force_.head<3>();
     if (hull_free() && !hull.isZero(0.0)) rigid.template head<3>() += hull;  // (a wire to the hull)
+    if constexpr (Articulated) {
+      if (has_pinned_bodies()) add_pinned_bodies(t, wire_body_forces_, rigid, false);  // (a wire to a pinned body)
+    }
     scatter_rigid(rigid, out);
   }
-  if (has_cargo()) out.segment<3>(layout_.cargo) = cargo;
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (!layout_.bodies[i].pinned) out.segment<3>(layout_.bodies[i].minimal) = wire_body_forces_[i];
+  }
   out.tail(n_) = wire_boom_force_.tail(n_);
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::full_residual(double t, ConstRef q, ConstRef v, ConstRef v_dot, Ref out) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::full_residual(double t, ConstRef q, ConstRef v, ConstRef v_dot, Ref out) {
   full_forces(t, q, v, out);
   full_mass_times(q, v_dot, full_inertia_);
   out -= full_inertia_;
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::full_wire_residual(double t, ConstRef q, ConstRef v, Ref out) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::full_wire_residual(double t, ConstRef q, ConstRef v, Ref out) {
   out.setZero();
   if (m_.wires.empty()) return;
   set_full_state(t, q, v);
-  Eigen::Vector3d hull = Eigen::Vector3d::Zero(), cargo = Eigen::Vector3d::Zero();
-  add_wire_loads(false, out.tail(3 + n_), hull, cargo);
+  Eigen::Vector3d hull = Eigen::Vector3d::Zero();
+  for (Eigen::Vector3d& force : wire_body_forces_) force.setZero();
+  add_wire_loads(false, out.tail(3 + n_), hull, wire_body_forces_);
   if (hull_free()) out.segment<3>(layout_.hull) = hull;
-  if (has_cargo()) out.segment<3>(layout_.cargo) = cargo;
+  for (std::size_t i = 0; i < bodies_.size(); ++i) out.segment<3>(layout_.bodies[i].full) = wire_body_forces_[i];
 }
 
 // The shared steps of both Jacobians: difference the wires' share over their columns (added) and
@@ -131,26 +142,27 @@ void difference_columns(int size, int dense_columns, int elastic_offset, const s
   }
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::minimal_jacobian(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, SecondOrderJacobian& out) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::minimal_jacobian(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot, SecondOrderJacobian& out) {
   const int size = minimal_size(), e = layout_.elastic, r = layout_.rigid_size();
   out.set_zero();
   minimal_forces(t, z, z_dot, true);  // mounts the boom, its mass blocks, J and Jᵀ M_Rf
-  // The rigid rows' and columns' places in z: the hull's, then the heel's.
-  int rigid_index[4] = {0, 0, 0, 0};
-  for (int i = 0; i < r; ++i) rigid_index[i] = (hull_free() && i < 3) ? layout_.hull + i : layout_.heel;
+  // The rigid rows' and columns' places in z: the hull's, the pinned bodies', then the heel's.
+  const std::array<int, max_rigid_block>& rigid_index = layout_.rigid_coordinates;
   Eigen::Vector3d frame_a = frame_known_acc_;
   if (r > 0) {
     const FrameJacobian& jr = frame_jacobian_;
-    const RigidMatrix rigid_mass = rigid_inertia() + jr.transpose() * boom_reference_mass_ * jr;
+    const RigidMatrix mass = rigid_mass();
     for (int i = 0; i < r; ++i) {
-      for (int j = 0; j < r; ++j) out.mass.at(rigid_index[i], rigid_index[j]) = rigid_mass(i, j);
+      for (int j = 0; j < r; ++j) out.mass.at(rigid_index[i], rigid_index[j]) = mass(i, j);
       for (int j = 0; j < n_; ++j) out.mass.at(rigid_index[i], e + j) = out.mass.at(e + j, rigid_index[i]) = rigid_elastic_mass_(i, j);
     }
     frame_a += jr * rigid_part(z_ddot);
   }
-  if (has_cargo()) {
-    for (int i = 0; i < 3; ++i) out.mass.at(layout_.cargo + i, layout_.cargo + i) = cargo_inertia()(i);
+  for (std::size_t k = 0; k < bodies_.size(); ++k) {
+    const BodyBlock& block = layout_.bodies[k];
+    if (block.pinned) continue;
+    for (int i = 0; i < 3; ++i) out.mass.at(block.minimal + i, block.minimal + i) = body_inertia(static_cast<int>(k))(i);
   }
   if (n_ > 0) {
     FloatingFrameBody<Coords>::add_scaled(m_.boom.coords().mass_ff(), 1.0, false, out.mass, e);
@@ -184,8 +196,8 @@ void CraneEquationsOf<Coords, Pinned>::minimal_jacobian(double t, ConstRef z, Co
       out);
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::full_jacobian(double t, ConstRef q, ConstRef v, ConstRef v_dot, SecondOrderJacobian& out) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::full_jacobian(double t, ConstRef q, ConstRef v, ConstRef v_dot, SecondOrderJacobian& out) {
   const int size = full_size(), b = layout_.frame, e = layout_.frame + 3;
   out.set_zero();
   if (hull_free()) {
@@ -194,8 +206,9 @@ void CraneEquationsOf<Coords, Pinned>::full_jacobian(double t, ConstRef q, Const
       for (int j = 0; j < 3; ++j) out.mass.at(layout_.hull + i, layout_.hull + j) = hull_mass(i, j);
     }
   }
-  if (has_cargo()) {
-    for (int i = 0; i < 3; ++i) out.mass.at(layout_.cargo + i, layout_.cargo + i) = cargo_inertia()(i);
+  for (std::size_t k = 0; k < bodies_.size(); ++k) {
+    const int at = layout_.bodies[k].full;
+    for (int i = 0; i < 3; ++i) out.mass.at(at + i, at + i) = body_inertia(static_cast<int>(k))(i);
   }
   boom_q_ = q.tail(3 + n_);
   boom_v_ = v.tail(3 + n_);
@@ -231,8 +244,8 @@ void CraneEquationsOf<Coords, Pinned>::full_jacobian(double t, ConstRef q, Const
       out);
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-CraneOutputs CraneEquationsOf<Coords, Pinned>::minimal_outputs_with_accelerations(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+CraneOutputs CraneEquationsOf<Coords, Articulated>::minimal_outputs_with_accelerations(double t, ConstRef z, ConstRef z_dot, ConstRef z_ddot) {
   set_minimal_state(t, z, z_dot);
   record_hull_velocity(t, hull_v_);
   hull_force_.setZero();  // (the wires' share on the hull lands here; the hull's own loads are not needed)

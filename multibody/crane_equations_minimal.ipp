@@ -1,6 +1,7 @@
 // Crane equations, part 1: loads on the bodies and the minimal-coordinate ODE.
 // The heel at B is a velocity transformation from the rigid minimal coordinates z_r (the hull's
-// (r1, θ1) when it floats, then the pinned heel's luffing angle β) to the boom frame: the frame is
+// (r1, θ1) when it floats, the pinned bodies' angles γ, then the pinned heel's luffing angle β) to the
+// boom frame: the frame is
 // at R_B = r1 + A(θ1) b, θ_B = θ1 + α (+ β), so Ṙ_B = ṙ1 + θ̇1 Ĩ A1 b, θ̇_B = θ̇1 (+ β̇), i.e.
 // q̇_B = J ż_r with J = [J_r | e3], J_r = [[1, 0, −(A1 b)_y], [0, 1, (A1 b)_x], [0, 0, 1]], e3 = (0, 0, 1)
 // (the pin's column), and q̈_B = J z̈_r + J̇ż, J̇ż = (−θ̇1² A1 b, 0). Then (Shabana 2005 §6, M_z = JᵀMJ,
@@ -8,27 +9,32 @@
 //   rigid rows:   (M_r + Jᵀ M_RR J) z̈_r + Jᵀ M_Rf η̈ = Q_r + Jᵀ (Q_B,ref − M_RR J̇ż)
 //   elastic rows: M_fR J z̈_r + M_ff η̈ = Q_B,f − M_fR J̇ż
 // with M_r, Q_r the hull's own inertia and loads (none on the heel's row), solved by the Schur
-// complement of the constant M_ff (factored once). A held or driven base has no hull rows: its
-// prescribed acceleration joins J̇ż as the known frame acceleration. Without a cargo the cargo rows
-// are absent.
+// complement of the constant M_ff (factored once). A body pinned to the hull adds its own velocity
+// transformation J_b over z_r (multibody/rigid_body.hpp): J_bᵀ M_b J_b to the rigid rows' mass and
+// J_bᵀ (F_b − M_b a₀_b) to their forces (its γ column moves neither the boom frame nor the hull). A held
+// or driven base has no hull rows: its prescribed acceleration joins J̇ż as the known frame (and pinned
+// bodies') acceleration. A free body (the cargo) has its own diagonal block: M_c z̈_c = F_c.
 #pragma once
 
 namespace ffrf::multibody::detail {
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-CraneEquationsOf<Coords, Pinned>::CraneEquationsOf(std::shared_ptr<const CraneModelOf<Coords>> shared)
+template <fem::ElasticCoordinates Coords, bool Articulated>
+CraneEquationsOf<Coords, Articulated>::CraneEquationsOf(std::shared_ptr<const CraneModelOf<Coords>> shared)
     : shared_(std::move(shared)),
       m_(shared_->model),
       layout_(shared_->layout),
       n_(shared_->n),
       boom_work_(m_.boom.workspace()),
-      boom_q_(3 + n_), boom_v_(3 + n_), boom_force_(3 + n_), elastic_rhs_(n_), schur_rhs_column_(n_),
+      bodies_(m_.bodies.size()), boom_q_(3 + n_), boom_v_(3 + n_), boom_force_(3 + n_),
+      body_forces_(m_.bodies.size(), Eigen::Vector3d::Zero()), wire_body_forces_(m_.bodies.size(), Eigen::Vector3d::Zero()),
+      elastic_rhs_(n_), schur_rhs_column_(n_),
       boom_coupling_(3, n_), schur_rhs_(n_), wires_(m_.wires.size()),
       radiation_(m_.hull.radiation_memory), boom_a_(3 + n_), wire_boom_force_(3 + n_) {
-  const int r = Pinned ? layout_.rigid_size() : 3;  // (a clamped boom's blocks are the hull's, unused when it is held)
-  if constexpr (Pinned) {
+  const int r = Articulated ? layout_.rigid_size() : 3;  // (a clamped boom's blocks are the hull's, unused when it is held)
+  if constexpr (Articulated) {
     rigid_rhs_.resize(r);
     frame_jacobian_.resize(3, r);
+    pinned_mass_.setZero(r, r);
   }
   rigid_elastic_mass_.resize(r, n_);
   schur_columns_.resize(n_, r);
@@ -41,15 +47,15 @@ CraneEquationsOf<Coords, Pinned>::CraneEquationsOf(std::shared_ptr<const CraneMo
   full_inertia_.resize(full_size());
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-Eigen::Matrix3d CraneEquationsOf<Coords, Pinned>::hull_rigid_inertia() const {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+Eigen::Matrix3d CraneEquationsOf<Coords, Articulated>::hull_rigid_inertia() const {
   Eigen::Matrix3d inertia = (Eigen::Vector3d(m_.hull.mass, m_.hull.mass, m_.hull.pitch_inertia) + m_.hull.added_mass).asDiagonal();
   if (radiation_.active()) inertia += radiation_.added_mass();
   return inertia;
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::set_minimal_state(double t, ConstRef z, ConstRef z_dot, bool moving) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::set_minimal_state(double t, ConstRef z, ConstRef z_dot, bool moving) {
   if (hull_free()) {
     hull_q_ = z.segment<3>(layout_.hull);
     hull_v_ = moving ? Eigen::Vector3d(z_dot.segment<3>(layout_.hull)) : Eigen::Vector3d::Zero();
@@ -57,9 +63,14 @@ void CraneEquationsOf<Coords, Pinned>::set_minimal_state(double t, ConstRef z, C
     hull_q_ = base_pose(t);
     hull_v_ = moving ? base_velocity(t) : Eigen::Vector3d::Zero();
   }
-  if (has_cargo()) {
-    cargo_q_ = z.segment<3>(layout_.cargo);
-    cargo_v_ = moving ? Eigen::Vector3d(z_dot.segment<3>(layout_.cargo)) : Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const BodyBlock& block = layout_.bodies[i];
+    if (block.pinned) {
+      mount_pinned_body(static_cast<int>(i), z(block.minimal), moving ? z_dot(block.minimal) : 0.0);
+    } else {
+      bodies_[i].pose = z.segment<3>(block.minimal);
+      bodies_[i].velocity = moving ? Eigen::Vector3d(z_dot.segment<3>(block.minimal)) : Eigen::Vector3d::Zero();
+    }
   }
   const double beta = clamped() ? 0.0 : z(layout_.heel);
   const double beta_rate = clamped() || !moving ? 0.0 : z_dot(layout_.heel);
@@ -72,20 +83,20 @@ void CraneEquationsOf<Coords, Pinned>::set_minimal_state(double t, ConstRef z, C
   }
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::set_full_state(double t, ConstRef q, ConstRef v) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::set_full_state(double t, ConstRef q, ConstRef v) {
   hull_q_ = hull_free() ? Eigen::Vector3d(q.segment<3>(layout_.hull)) : base_pose(t);
   hull_v_ = hull_free() ? Eigen::Vector3d(v.segment<3>(layout_.hull)) : base_velocity(t);
-  if (has_cargo()) {
-    cargo_q_ = q.segment<3>(layout_.cargo);
-    cargo_v_ = v.segment<3>(layout_.cargo);
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    bodies_[i].pose = q.segment<3>(layout_.bodies[i].full);
+    bodies_[i].velocity = v.segment<3>(layout_.bodies[i].full);
   }
   boom_q_ = q.tail(3 + n_);
   boom_v_ = v.tail(3 + n_);
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::mount_boom(double beta, double beta_rate) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::mount_boom(double beta, double beta_rate) {
   mount_offset_ = rotation(hull_q_(2)) * m_.mount.root;
   boom_q_.head<2>() = hull_q_.head<2>() + mount_offset_;
   boom_q_(2) = hull_q_(2) + m_.mount.angle;
@@ -97,8 +108,8 @@ void CraneEquationsOf<Coords, Pinned>::mount_boom(double beta, double beta_rate)
   }
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::evaluate_loads(double t, bool with_wave) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::evaluate_loads(double t, bool with_wave) {
   const double g = m_.gravity;
   const HullModel& hull = m_.hull;
   const Eigen::Vector3d& hull_q = hull_q_;
@@ -131,16 +142,16 @@ void CraneEquationsOf<Coords, Pinned>::evaluate_loads(double t, bool with_wave) 
   boom_and_wire_loads(!with_wave);
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::boom_and_wire_loads(bool bilateral_wires) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::boom_and_wire_loads(bool bilateral_wires) {
   m_.boom.loads_and_mass_blocks(boom_q_, boom_v_, Eigen::Vector2d(0.0, -m_.gravity), boom_force_, boom_reference_mass_,
                                 boom_coupling_, boom_work_);
-  cargo_force_ = has_cargo() ? Eigen::Vector3d(0.0, -m_.cargo.mass * m_.gravity, 0.0) : Eigen::Vector3d::Zero();
-  add_wire_loads(bilateral_wires, boom_force_, hull_force_, cargo_force_);
+  for (std::size_t i = 0; i < body_forces_.size(); ++i) body_forces_[i] = Eigen::Vector3d(0.0, -m_.bodies[i].mass * m_.gravity, 0.0);
+  add_wire_loads(bilateral_wires, boom_force_, hull_force_, body_forces_);
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-Eigen::Vector3d CraneEquationsOf<Coords, Pinned>::frame_known_acceleration(double t) const {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+Eigen::Vector3d CraneEquationsOf<Coords, Articulated>::frame_known_acceleration(double t) const {
   Eigen::Vector3d known;
   known.head<2>() = -hull_v_(2) * hull_v_(2) * mount_offset_;
   known(2) = 0.0;
@@ -152,38 +163,25 @@ Eigen::Vector3d CraneEquationsOf<Coords, Pinned>::frame_known_acceleration(doubl
   return known;
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-typename CraneEquationsOf<Coords, Pinned>::FrameJacobian CraneEquationsOf<Coords, Pinned>::frame_jacobian() const {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+typename CraneEquationsOf<Coords, Articulated>::FrameJacobian CraneEquationsOf<Coords, Articulated>::frame_jacobian() const {
   FrameJacobian jacobian;
-  if constexpr (Pinned) {
+  if constexpr (Articulated) {
     jacobian.setZero(3, layout_.rigid_size());
   } else {
     jacobian.setZero();
   }
-  int column = 0;
   if (hull_free()) {
     jacobian.template leftCols<3>().setIdentity();
     jacobian(0, 2) = -mount_offset_.y();
     jacobian(1, 2) = mount_offset_.x();
-    column = 3;
   }
-  if (!clamped()) jacobian(2, column) = 1.0;
+  if (!clamped()) jacobian(2, layout_.rigid_size() - 1) = 1.0;  // the heel's angle: the last of the rigid block
   return jacobian;
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-typename CraneEquationsOf<Coords, Pinned>::RigidMatrix CraneEquationsOf<Coords, Pinned>::rigid_inertia() const {
-  if constexpr (Pinned) {
-    RigidMatrix inertia = RigidMatrix::Zero(layout_.rigid_size(), layout_.rigid_size());
-    if (hull_free()) inertia.template topLeftCorner<3, 3>() = hull_rigid_inertia();
-    return inertia;
-  } else {
-    return hull_rigid_inertia();
-  }
-}
-
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::add_frame_acceleration(const RigidVector& rigid_a, Eigen::Vector3d& frame_a) const {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::add_frame_acceleration(const RigidVector& rigid_a, Eigen::Vector3d& frame_a) const {
   if (hull_free()) {
     frame_a.head<2>() += rigid_a.template head<2>() + rigid_a(2) * perp(mount_offset_);
     frame_a(2) += rigid_a(2);
@@ -191,23 +189,8 @@ void CraneEquationsOf<Coords, Pinned>::add_frame_acceleration(const RigidVector&
   if (!clamped()) frame_a(2) += rigid_a(rigid_a.size() - 1);
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-typename CraneEquationsOf<Coords, Pinned>::RigidVector CraneEquationsOf<Coords, Pinned>::rigid_part(ConstRef z) const {
-  RigidVector rigid;
-  if constexpr (Pinned) rigid.resize(layout_.rigid_size());
-  if (hull_free()) rigid.template head<3>() = z.segment<3>(layout_.hull);
-  if (!clamped()) rigid(rigid.size() - 1) = z(layout_.heel);
-  return rigid;
-}
-
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::scatter_rigid(const RigidVector& rigid, Ref z) const {
-  if (hull_free()) z.segment<3>(layout_.hull) = rigid.template head<3>();
-  if (!clamped()) z(layout_.heel) = rigid(rigid.size() - 1);
-}
-
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::minimal_forces(double t, ConstRef z, ConstRef z_dot, bool with_wave) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::minimal_forces(double t, ConstRef z, ConstRef z_dot, bool with_wave) {
   set_minimal_state(t, z, z_dot);
   evaluate_loads(t, with_wave);
   frame_known_acc_ = frame_known_acceleration(t);  // (the mass blocks came with the loads)
@@ -217,19 +200,28 @@ void CraneEquationsOf<Coords, Pinned>::minimal_forces(double t, ConstRef z, Cons
   frame_jacobian_ = frame_jacobian();
   rigid_rhs_ = frame_jacobian_.transpose() * boom_reference_rhs;
   if (hull_free()) rigid_rhs_.template head<3>() += hull_force_;
+  if constexpr (Articulated) {
+    if (has_pinned_bodies()) {
+      pinned_mass_.setZero();
+      add_pinned_bodies(t, body_forces_, rigid_rhs_, true);
+    }
+  }
   rigid_elastic_mass_.noalias() = frame_jacobian_.transpose() * boom_coupling_;
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::minimal_accelerations(double t, ConstRef z, ConstRef z_dot, Ref z_ddot) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::minimal_accelerations(double t, ConstRef z, ConstRef z_dot, Ref z_ddot) {
   minimal_forces(t, z, z_dot, true);
-  if (has_cargo()) z_ddot.segment<3>(layout_.cargo) = cargo_force_.cwiseQuotient(cargo_inertia());
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const BodyBlock& block = layout_.bodies[i];
+    if (!block.pinned) z_ddot.segment<3>(block.minimal) = body_forces_[i].cwiseQuotient(body_inertia(static_cast<int>(i)));
+  }
   const int r = layout_.rigid_size();
   RigidVector rigid_a;
   if (n_ > 0 && r == 0) schur_rhs_ = shared_->elastic_mass_factor.solve(elastic_rhs_);
   if (r > 0) {
     const FrameJacobian& jr = frame_jacobian_;
-    RigidMatrix schur = rigid_inertia() + jr.transpose() * boom_reference_mass_ * jr;
+    RigidMatrix schur = rigid_mass();
     RigidVector rhs = rigid_rhs_;
     if (n_ > 0) {
       // M_ff⁻¹ M_fR = M_ff⁻¹ [S̄ᵀAᵀ, −(cᵀ + S̃ᵀη)] = [(M_ff⁻¹S̄ᵀ) Aᵀ, −(M_ff⁻¹cᵀ + M_ff⁻¹S̃ᵀη)]: the first
@@ -268,53 +260,69 @@ void CraneEquationsOf<Coords, Pinned>::minimal_accelerations(double t, ConstRef 
   frame_acceleration_ = frame_a;
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::gather_minimal_forces(Ref forces) const {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::gather_minimal_forces(Ref forces) const {
   if (layout_.rigid_size() > 0) scatter_rigid(rigid_rhs_, forces);
-  if (has_cargo()) forces.segment<3>(layout_.cargo) = cargo_force_;
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (!layout_.bodies[i].pinned) forces.segment<3>(layout_.bodies[i].minimal) = body_forces_[i];
+  }
   forces.tail(n_) = elastic_rhs_;
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::static_residual(ConstRef z, Ref residual) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::static_residual(ConstRef z, Ref residual) {
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(z.size());
   minimal_forces(0.0, z, zero, false);
   gather_minimal_forces(residual);
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::minimal_generalized_forces(double t, ConstRef z, ConstRef z_dot, Ref forces) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::minimal_generalized_forces(double t, ConstRef z, ConstRef z_dot, Ref forces) {
   minimal_forces(t, z, z_dot, true);
   gather_minimal_forces(forces);
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-Eigen::VectorXd CraneEquationsOf<Coords, Pinned>::initial_guess() const {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+Eigen::VectorXd CraneEquationsOf<Coords, Articulated>::initial_guess() const {
   Eigen::VectorXd z = Eigen::VectorXd::Zero(minimal_size());
   const Eigen::Vector3d hull_q = base_pose(0.0);
   if (hull_free()) z.segment<3>(layout_.hull) = hull_q;
-  if (!has_cargo()) return z;
-  // Cargo hanging straight below the undeformed tip, wire stretched by the cargo's weight.
+  // Free bodies at their given poses, pinned ones at γ = 0, ...
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (!layout_.bodies[i].pinned) z.segment<3>(layout_.bodies[i].minimal) = m_.bodies[i].initial_pose;
+  }
+  if (m_.cargo < 0) return z;
+  // ... and the cargo hanging straight below the undeformed tip, its wire stretched by its weight.
   const WireConnector& hoist = m_.wires[m_.hoist_wire];
   const Eigen::Vector2d root = hull_q.head<2>() + rotation(hull_q(2)) * m_.mount.root;
   const Eigen::Vector2d tip = root + rotation(hull_q(2) + m_.mount.angle) * hoist.from.point.undeformed;
-  const double stretch = hoist.rope.stiffness > 0.0 ? m_.cargo.mass * m_.gravity / hoist.rope.stiffness : 0.0;
+  const double cargo_mass = m_.bodies[m_.cargo].mass;
+  const double stretch = hoist.rope.stiffness > 0.0 ? cargo_mass * m_.gravity / hoist.rope.stiffness : 0.0;
   const Eigen::Vector2d hook = tip - Eigen::Vector2d(0.0, hoist.rope.unstretched_length + stretch);
-  z.segment<2>(layout_.cargo) = hook - m_.cargo.hook;
+  z.segment<2>(cargo_offset()) = hook - hoist.to.point.undeformed;
+  z(cargo_offset() + 2) = 0.0;
   return z;
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-Eigen::VectorXd CraneEquationsOf<Coords, Pinned>::static_residual_scale() const {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+Eigen::VectorXd CraneEquationsOf<Coords, Articulated>::static_residual_scale() const {
   // 1 / (weight of the inertia on each row over 1 m): forces of order M_ii g.
   Eigen::VectorXd scale(minimal_size());
   const double g = m_.gravity;
   if (hull_free()) {
-    const double total = m_.hull.mass + m_.boom.coords().mass() + m_.cargo.mass;
+    double total = m_.hull.mass + m_.boom.coords().mass();
+    for (const RigidBodyModel& body : m_.bodies) total += body.mass;
     scale.segment<3>(layout_.hull) =
         Eigen::Vector3d(1.0 / (total * g), 1.0 / (total * g), 1.0 / ((m_.hull.pitch_inertia + 1.0) * g));
   }
-  if (has_cargo()) scale.segment<3>(layout_.cargo) = cargo_inertia().cwiseInverse() / std::max(g, 1e-3);
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const BodyBlock& block = layout_.bodies[i];
+    if (block.pinned) {
+      scale(block.minimal) = 1.0 / ((m_.bodies[i].inertia_about_pivot() + 1.0) * std::max(g, 1e-3));
+    } else {
+      scale.segment<3>(block.minimal) = body_inertia(static_cast<int>(i)).cwiseInverse() / std::max(g, 1e-3);
+    }
+  }
   if (!clamped()) scale(layout_.heel) = 1.0 / ((shared_->heel_inertia + 1.0) * std::max(g, 1e-3));
   // Elastic rows: inertia under gravity plus the stiffness times a 1 cm displacement, so that the
   // round-off of K η (K grows like 1/h³) does not dominate the scaled residual.
@@ -326,56 +334,9 @@ Eigen::VectorXd CraneEquationsOf<Coords, Pinned>::static_residual_scale() const 
   return scale;
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-Eigen::VectorXd CraneEquationsOf<Coords, Pinned>::coordinate_scale() const {
-  return shared_->minimal_scale;  // 1 m, 0.01 rad for the pitches, the elastic ones' 1 cm (crane_model_of.hpp)
-}
-
-template <fem::ElasticCoordinates Coords, bool Pinned>
-CraneOutputs CraneEquationsOf<Coords, Pinned>::minimal_outputs(double t, ConstRef z, ConstRef z_dot) {
-  if (hull_free()) record_hull_velocity(t, z_dot.segment<3>(layout_.hull));
-  Eigen::VectorXd z_ddot(z.size());
-  minimal_accelerations(t, z, z_dot, z_ddot);
-  CraneOutputs out = common_outputs();
-  out.joint_reaction = joint_reaction_;
-  out.root_axial_force = root_axial_force(joint_reaction_, boom_q_(2));
-  out.constraint_residual = 0.0;
-  add_boom_stress(frame_acceleration_, z_ddot.tail(n_), out);
-  return out;
-}
-
-template <fem::ElasticCoordinates Coords, bool Pinned>
-CraneOutputs CraneEquationsOf<Coords, Pinned>::common_outputs() {
-  CraneOutputs out;
-  out.hull = hull_q_;
-  out.cargo = has_cargo() ? cargo_q_ : Eigen::Vector3d::Zero();
-  out.tip_deflection = m_.boom_tip.shape * boom_q_.tail(n_);
-  if (m_.hoist_wire >= 0) {
-    out.wire_tension = wires_[m_.hoist_wire].tension;
-    out.wire_length = wires_[m_.hoist_wire].length;
-  }
-  const double g = m_.gravity;
-  const Eigen::Vector3d cargo_v = has_cargo() ? cargo_v_ : Eigen::Vector3d::Zero();
-  const double cargo_on = has_cargo() ? 1.0 : 0.0;
-  out.kinetic_energy = 0.5 * hull_v_.dot(hull_rigid_inertia() * hull_v_) * (hull_free() ? 1.0 : 0.0) +
-                       cargo_on * 0.5 * cargo_v.dot(cargo_inertia().cwiseProduct(cargo_v)) +
-                       m_.boom.kinetic_energy(boom_v_, boom_reference_mass_, boom_coupling_, boom_work_);
-  out.gravity_energy = (hull_free() ? m_.hull.mass * g * hull_q_(1) : 0.0) + cargo_on * m_.cargo.mass * g * out.cargo(1) +
-                       m_.boom.gravity_potential(boom_q_, Eigen::Vector2d(0.0, -g));
-  out.strain_energy = m_.boom.strain_energy(boom_q_, boom_work_);
-  for (std::size_t i = 0; i < m_.wires.size(); ++i) {
-    out.wire_energy += wire_energy(m_.wires[i].rope, wires_[i].length);
-    if (static_cast<int>(i) != m_.hoist_wire) {
-      out.luffing_tension += wires_[i].tension;
-      out.luffing_line_pull = std::max(out.luffing_line_pull, wires_[i].tension / m_.wires[i].parts);
-    }
-  }
-  if (hull_free()) {
-    const Eigen::Vector3d d = hull_q_ - m_.hull.support_pose;
-    out.spring_energy = 0.5 * m_.hull.mooring_stiffness * hull_q_(0) * hull_q_(0) +
-                        0.5 * d.dot(m_.hull.support_stiffness.cwiseProduct(d));
-  }
-  return out;
+template <fem::ElasticCoordinates Coords, bool Articulated>
+Eigen::VectorXd CraneEquationsOf<Coords, Articulated>::coordinate_scale() const {
+  return shared_->minimal_scale;  // 1 m, 0.01 rad for the pitches and angles, the elastic ones' 1 cm (crane_model_of.hpp)
 }
 
 }  // namespace ffrf::multibody::detail

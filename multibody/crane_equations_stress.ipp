@@ -9,15 +9,15 @@
 
 namespace ffrf::multibody::detail {
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-const BoomStressProfile* CraneEquationsOf<Coords, Pinned>::boom_stress_profile() const {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+const BoomStressProfile* CraneEquationsOf<Coords, Articulated>::boom_stress_profile() const {
   if (!m_.stress) return nullptr;
   const bool acceleration = m_.stress->method == StressRecovery::mode_acceleration && !m_.stress->identity_basis;
   return &stress_profiles_[acceleration ? 1 : 0];
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::add_boom_stress(const Eigen::Vector3d& frame_acceleration, ConstRef elastic_acceleration,
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::add_boom_stress(const Eigen::Vector3d& frame_acceleration, ConstRef elastic_acceleration,
                                                        CraneOutputs& out) {
   if (!m_.stress) return;
   const BoomStressModel& model = *m_.stress;
@@ -48,8 +48,8 @@ void CraneEquationsOf<Coords, Pinned>::add_boom_stress(const Eigen::Vector3d& fr
   out.boom_stress_utilisation = model.allowable_stress > 0.0 ? own.peak / model.allowable_stress : 0.0;
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-Eigen::Vector3d CraneEquationsOf<Coords, Pinned>::full_boom_accelerations(ConstRef lambda, Eigen::VectorXd& elastic_acceleration) const {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+Eigen::Vector3d CraneEquationsOf<Coords, Articulated>::full_boom_accelerations(ConstRef lambda, Eigen::VectorXd& elastic_acceleration) const {
   Eigen::Vector3d frame_force = boom_force_.head<3>();
   frame_force += Eigen::Vector3d(lambda(0), lambda(1), clamped() ? -lambda(2) : 0.0);
   if (n_ == 0) {

@@ -7,48 +7,51 @@
 
 namespace ffrf::multibody::detail {
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-typename CraneEquationsOf<Coords, Pinned>::EndMotion CraneEquationsOf<Coords, Pinned>::end_motion(const BodyAttachment& end) const {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+typename CraneEquationsOf<Coords, Articulated>::EndMotion CraneEquationsOf<Coords, Articulated>::end_motion(const BodyAttachment& end) const {
   EndMotion motion;
   switch (end.body) {
     case Body::boom: motion.boom = m_.boom.point_motion(boom_q_, boom_v_, end.point); break;
     case Body::hull: motion.rigid = rigid_point_motion(hull_q_, hull_v_, end.point.undeformed); break;
-    case Body::cargo: motion.rigid = rigid_point_motion(cargo_q_, cargo_v_, end.point.undeformed); break;
+    case Body::rigid:
+      motion.rigid = rigid_point_motion(bodies_[end.index].pose, bodies_[end.index].velocity, end.point.undeformed);
+      break;
   }
   return motion;
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::add_end_force(const BodyAttachment& end, const EndMotion& motion, const Eigen::Vector2d& force,
-                                             Ref boom, Eigen::Vector3d& hull, Eigen::Vector3d& cargo) const {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::add_end_force(const BodyAttachment& end, const EndMotion& motion, const Eigen::Vector2d& force,
+                                             Ref boom, Eigen::Vector3d& hull, std::vector<Eigen::Vector3d>& bodies) const {
   switch (end.body) {
     case Body::boom: m_.boom.add_point_force(motion.boom, end.point, force, boom); break;
     case Body::hull: add_rigid_point_force(motion.rigid, force, hull); break;
-    case Body::cargo: add_rigid_point_force(motion.rigid, force, cargo); break;
+    case Body::rigid: add_rigid_point_force(motion.rigid, force, bodies[end.index]); break;
   }
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::add_wire_loads(bool bilateral, Ref boom, Eigen::Vector3d& hull, Eigen::Vector3d& cargo) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::add_wire_loads(bool bilateral, Ref boom, Eigen::Vector3d& hull,
+                                                           std::vector<Eigen::Vector3d>& bodies) {
   for (std::size_t i = 0; i < m_.wires.size(); ++i) {
     const WireConnector& wire = m_.wires[i];
     const EndMotion from = end_motion(wire.from), to = end_motion(wire.to);
     wires_[i] = wire_state(wire.rope, from.position(wire.from.body), from.velocity(wire.from.body), to.position(wire.to.body),
                            to.velocity(wire.to.body), bilateral);
     const Eigen::Vector2d pull = wires_[i].tension * wires_[i].direction;  // on `from`, towards `to`
-    add_end_force(wire.from, from, pull, boom, hull, cargo);
-    add_end_force(wire.to, to, -pull, boom, hull, cargo);
+    add_end_force(wire.from, from, pull, boom, hull, bodies);
+    add_end_force(wire.to, to, -pull, boom, hull, bodies);
   }
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::wire_stretches_minimal(double t, ConstRef z, Ref stretch) {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::wire_stretches_minimal(double t, ConstRef z, Ref stretch) {
   set_minimal_state(t, z, z, false);
   wire_stretches(stretch);
 }
 
-template <fem::ElasticCoordinates Coords, bool Pinned>
-void CraneEquationsOf<Coords, Pinned>::wire_stretches(Ref stretch) const {
+template <fem::ElasticCoordinates Coords, bool Articulated>
+void CraneEquationsOf<Coords, Articulated>::wire_stretches(Ref stretch) const {
   for (std::size_t i = 0; i < m_.wires.size(); ++i) {
     const WireConnector& wire = m_.wires[i];
     const EndMotion from = end_motion(wire.from), to = end_motion(wire.to);

@@ -1,5 +1,6 @@
 // Instantiates the crane equations and their shared model for the nodal and the modal elastic
-// coordinates, each with a clamped and a pinned heel.
+// coordinates, each with the hull's fixed 3 × 3 rigid block and with an articulated one (a pinned heel,
+// bodies pinned to the hull).
 #include "multibody/crane_equations_of.hpp"
 
 #include "modal/modal_coordinates.hpp"
@@ -11,7 +12,7 @@ namespace detail {
 
 template <fem::ElasticCoordinates Coords>
 std::unique_ptr<CraneEquations> CraneModelOf<Coords>::equations() const {
-  if (layout.heel >= 0) return std::make_unique<CraneEquationsOf<Coords, true>>(this->shared_from_this());
+  if (layout.articulated()) return std::make_unique<CraneEquationsOf<Coords, true>>(this->shared_from_this());
   return std::make_unique<CraneEquationsOf<Coords, false>>(this->shared_from_this());
 }
 

@@ -40,7 +40,6 @@ class CraneModelOf final : public CraneModel, public std::enable_shared_from_thi
   int elastic_size() const override { return n; }
 
   bool hull_free() const { return !model.hull.fixed; }
-  bool has_cargo() const { return model.cargo.present; }
   int minimal_size() const { return layout.minimal_size(); }
   int full_size() const { return layout.full_size(); }
 
@@ -66,9 +65,29 @@ template <fem::ElasticCoordinates Coords>
 CraneModelOf<Coords>::CraneModelOf(CraneParameters<Coords> crane)
     : model(std::move(crane)),
       n(static_cast<int>(model.boom.elastic_size())),
-      layout(crane_layout(!model.hull.fixed, model.cargo.present, model.mount.joint == HeelJoint::pin, n)) {
-  if (model.cargo.present && (model.hoist_wire < 0 || model.hoist_wire >= static_cast<int>(model.wires.size()))) {
+      layout(crane_layout(!model.hull.fixed, model.bodies, model.mount.joint == HeelJoint::pin, n)) {
+  const int body_count = static_cast<int>(model.bodies.size());
+  if (model.cargo >= body_count || model.a_frame >= body_count) {
+    throw std::invalid_argument("the crane's cargo or A-frame is not one of its rigid bodies");
+  }
+  if (model.cargo >= 0 && (model.hoist_wire < 0 || model.hoist_wire >= static_cast<int>(model.wires.size()))) {
     throw std::invalid_argument("the cargo hangs on no wire: give the crane a hoist wire");
+  }
+  if (model.cargo >= 0 && model.bodies[model.cargo].pinned()) throw std::invalid_argument("the cargo hangs free: it is not pinned to the hull");
+  for (const RigidBodyModel& body : model.bodies) {
+    const double inertia = body.pinned() ? body.inertia_about_pivot() : body.rotary_inertia;
+    if (!(body.mass > 0.0) || !(inertia > 0.0)) {
+      throw std::invalid_argument("the " + body.name + " needs a positive mass and rotary inertia (mass " + std::to_string(body.mass) +
+                                  " kg, rotary inertia " + std::to_string(inertia) + " kg m²)");
+    }
+  }
+  for (const WireConnector& wire : model.wires) {
+    for (const BodyAttachment* end : {&wire.from, &wire.to}) {
+      if (end->body == Body::rigid && (end->index < 0 || end->index >= body_count)) {
+        throw std::invalid_argument("the " + wire.name + " ends on a rigid body the crane does not have (body " +
+                                    std::to_string(end->index) + " of " + std::to_string(body_count) + ")");
+      }
+    }
   }
   if (model.wires.size() > static_cast<std::size_t>(solve::max_events)) {
     throw std::invalid_argument("the crane has " + std::to_string(model.wires.size()) + " wires; at most " +
@@ -150,18 +169,20 @@ void CraneModelOf<Coords>::find_structures() {
   }
   minimal_structure = banded ? BandStructure{layout.elastic, n, bandwidth, bandwidth} : BandStructure{minimal_size(), 0, 0, 0};
   full_structure = banded ? BandStructure{layout.frame + 3, n, bandwidth, bandwidth} : BandStructure{full_size(), 0, 0, 0};
-  // Minimal coordinates: 1 m for positions, 0.01 rad for the hull's and the cargo's pitch and the
-  // heel's angle, then the elastic ones. Full coordinates: hull and cargo as in minimal coordinates,
-  // the boom frame like the hull (1 m, 0.01 rad), then the elastic coordinates.
+  // Minimal coordinates: 1 m for positions, 0.01 rad for the hull's and the free bodies' pitch, the
+  // pinned bodies' and the heel's angles, then the elastic ones. Full coordinates: every body's pose and
+  // the boom frame like the hull's (1 m, 0.01 rad), then the elastic coordinates.
   minimal_scale = Eigen::VectorXd::Constant(minimal_size(), 1.0);
-  if (layout.hull >= 0) minimal_scale(layout.hull + 2) = 0.01;
-  if (layout.cargo >= 0) minimal_scale(layout.cargo + 2) = 0.01;
+  full_scale = Eigen::VectorXd::Constant(full_size(), 1.0);
+  if (layout.hull >= 0) minimal_scale(layout.hull + 2) = full_scale(layout.hull + 2) = 0.01;
+  for (const BodyBlock& block : layout.bodies) {
+    minimal_scale(block.minimal + (block.pinned ? 0 : 2)) = 0.01;
+    full_scale(block.full + 2) = 0.01;
+  }
   if (layout.heel >= 0) minimal_scale(layout.heel) = 0.01;
   minimal_scale.tail(n) = elastic_scale;
-  full_scale.resize(full_size());
-  full_scale.head(layout.frame) = minimal_scale.head(layout.frame);
-  full_scale.segment<3>(layout.frame) = Eigen::Vector3d(1.0, 1.0, 0.01);
-  full_scale.tail(n) = minimal_scale.tail(n);
+  full_scale(layout.frame + 2) = 0.01;
+  full_scale.tail(n) = elastic_scale;
 }
 
 }  // namespace ffrf::multibody::detail

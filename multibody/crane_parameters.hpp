@@ -1,9 +1,12 @@
 // The floating crane as constant data (the "model", Pinocchio style), as components: the bodies —
-// hull G1 (rigid), the elastic boom on a floating frame, the cargo G2 (rigid) — and the connectors
-// between them — the boom's heel joint at B on the hull (clamp or pin) and the wires (tension-only
-// ropes between two body points: the hoist wire from the boom tip A′ to the hook C, and any other) —
-// and the environment. The index map of their coordinates is multibody/crane_layout.hpp. Built once from a scene (scene/crane_builder.hpp); read-only in a run:
-// it becomes part of a CraneModel (multibody/crane_model.hpp) that threads share.
+// hull G1 (rigid, floating or held; it carries the sea loads and the boom's heel), the elastic boom on a
+// floating frame, and a list of further rigid bodies (multibody/rigid_body_model.hpp: the cargo G2, an
+// A-frame pinned to the deck) — and the connectors between them — the boom's heel joint at B on the
+// hull (clamp or pin), the pins of the pinned bodies, and the wires (tension-only ropes between two
+// body points: the hoist wire from the boom tip A′ to the hook C, the luffing wires, the backstays) —
+// and the environment. The index map of their coordinates is multibody/crane_layout.hpp. Built once
+// from a scene (scene/crane_builder.hpp); read-only in a run: it becomes part of a CraneModel
+// (multibody/crane_model.hpp) that threads share.
 // Planar, SI units, y up, angles counter-clockwise (docs/architecture.md, "Conventions").
 #pragma once
 
@@ -17,6 +20,8 @@
 #include "multibody/floating_frame_body.hpp"
 #include "sea/hull_pressure.hpp"
 #include "multibody/prescribed_motion.hpp"
+#include "multibody/rigid_body_model.hpp"
+#include "multibody/wire_role.hpp"
 #include "sea/wave_field.hpp"
 #include "hydro/radiation_memory.hpp"
 
@@ -74,12 +79,6 @@ struct BoomMountModel {
   HeelJoint joint = HeelJoint::clamp;
 };
 
-struct CargoModel {
-  bool present = true;                            // false: no cargo and no wire (coordinates removed)
-  double mass = 0.0;                              // [kg]
-  double pitch_inertia = 0.0;                     // about G2 [kg m²]
-  Eigen::Vector2d hook = Eigen::Vector2d::Zero(); // C relative to G2, cargo frame [m]
-};
 
 struct WireModel {
   double unstretched_length = 0.0;  // L0 [m]
@@ -87,15 +86,31 @@ struct WireModel {
   double damping = 0.0;             // [N s/m]
 };
 
-// The bodies a connector can attach to.
-enum class Body { hull, boom, cargo };
+// The bodies a connector can attach to: the hull, the boom, or one of the rigid bodies of
+// CraneParameters::bodies.
+enum class Body { hull, boom, rigid };
 
-// A point of a body: in the body's frame (the hull's at G1, the cargo's at G2, the boom's floating
-// frame at B with its shape rows).
+// A point of a body: in the body's frame (the hull's at G1, a rigid body's at its G, the boom's
+// floating frame at B with its shape rows).
 struct BodyAttachment {
   Body body = Body::hull;
+  int index = -1;  // Body::rigid: the body's place in CraneParameters::bodies
   BodyPoint point;
 };
+
+inline BodyAttachment on_hull(const Eigen::Vector2d& point) {
+  BodyAttachment end{Body::hull, -1, {}};
+  end.point.undeformed = point;
+  return end;
+}
+inline BodyAttachment on_boom(BodyPoint point) { return {Body::boom, -1, std::move(point)}; }
+inline BodyAttachment on_rigid_body(int index, const Eigen::Vector2d& point) {
+  BodyAttachment end{Body::rigid, index, {}};
+  end.point.undeformed = point;
+  return end;
+}
+
+
 
 // A wire rope between two body points (multibody/wire_rope.hpp: tension only); its tension pulls the
 // two ends towards each other. Reeved as a tackle of `parts` parts of line between two sheave blocks,
@@ -106,6 +121,7 @@ struct WireConnector {
   WireModel rope;
   BodyAttachment from, to;
   int parts = 1;  // parts of line (1: a single rope between the points)
+  WireRole role = WireRole::hoist;
 };
 
 template <fem::ElasticCoordinates Coords>
@@ -114,14 +130,36 @@ struct CraneParameters {
   BoomMountModel mount;
   FloatingFrameBody<Coords> boom;
   BodyPoint boom_tip;  // A′ (x = L): the tip deflection's point
-  CargoModel cargo;
-  std::vector<WireConnector> wires;  // every rope: the hoist wire first when there is a cargo
-  int hoist_wire = -1;               // the cargo's wire in `wires` (−1: none)
+  std::vector<RigidBodyModel> bodies{};  // the rigid bodies beside the hull: the cargo, an A-frame, ...
+  int cargo = -1;                      // the cargo's place in `bodies` (−1: none): it hangs on the hoist wire
+  int a_frame = -1;                    // the A-frame's place in `bodies` (−1: rigid with the hull)
+  std::vector<WireConnector> wires{};  // every rope: the hoist wire first when there is a cargo
+  int hoist_wire = -1;                 // the cargo's wire in `wires` (−1: none)
   double gravity = 9.81;
   double water_density = 1025.0;
   std::optional<sea::WaveField> wave;  // empty: calm water
   // How the stresses along the boom are recovered at each output (multibody/boom_stress.hpp); empty: none.
-  std::shared_ptr<const BoomStressModel> stress;
+  std::shared_ptr<const BoomStressModel> stress{};
 };
+
+// The same crane without its cargo and hoist wire (a boom on its supports alone): the cargo's body
+// and wire removed, the other bodies' indices in the wires' ends renumbered.
+template <class Parameters>
+void remove_cargo(Parameters& crane) {
+  if (crane.hoist_wire >= 0) {
+    crane.wires.erase(crane.wires.begin() + crane.hoist_wire);
+    crane.hoist_wire = -1;
+  }
+  if (crane.cargo < 0) return;
+  const int removed = crane.cargo;
+  crane.bodies.erase(crane.bodies.begin() + removed);
+  for (WireConnector& wire : crane.wires) {
+    for (BodyAttachment* end : {&wire.from, &wire.to}) {
+      if (end->body == Body::rigid && end->index > removed) --end->index;
+    }
+  }
+  if (crane.a_frame > removed) --crane.a_frame;
+  crane.cargo = -1;
+}
 
 }  // namespace ffrf::multibody

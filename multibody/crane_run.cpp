@@ -38,16 +38,21 @@ class CraneRecorder final : public solve::OutputSink {
 };
 
 // The integration's record into the crane's result, with the wires' events (event function i is wire
-// i's stretch): the hoist wire's, and the luffing wires'.
+// i's stretch), by the wires' roles: the hoist wire's, the luffing wires', the backstays'.
 void take_record(solve::IntegrationRecord&& record, const CraneEquations& equations, RunResult& result) {
   static_cast<solve::IntegrationRecord&>(result) = std::move(record);
   result.wire_events.clear();
   result.luffing_events.clear();
+  result.backstay_events.clear();
   result.wire_names.clear();
   for (int wire = 0; wire < equations.wire_count(); ++wire) result.wire_names.push_back(equations.wire_name(wire));
   for (const solve::Event& event : result.events) {
     const WireEvent wire_event{event.time, event.falling, event.index};
-    (event.index == equations.hoist_wire() ? result.wire_events : result.luffing_events).push_back(wire_event);
+    switch (equations.wire_role(event.index)) {
+      case WireRole::hoist: result.wire_events.push_back(wire_event); break;
+      case WireRole::luffing: result.luffing_events.push_back(wire_event); break;
+      case WireRole::backstay: result.backstay_events.push_back(wire_event); break;
+    }
   }
 }
 

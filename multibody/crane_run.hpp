@@ -35,7 +35,8 @@ struct WireEvent {
 struct RunResult : solve::IntegrationRecord {
   std::vector<CraneOutputs> samples;
   std::vector<WireEvent> wire_events;     // the hoist wire's (the cargo's)
-  std::vector<WireEvent> luffing_events;  // every other wire's: a pinned boom's luffing wires
+  std::vector<WireEvent> luffing_events;  // a pinned boom's luffing wires'
+  std::vector<WireEvent> backstay_events;  // an A-frame's backstays'
   std::vector<std::string> wire_names;    // by wire index
   std::vector<Detection> detections;
   // The stresses along the boom over the samples, by the model's recovery (empty when it recovers none).

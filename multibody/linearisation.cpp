@@ -34,8 +34,7 @@ LinearisedCrane linearise_crane(CraneEquations& calm, const Eigen::VectorXd& equ
   linear.equilibrium = equilibrium;
   linear.cargo_at = calm.cargo_offset();
   linear.elastic_at = n - calm.elastic_size();
-  const int rigid_bodies = (linear.elastic_at - (calm.heel_offset() >= 0 ? 1 : 0)) / 3;  // hull and/or cargo blocks of 3
-  linear.hull_at = rigid_bodies == (linear.cargo_at >= 0 ? 2 : 1) ? 0 : -1;
+  linear.hull_at = calm.layout().hull;
   SecondOrderJacobian blocks(calm.minimal_structure());
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(n);
   calm.minimal_jacobian(0.0, equilibrium, rest, rest, blocks);

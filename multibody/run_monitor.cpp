@@ -229,20 +229,22 @@ double max_buckling_load_ratio(const RunResult& result, const MonitorLimits& lim
   return compression / limits.buckling_load;
 }
 
-// Each luffing wire that went slack: when first, how often; the boom then hung on its heel pin alone.
-static void luffing_detections(const RunResult& result, std::vector<Detection>& found) {
+// Each supporting wire that went slack (a luffing wire: the boom then hung on its heel pin alone; a
+// backstay: the A-frame on its deck pin): when first, how often.
+static void support_detections(const RunResult& result, const std::vector<WireEvent>& events, FailureKind kind,
+                               const char* consequence, std::vector<Detection>& found) {
   for (std::size_t wire = 0; wire < result.wire_names.size(); ++wire) {
     int count = 0;
     double first = 0.0;
-    for (const WireEvent& event : result.luffing_events) {
+    for (const WireEvent& event : events) {
       if (event.wire != static_cast<int>(wire) || !event.slack) continue;
       if (count++ == 0) first = event.time;
     }
     if (count == 0) continue;
-    found.push_back({FailureKind::luffing_slack, first, false,
-                     fmt::format("the {} went slack {} times (first at t = {:.4g} s): the boom swung on its heel pin",
-                                 result.wire_names[wire], count, first),
-                     std::string(solve::remedy(FailureKind::luffing_slack)), static_cast<double>(count)});
+    found.push_back({kind, first, false,
+                     fmt::format("the {} went slack {} times (first at t = {:.4g} s): {}", result.wire_names[wire], count, first,
+                                 consequence),
+                     std::string(solve::remedy(kind)), static_cast<double>(count)});
   }
 }
 
@@ -259,7 +261,8 @@ std::vector<Detection> post_run_detections(const RunResult& result, const Monito
                      "cargo's excursion (hoisting, a stiffer/longer wire)",
                      total});
   }
-  luffing_detections(result, found);
+  support_detections(result, result.luffing_events, FailureKind::luffing_slack, "the boom swung on its heel pin", found);
+  support_detections(result, result.backstay_events, FailureKind::backstay_slack, "the A-frame swung on its deck pin", found);
   for (const SnapLoad& snap : snap_loads(result, limits)) {
     found.push_back({FailureKind::snap_load, snap.time, false,
                      format("the wire snapped taut at t = %.4g s: peak tension %.4g N at t = %.4g s (%.3g x the static tension)",

@@ -17,7 +17,7 @@
 namespace ffrf::report {
 namespace {
 
-enum class Needs { hull, cargo, wire, luffing, boom };
+enum class Needs { hull, cargo, wire, luffing, a_frame, boom };
 
 struct Chart {
   const char* name;
@@ -38,6 +38,10 @@ constexpr std::array charts{
     Chart{"wire_tension", "Wire rope tension", "tension [MN]", "MN", "wire_tension_N", 1e-6, Needs::wire},
     Chart{"luffing_tension", "Luffing wires' tension (all together)", "tension [MN]", "MN", "luffing_tension_N", 1e-6,
           Needs::luffing},
+    Chart{"backstay_tension", "Backstays' tension (all together)", "tension [MN]", "MN", "backstay_tension_N", 1e-6,
+          Needs::a_frame},
+    Chart{"a_frame_rotation", "A-frame rotation on its deck pin about its static equilibrium", "rotation [deg]", "deg",
+          "a_frame_rotation_deg", 1.0, Needs::a_frame},
     Chart{"tip_transverse", "Boom tip transverse elastic deflection (boom frame)", "deflection [m]", "m", "tip_transverse_m",
           1.0, Needs::boom},
     Chart{"tip_axial", "Boom tip axial elastic deflection (boom frame)", "deflection [mm]", "mm", "tip_axial_m", 1e3,
@@ -115,7 +119,8 @@ std::vector<std::string> crane_chart_names(const scene::Scene& scene) {
   for (const Chart& c : charts) {
     const bool applies = c.needs == Needs::boom || (c.needs == Needs::hull && scene.hull) ||
                          (c.needs == Needs::cargo && scene.cargo) || (c.needs == Needs::wire && scene.wire) ||
-                         (c.needs == Needs::luffing && scene.luffing && scene.boom.mount && scene.boom.mount->pinned);
+                         (c.needs == Needs::luffing && scene.luffing && scene.boom.mount && scene.boom.mount->pinned) ||
+                         (c.needs == Needs::a_frame && scene.a_frame && scene.luffing && scene.boom.mount && scene.boom.mount->pinned);
     if (applies) names.emplace_back(c.name);
   }
   return names;

@@ -38,15 +38,22 @@ std::string supported_table(const study::SupportedBoomModes& s) {
       "\nsupported boom: pinned at its heel on the held deck, on its luffing wires ({:.6g} kN together at rest),\n"
       "under its own weight, without the cargo; nodal N = {}, linearised about that equilibrium\n",
       s.luffing_tension / 1e3, s.elements);
-  out += fmt::format("{:>4}  {:<8} {:>16}  {:>10}  {:>10}  {:>20}  {:>8}\n", "mode", "kind", "f [Hz]", "boom strain",
+  if (s.a_frame) {
+    out += fmt::format("the A-frame rocks on its deck pin, held by its backstays ({:.6g} kN together at rest)\n",
+                       s.backstay_tension / 1e3);
+  }
+  out += fmt::format("{:>4}  {:<8} {:>16}  {:>10}  {:>10}  {:>20}  {:>8}", "mode", "kind", "f [Hz]", "boom strain",
                      "axial share", "f pinned-pinned [Hz]", "ratio");
+  out += s.a_frame ? fmt::format("  {:>10}\n", "A-frame") : "\n";
   for (std::size_t j = 0; j < s.modes.size(); ++j) {
     const study::SupportedBoomMode& m = s.modes[j];
     const bool bending = m.kind == study::SupportedBoomMode::Kind::bending;
-    out += fmt::format("{:>4}  {:<8} {:>16.10g}  {:>10.3f}  {:>10.3f}  {:>20}  {:>8}\n", j + 1, study::to_string(m.kind), m.hz,
+    out += fmt::format("{:>4}  {:<8} {:>16.10g}  {:>10.3f}  {:>10.3f}  {:>20}  {:>8}", j + 1, study::to_string(m.kind), m.hz,
                        m.strain_share, m.axial_share, bending ? fmt::format("{:.10g}", m.pinned_pinned_hz) : "-",
                        bending ? fmt::format("{:.4f}", m.hz / m.pinned_pinned_hz) : "-");
+    out += s.a_frame ? fmt::format("  {:>10.3f}\n", m.a_frame_share) : "\n";
   }
+  if (s.a_frame) out += "(A-frame: the share of the mode's kinetic energy in the A-frame's rocking; over half: an A-frame mode)\n";
   out += "(boom strain: the share of the mode's potential energy the boom's deformation stores, the wires and gravity the\n"
          " rest; swing: under half, the boom turning about its heel on the wires' spring; axial share: of its kinetic\n"
          " energy; pinned-pinned: the simply supported span's Euler-Bernoulli bending frequency, which the supported\n"
@@ -57,11 +64,13 @@ std::string supported_table(const study::SupportedBoomModes& s) {
 }  // namespace
 
 std::string supported_boom_csv(const study::SupportedBoomModes& s) {
-  std::string csv = "mode,kind,frequency_hz,boom_strain_energy_share,axial_energy_share,bending_order,pinned_pinned_frequency_hz\n";
+  std::string csv = "mode,kind,frequency_hz,boom_strain_energy_share,axial_energy_share,bending_order,pinned_pinned_frequency_hz";
+  csv += s.a_frame ? ",a_frame_energy_share\n" : "\n";
   for (std::size_t j = 0; j < s.modes.size(); ++j) {
     const study::SupportedBoomMode& m = s.modes[j];
-    csv += fmt::format("{},{},{:.10g},{:.6g},{:.6g},{},{:.10g}\n", j + 1, study::to_string(m.kind), m.hz, m.strain_share,
+    csv += fmt::format("{},{},{:.10g},{:.6g},{:.6g},{},{:.10g}", j + 1, study::to_string(m.kind), m.hz, m.strain_share,
                        m.axial_share, m.bending_order, m.pinned_pinned_hz);
+    csv += s.a_frame ? fmt::format(",{:.6g}\n", m.a_frame_share) : "\n";
   }
   return csv;
 }
@@ -137,12 +146,16 @@ std::string modes_json(const study::ModesResult& r, const ModesContext& context,
                            {"frequency_hz", m.hz},
                            {"boom_strain_energy_share", m.strain_share},
                            {"axial_energy_share", m.axial_share},
+                           {"a_frame_energy_share", m.a_frame_share},
                            {"bending_order", m.bending_order},
                            {"pinned_pinned_frequency_hz", bending ? Json(m.pinned_pinned_hz) : Json(nullptr)}});
     }
     json["supported_boom"] = Json{{"elements", r.supported->elements},
                                   {"luffing_tension_N", r.supported->luffing_tension},
-                                  {"support", "pinned heel on the held deck, luffing wires, own weight, no cargo"},
+                                  {"backstay_tension_N", r.supported->backstay_tension},
+                                  {"support", r.supported->a_frame ? "pinned heel on the held deck, luffing wires to the A-frame on "
+                                                                     "its deck pin and backstays, own weight, no cargo"
+                                                                   : "pinned heel on the held deck, luffing wires, own weight, no cargo"},
                                   {"modes", std::move(modes)}};
   }
   if (!convergence.empty()) {

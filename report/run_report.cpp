@@ -87,6 +87,10 @@ std::string static_report(const scene::Scene& scene, const scene::BoomChoice& ch
     text += fmt::format("  wire      stretch {:.5f} m, tension {:.6g} N\n", o.wire_length - scene.wire->unstretched_length,
                         o.wire_tension);
   }
+  if (scene.a_frame) {
+    text += fmt::format("  A-frame   rotation {:+.6f} deg on its deck pin; luffing wires {:.6g} N, backstays {:.6g} N\n",
+                        o.a_frame_rotation * degrees, o.luffing_tension, o.backstay_tension);
+  }
   text += fmt::format("  joint B   Fx {:.6g} N, Fy {:.6g} N, M {:.6g} N m (on the boom)\n", o.joint_reaction.x(),
                       o.joint_reaction.y(), o.joint_reaction.z());
   const double euler = study::monitor_limits(scene).buckling_load;

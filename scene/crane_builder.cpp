@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "scene/irregular_sea.hpp"
+#include "scene/a_frame.hpp"
 #include "scene/luffing_wires.hpp"
 #include "scene/bem_hull_model.hpp"
 #include "scene/scene_key.hpp"
@@ -98,11 +99,12 @@ multibody::HullModel floating_hull(const Scene& scene) {
   const Environment& env = scene.environment;
   const double g = env.gravity, rho = env.water_density;
   const double boom_mass = scene.boom.mesh.total_mass();
-  const double displaced_mass = hull.mass + boom_mass + cargo.mass;
+  const double a_frame_mass = scene.a_frame ? scene.a_frame->mass : 0.0;  // (an A-frame rigid with the hull is in hull.mass)
+  const double displaced_mass = hull.mass + boom_mass + cargo.mass + a_frame_mass;
   const double capacity = rho * hull.length * hull.width * hull.depth;
   if (displaced_mass >= capacity) {
     scene_problem(scene, scene_key("hull.mass"), std::to_string(hull.mass),
-                  "the hull would sink: hull + boom + cargo = " + std::to_string(displaced_mass / 1e3) +
+                  "the hull would sink: hull + boom + cargo (+ A-frame) = " + std::to_string(displaced_mass / 1e3) +
                       " t exceeds the buoyancy of the whole box ρ·L·B·D = " + std::to_string(capacity / 1e3) +
                       " t; reduce the masses or enlarge hull.length/width/depth");
   }
@@ -116,12 +118,14 @@ multibody::HullModel floating_hull(const Scene& scene) {
   h.added_mass = {rad.surge_added_mass * displaced_mass, rad.heave_added_mass * displaced_mass,
                   rad.pitch_added_inertia * h.pitch_inertia};
   const double draft = displaced_mass / (rho * hull.length * hull.width);
-  // Centre of gravity of hull + boom + hanging cargo above the keel (undeformed, even keel).
+  // Centre of gravity of hull + boom + hanging cargo (+ an A-frame on its pin, its centre halfway up)
+  // above the keel (undeformed, even keel).
   const BoomMount& mount = *scene.boom.mount;
   const double boom_cg = mount.root_y + 0.5 * scene.boom.mesh.length * std::sin(mount.angle);
   const double cargo_cg = mount.root_y + scene.boom.mesh.length * std::sin(mount.angle) - wire.unstretched_length - cargo.hook_y;
+  const double a_frame_cg = scene.a_frame ? 0.5 * (scene.a_frame->pin_y + scene.luffing->a_frame_y) : 0.0;
   const double center_of_gravity_above_keel =
-      hull.g1_above_keel + (boom_mass * boom_cg + cargo.mass * cargo_cg) / displaced_mass;
+      hull.g1_above_keel + (boom_mass * boom_cg + cargo.mass * cargo_cg + a_frame_mass * a_frame_cg) / displaced_mass;
   const Eigen::Vector2d hydrostatic =
       sea::box_hydrostatic_stiffness(h.section, rho, g, displaced_mass / rho, center_of_gravity_above_keel);
   h.mooring_stiffness = scene.mooring.surge_stiffness;
@@ -201,10 +205,39 @@ std::shared_ptr<const multibody::CraneModel> with_waters(const multibody::CraneM
   return model.in_waters(waters.hull, waters.wave);
 }
 
-// A pinned heel and its luffing wires (scene/luffing_wires.hpp), each a rope from the A-frame top on
-// the hull to the boom point; their damping is the scene's fraction of critical for the boom's
-// inertia about the heel, ρA L³/3, on the wires' rotational stiffness n k lever².
+// A pinned heel and its luffing wires (scene/luffing_wires.hpp), each a rope from the A-frame top —
+// on the hull, or on the A-frame pinned to the deck with its backstays (scene/a_frame.hpp) — to the
+// boom point; their damping is the scene's fraction of critical for the boom's inertia about the heel,
+// ρA L³/3, on the wires' rotational stiffness n k lever².
 namespace {
+
+// The A-frame as a rigid body pinned to the hull at its foot (its body frame at its centre of mass, x
+// from the pin to the top) and its backstays from the top to the deck point; returns the top's point
+// on it for the luffing wires.
+template <fem::ElasticCoordinates Coords>
+multibody::BodyAttachment add_a_frame(const Scene& scene, multibody::CraneParameters<Coords>& model) {
+  const AFrameGeometry geometry = a_frame_geometry(scene);
+  const Backstay& backstay = *scene.backstay;
+  model.a_frame = static_cast<int>(model.bodies.size());
+  const Eigen::Vector2d half(0.5 * geometry.height, 0.0);  // the top from the centre, body frame (the pin at −half)
+  model.bodies.push_back({.name = "A-frame",
+                          .mass = scene.a_frame->mass,
+                          .rotary_inertia = geometry.rotary_inertia,
+                          .mount = multibody::RigidMount::pinned_to_hull,
+                          .pivot_on_hull = geometry.pin,
+                          .pivot_on_body = -half,
+                          .angle = geometry.angle});
+  const multibody::BodyAttachment top = multibody::on_rigid_body(model.a_frame, half);
+  for (int i = 0; i < backstay.wires; ++i) {
+    model.wires.push_back({backstay.wires == 1 ? "backstay" : "backstay " + std::to_string(i + 1),
+                           {geometry.backstay_unstretched_length, backstay.stiffness, geometry.backstay_damping},
+                           top,
+                           multibody::on_hull(geometry.deck),
+                           1,
+                           multibody::WireRole::backstay});
+  }
+  return top;
+}
 
 template <fem::ElasticCoordinates Coords>
 void add_luffing_wires(const Scene& scene, multibody::CraneParameters<Coords>& model) {
@@ -217,14 +250,14 @@ void add_luffing_wires(const Scene& scene, multibody::CraneParameters<Coords>& m
   const double tackle = tackle_stiffness(luffing);
   const double rotational_stiffness = luffing.wires * tackle * lever_squared;
   const double damping = luffing.damping_ratio * 2.0 * std::sqrt(rotational_stiffness * heel_inertia) / (luffing.wires * lever_squared);
-  multibody::BodyPoint a_frame;
-  a_frame.undeformed = geometry.a_frame;
+  const multibody::BodyAttachment a_frame_top = scene.a_frame ? add_a_frame(scene, model) : multibody::on_hull(geometry.a_frame);
   for (int i = 0; i < luffing.wires; ++i) {
     model.wires.push_back({luffing.wires == 1 ? "luffing wire" : "luffing wire " + std::to_string(i + 1),
                            {geometry.unstretched_length, tackle, damping},
-                           {multibody::Body::boom, model.boom.point(geometry.attachment)},
-                           {multibody::Body::hull, a_frame},
-                           luffing.parts});
+                           multibody::on_boom(model.boom.point(geometry.attachment)),
+                           a_frame_top,
+                           luffing.parts,
+                           multibody::WireRole::luffing});
   }
 }
 
@@ -284,31 +317,25 @@ multibody::CraneParameters<Coords> build_crane_parameters(const Scene& scene, Co
   multibody::BodyPoint tip = boom.point(scene.boom.mesh.length);
   const BoomMount& mount = *scene.boom.mount;
   SceneWaters waters = scene_waters(scene);
-  multibody::CraneParameters<Coords> model{std::move(waters.hull),
-                                           {Eigen::Vector2d(mount.root_x, mount.root_y), mount.angle},
-                                           std::move(boom),
-                                           tip,
-                                           {},
-                                           {},
-                                           -1,
-                                           env.gravity,
-                                           env.water_density,
-                                           std::move(waters.wave),
-                                           nullptr};  // (the stresses' recovery, set below)
+  multibody::CraneParameters<Coords> model{.hull = std::move(waters.hull),
+                                           .mount = {Eigen::Vector2d(mount.root_x, mount.root_y), mount.angle},
+                                           .boom = std::move(boom),
+                                           .boom_tip = tip,
+                                           .gravity = env.gravity,
+                                           .water_density = env.water_density,
+                                           .wave = std::move(waters.wave)};  // (the stresses' recovery, set below)
   if (scene.cargo && scene.wire) {
     const Cargo& cargo = *scene.cargo;
     const Wire& wire = *scene.wire;
-    model.cargo = {true, cargo.mass, cargo.pitch_inertia(), Eigen::Vector2d(cargo.hook_x, cargo.hook_y)};
-    multibody::BodyPoint hook;
-    hook.undeformed = model.cargo.hook;
+    model.cargo = static_cast<int>(model.bodies.size());
+    model.bodies.push_back({.name = "cargo", .mass = cargo.mass, .rotary_inertia = cargo.pitch_inertia()});
     model.hoist_wire = static_cast<int>(model.wires.size());
     model.wires.push_back({"hoist wire",
                            {wire.unstretched_length, wire.stiffness, wire.damping_ratio * critical_damping(cargo.mass, wire.stiffness)},
-                           {multibody::Body::boom, std::move(tip)},
-                           {multibody::Body::cargo, std::move(hook)},
-                           1});
-  } else {
-    model.cargo.present = false;
+                           multibody::on_boom(std::move(tip)),
+                           multibody::on_rigid_body(model.cargo, Eigen::Vector2d(cargo.hook_x, cargo.hook_y)),
+                           1,
+                           multibody::WireRole::hoist});
   }
   if (mount.pinned) add_luffing_wires(scene, model);
   model.stress = boom_stress_model(scene, model, stress_recovery, stiffening);

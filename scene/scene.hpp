@@ -40,6 +40,21 @@ struct Luffing {
   int parts = 1;  // parts of line in each wire's tackle: the tackle is `parts` times as stiff as one part
 };
 
+// The A-frame as a rigid body pinned to the deck ([a_frame]), its top the luffing wires' far end
+// (luffing.a_frame_x, luffing.a_frame_y), and the backstays that hold it ([backstay]).
+struct AFrame {
+  double pin_x, pin_y;                        // its foot pin relative to G1, hull frame [m]
+  double mass;                                // [kg]
+  std::optional<double> radius_of_gyration;  // about its centre of mass [m] (empty: |top − pin|/√12)
+};
+struct Backstay {
+  double deck_x, deck_y;  // the deck point relative to G1, hull frame [m]
+  double stiffness;       // each wire's [N/m]
+  int wires = 1;
+  std::optional<double> unstretched_length;  // each wire [m] (empty: holds the A-frame at rest)
+  double damping_ratio = 0.0;
+};
+
 // Geometric (stress) stiffening of the boom (docs/theory.md, "Geometric stiffening").
 enum class Stiffening { none, static_load, centrifugal, both };
 std::string_view to_string(Stiffening stiffening);                  // "none", "static", "centrifugal", "both"
@@ -225,6 +240,8 @@ struct Scene {
   std::optional<Cargo> cargo;
   std::optional<Wire> wire;
   std::optional<Luffing> luffing;  // with a pinned heel
+  std::optional<AFrame> a_frame;    // with [luffing]: the A-frame pinned to the deck (empty: rigid with the hull)
+  std::optional<Backstay> backstay;  // with [a_frame]
   Environment environment;
   std::optional<Wave> wave;  // the regular wave; empty: calm water or an irregular sea
   std::optional<IrregularSea> sea;  // an irregular sea (excludes wave)

@@ -83,6 +83,21 @@ Scene build_scene(const WrittenKeys& keys, const std::string& file, const SceneP
       luffing.parts = static_cast<int>(keys.number(scene_key("luffing.parts")));
       scene.luffing = luffing;
     }
+    if (keys.has(scene_key("a_frame.pin_x"))) {
+      AFrame a_frame{keys.number(scene_key("a_frame.pin_x")), keys.number(scene_key("a_frame.pin_y")),
+                     keys.number(scene_key("a_frame.mass")), std::nullopt};
+      if (keys.has(scene_key("a_frame.radius_of_gyration"))) a_frame.radius_of_gyration = keys.number(scene_key("a_frame.radius_of_gyration"));
+      scene.a_frame = a_frame;
+    }
+    if (keys.has(scene_key("backstay.deck_x"))) {
+      Backstay backstay{keys.number(scene_key("backstay.deck_x")), keys.number(scene_key("backstay.deck_y")),
+                        keys.number(scene_key("backstay.stiffness")), static_cast<int>(keys.number(scene_key("backstay.wires"))),
+                        std::nullopt, keys.number(scene_key("backstay.damping_ratio"))};
+      if (keys.has(scene_key("backstay.unstretched_length"))) {
+        backstay.unstretched_length = keys.number(scene_key("backstay.unstretched_length"));
+      }
+      scene.backstay = backstay;
+    }
     scene.hull = Hull{keys.number(scene_key("hull.mass")),          keys.number(scene_key("hull.pitch_radius_of_gyration")),
                       keys.number(scene_key("hull.length")),        keys.number(scene_key("hull.width")),
                       keys.number(scene_key("hull.depth")),         keys.number(scene_key("hull.g1_above_keel")),

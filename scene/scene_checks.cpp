@@ -1,6 +1,7 @@
 // Cross-key physics checks of a scene (see scene_checks.hpp for the list and the references).
 #include "scene/scene_checks.hpp"
 
+#include "scene/a_frame.hpp"
 #include "scene/luffing_wires.hpp"
 
 #include <algorithm>
@@ -117,7 +118,7 @@ void check_hydrostatics(const Scene& scene, Findings& found) {
   const Cargo& cargo = *scene.cargo;
   const double rho = scene.environment.water_density;
   const double boom_mass = scene.boom.mesh.total_mass();
-  const double total = hull.mass + boom_mass + cargo.mass;
+  const double total = hull.mass + boom_mass + cargo.mass + (scene.a_frame ? scene.a_frame->mass : 0.0);
   const double capacity = rho * hull.length * hull.width * hull.depth;
   if (total >= capacity) {
     found.error({scene_key("hull.mass"), scene_key("boom.mass_per_length"), scene_key("cargo.mass"), scene_key("hull.length"), scene_key("hull.width"), scene_key("hull.depth")},
@@ -267,22 +268,27 @@ RestingHydrostatics resting_hydrostatics(const Scene& scene) {
   const double rho = scene.environment.water_density, g = scene.environment.gravity;
   const double boom_length = scene.boom.mesh.length;
   const double boom_mass = scene.boom.mesh.total_mass();
+  // An A-frame pinned to the deck is a mass of its own, centred halfway up (rigid with the hull, it is in hull.mass).
+  const double a_frame_mass = scene.a_frame ? scene.a_frame->mass : 0.0;
+  const double a_frame_x = scene.a_frame ? 0.5 * (scene.a_frame->pin_x + scene.luffing->a_frame_x) : 0.0;
+  const double a_frame_y = scene.a_frame ? 0.5 * (scene.a_frame->pin_y + scene.luffing->a_frame_y) : 0.0;
   RestingHydrostatics rest;
-  rest.displacement = hull.mass + boom_mass + cargo.mass;
+  rest.displacement = hull.mass + boom_mass + cargo.mass + a_frame_mass;
   rest.draft = rest.displacement / (rho * hull.length * hull.width);
   // Heights above the keel (even keel); the cargo's weight acts at the boom tip it hangs from.
   const double sin_angle = std::sin(mount.angle), cos_angle = std::cos(mount.angle);
   const double root_height = hull.g1_above_keel + mount.root_y;
   const double tip_height = root_height + boom_length * sin_angle;
   const double centre_of_gravity = (hull.mass * hull.g1_above_keel +
-                                    boom_mass * (root_height + 0.5 * boom_length * sin_angle) + cargo.mass * tip_height) /
+                                    boom_mass * (root_height + 0.5 * boom_length * sin_angle) + cargo.mass * tip_height +
+                                    a_frame_mass * (hull.g1_above_keel + a_frame_y)) /
                                    rest.displacement;
   rest.metacentric_height = 0.5 * rest.draft + hull.length * hull.length / (12.0 * rest.draft) - centre_of_gravity;
   // Lever arms forward of mid-length (x = g1_aft_of_mid_length from G1).
   const double mid = hull.g1_aft_of_mid_length;
   const double tip_x = mount.root_x + boom_length * cos_angle;
   rest.load_moment = hull.mass * (0.0 - mid) + boom_mass * (mount.root_x + 0.5 * boom_length * cos_angle - mid) +
-                     cargo.mass * (tip_x - mid);
+                     cargo.mass * (tip_x - mid) + a_frame_mass * (a_frame_x - mid);
   if (rest.metacentric_height <= 0.0) return rest;
   rest.trim = rest.load_moment / (rest.displacement * rest.metacentric_height);
   rest.deck_sinkage = 0.5 * hull.length * std::abs(std::tan(std::clamp(rest.trim, -1.5, 1.5)));
@@ -314,7 +320,12 @@ std::vector<SceneFinding> physics_findings(const Scene& scene) {
     if (scene.wave) check_wave(scene, found);
     if (scene.sea) check_sea(scene, found);
     if (scene.luffing) {
-      for (SceneFinding& finding : luffing_findings(scene)) {
+      std::vector<SceneFinding> findings = luffing_findings(scene);
+      const bool luffing_holds = std::none_of(findings.begin(), findings.end(), [](const SceneFinding& f) { return f.error; });
+      if (luffing_holds && scene.a_frame && scene.backstay) {
+        for (SceneFinding& finding : a_frame_findings(scene)) findings.push_back(std::move(finding));
+      }
+      for (SceneFinding& finding : findings) {
         if (finding.error) {
           found.error(std::move(finding.keys), std::move(finding.message));
         } else {

@@ -228,6 +228,19 @@ class SceneReader final : public WrittenKeys {
       report(line_of(*sections_.at("luffing")), "luffing", "",
              "luffing wires hold a pinned boom: set boom.heel = \"pinned\" (a clamped boom needs none)");
     }
+    // An A-frame on its deck pin holds the luffing wires' end, and the backstays hold it.
+    if (sections_.contains("a_frame") && !sections_.contains("luffing")) {
+      report(line_of(*sections_.at("a_frame")), "a_frame", "",
+             "an A-frame on its deck pin holds the luffing wires of a pinned boom: give [luffing] (and boom.heel = \"pinned\"), "
+             "or leave [a_frame] out");
+    } else if (sections_.contains("a_frame") && !sections_.contains("backstay")) {
+      report(line_of(*sections_.at("a_frame")), "a_frame", "",
+             "an A-frame pinned to the deck needs the [backstay] wires that hold it (backstay.deck_x, backstay.deck_y, "
+             "backstay.stiffness); without [a_frame] the A-frame is rigid with the hull");
+    } else if (!sections_.contains("a_frame") && sections_.contains("backstay")) {
+      report(line_of(*sections_.at("backstay")), "backstay", "",
+             "backstays hold an A-frame pinned to the deck: give [a_frame] (pin_x, pin_y, mass), or leave [backstay] out");
+    }
     if (hub_) {
       for (const char* key : {scene_key("boom.angle"), scene_key("boom.root_x"), scene_key("boom.root_y")}) {
         if (present_.contains(key)) {

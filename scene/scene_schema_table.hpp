@@ -84,6 +84,14 @@ inline constexpr std::array kSections{
                 "Luffing wires of a boom pinned at its heel (boom.heel = \"pinned\"): tension-only elastic ropes from the "
                 "top of the A-frame, a point fixed on the hull, to a point on the boom (its tip by default). They hold "
                 "the boom up; the boom's angle at rest follows from their stretch. Only with a pinned heel."},
+    SectionSpec{"a_frame", SectionRole::optional,
+                "The A-frame as a rigid body pinned to the deck at its foot and held by the [backstay] wires, instead of "
+                "rigid with the hull: the luffing wires pull its top (luffing.a_frame_x, luffing.a_frame_y) towards the "
+                "boom, the backstays towards the deck aft, and it rocks on its pin between them. Its mass sits halfway "
+                "between the pin and the top (a frame of uniform legs). Only with [luffing]; needs [backstay]."},
+    SectionSpec{"backstay", SectionRole::optional,
+                "Backstay wires from the A-frame's top to a deck point: tension-only elastic ropes that hold the "
+                "[a_frame] against the luffing wires' pull. Only with [a_frame]."},
     SectionSpec{"environment", SectionRole::optional, "Sea water and gravity."},
     SectionSpec{"wave", SectionRole::optional,
                 "Waves, ramped in over the first periods: a regular Airy wave (`spectrum = \"regular\"`, height and "
@@ -221,6 +229,29 @@ inline constexpr std::array kKeys{
     defaulted("luffing.damping_ratio", ratio, kFraction, 0.0,
               "Axial damping of each wire as a fraction of critical for the boom's inertia about its heel on the "
               "wires' rotational stiffness."),
+    // [a_frame]
+    required("a_frame.pin_x", length, between(-1000.0, 1000.0),
+             "x of the A-frame's foot pin on the deck relative to G1, hull frame."),
+    required("a_frame.pin_y", length, between(-1000.0, 1000.0),
+             "y of the A-frame's foot pin relative to G1, hull frame; below the A-frame top."),
+    required("a_frame.mass", mass, between(1.0, 1e8),
+             "Mass of the A-frame, besides hull.mass (an A-frame rigid with the hull, without [a_frame], is part of hull.mass).", "t"),
+    optional("a_frame.radius_of_gyration", length, between(0.001, 500.0),
+             "Radius of gyration of the A-frame about its centre of mass, for its rotation in the plane. Default: a "
+             "uniform bar's from the pin to the top, |top − pin|/√12."),
+    // [backstay]
+    required("backstay.deck_x", length, between(-1000.0, 1000.0),
+             "x of the backstays' deck point relative to G1, hull frame; on the side of the A-frame away from the boom."),
+    required("backstay.deck_y", length, between(-1000.0, 1000.0), "y of the backstays' deck point relative to G1, hull frame."),
+    required("backstay.stiffness", stiffness, between(1.0, 1e12), "Axial stiffness EA/L of each backstay wire."),
+    integer("backstay.wires", between(1.0, 4.0), 1.0, "Number of parallel backstay wires, each of backstay.stiffness."),
+    optional("backstay.unstretched_length", length, between(0.01, 5000.0),
+             "Unstretched length of each backstay. Default: the length that holds the A-frame at its built pose against "
+             "the luffing wires' pull at rest (the rigid boom and the cargo at boom.angle on the level hull) and its own "
+             "weight."),
+    defaulted("backstay.damping_ratio", ratio, kFraction, 0.0,
+              "Axial damping of each backstay as a fraction of critical for the A-frame's inertia about its pin on the "
+              "backstays' rotational stiffness."),
     // [environment]
     defaulted("environment.water_density", density, between(800.0, 1500.0), 1025.0, "Sea-water density ρ."),
     defaulted("environment.gravity", acceleration, between(0.0, 30.0), 9.81,

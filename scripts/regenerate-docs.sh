@@ -71,6 +71,7 @@ example "$guide" check-bad "check bad_scene.toml"
 example "$guide" check-ok "check cases/paper_floating_crane.toml"
 example "$guide" modes-cantilever "modes cases/cantilever.toml --elements 64"
 example "$guide" modes-supported "modes cases/pinned_luffing_crane.toml"
+example "$guide" modes-a-frame "modes cases/a_frame_crane.toml" "sed -n '/^supported boom/,\$p'"
 example "$guide" modes-spin "modes cases/spin_up_beam.toml --spin 5 --modes 4"
 example "$guide" modes-campbell "modes cases/spin_up_beam.toml --spin-range 0:20:5" \
   "awk 'NR == 1 { print \"...\" } /^spin \\[rad\\/s\\]/ { table = 1 } table && NF'"

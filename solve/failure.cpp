@@ -17,6 +17,7 @@ std::string_view to_string(FailureKind kind) {
     case FailureKind::unstable_explicit: return "explicit instability";
     case FailureKind::wire_slack: return "wire slack";
     case FailureKind::luffing_slack: return "luffing wire slack";
+    case FailureKind::backstay_slack: return "backstay slack";
     case FailureKind::snap_load: return "snap load";
     case FailureKind::buckling: return "buckling";
     case FailureKind::capsize: return "capsize";
@@ -75,6 +76,9 @@ std::string_view remedy(FailureKind kind) {
       return "the boom lost its luffing support and swung on its heel pin: reduce the crane's motion or the load's "
              "release (a dropped or snatched load unloads the boom), or pretension the luffing wires more (stiffer or "
              "shorter wires)";
+    case FailureKind::backstay_slack:
+      return "the A-frame lost its backstay and swung forward on its deck pin: reduce the crane's motion or the load's "
+             "release, or pretension the backstays more (stiffer or shorter backstays, a deck point further aft)";
     case FailureKind::snap_load:
       return "check the wire and boom against the peak; the sampled peak is resolved to the output interval";
     case FailureKind::buckling:
@@ -113,6 +117,7 @@ std::vector<Adjustment> adjustments(FailureKind kind) {
     case FailureKind::mass_not_positive_definite:
     case FailureKind::wire_slack:
     case FailureKind::luffing_slack:
+    case FailureKind::backstay_slack:
     case FailureKind::snap_load:
     case FailureKind::capsize:
     case FailureKind::deck_submerged:

@@ -28,6 +28,7 @@ enum class FailureKind {
   unstable_explicit,           // an explicit step beyond the stability limit
   wire_slack,                  // the wire went slack
   luffing_slack,               // a luffing wire went slack: the boom hung on its heel pin alone
+  backstay_slack,              // a backstay went slack: the A-frame swung on its deck pin
   snap_load,                   // the wire snapped taut again after slack
   buckling,                    // compression near or beyond the boom's Euler load
   capsize,                     // the hull pitched past 90°
@@ -43,7 +44,7 @@ inline constexpr FailureKind all_failure_kinds[] = {
     FailureKind::divergence,     FailureKind::step_size_collapse, FailureKind::error_test_failures,
     FailureKind::newton_divergence, FailureKind::too_much_work,   FailureKind::constraint_drift,
     FailureKind::mass_not_positive_definite, FailureKind::unstable_explicit, FailureKind::wire_slack,
-    FailureKind::luffing_slack,
+    FailureKind::luffing_slack,  FailureKind::backstay_slack,
     FailureKind::snap_load,      FailureKind::buckling,           FailureKind::capsize,
     FailureKind::deck_submerged, FailureKind::cargo_in_water,     FailureKind::cargo_overturned,
     FailureKind::model_error,    FailureKind::setup,

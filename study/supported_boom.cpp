@@ -21,6 +21,7 @@ std::string_view to_string(SupportedBoomMode::Kind kind) {
     case SupportedBoomMode::Kind::swing: return "swing";
     case SupportedBoomMode::Kind::bending: return "bending";
     case SupportedBoomMode::Kind::axial: return "axial";
+    case SupportedBoomMode::Kind::a_frame: return "A-frame";
   }
   return "?";
 }
@@ -34,11 +35,7 @@ std::optional<SupportedBoomModes> supported_boom_modes(const scene::Scene& scene
   parameters.hull.fixed = true;
   parameters.hull.hydrostatics = false;
   parameters.hull.support_pose = Eigen::Vector3d::Zero();
-  parameters.cargo.present = false;
-  if (parameters.hoist_wire >= 0) {
-    parameters.wires.erase(parameters.wires.begin() + parameters.hoist_wire);
-    parameters.hoist_wire = -1;
-  }
+  multibody::remove_cargo(parameters);
   parameters.stress.reset();  // (no stresses sampled here)
   const std::unique_ptr<multibody::CraneEquations> equations = multibody::make_crane_equations(std::move(parameters));
   const multibody::StaticEquilibrium statics = multibody::solve_static_equilibrium(*equations, equations->initial_guess());
@@ -55,6 +52,14 @@ std::optional<SupportedBoomModes> supported_boom_modes(const scene::Scene& scene
   SupportedBoomModes out;
   out.elements = elements;
   out.luffing_tension = statics.outputs.luffing_tension;
+  out.backstay_tension = statics.outputs.backstay_tension;
+  // The rocking coordinates of the bodies pinned to the deck (the A-frame): their kinetic energy is
+  // their inertia about the pin (the linearised mass's diagonal; nothing else moves with them) times γ̇².
+  std::vector<int> rocking;
+  for (const multibody::BodyBlock& block : equations->layout().bodies) {
+    if (block.pinned) rocking.push_back(block.minimal);
+  }
+  out.a_frame = !rocking.empty();
   const int heel = equations->heel_offset();
   const fem::BeamSection& section = scene.boom.mesh.section;
   const double length = scene.boom.mesh.length;
@@ -78,10 +83,14 @@ std::optional<SupportedBoomModes> supported_boom_modes(const scene::Scene& scene
     Eigen::VectorXd field = elastic;
     if (heel >= 0) field += shape(heel) * rotation;
     const Eigen::VectorXd field_momentum = beam_mass * field;
-    const double kinetic = field.dot(field_momentum), omega = 2.0 * std::numbers::pi * mode.hz;
+    double rocking_kinetic = 0.0;
+    for (const int at : rocking) rocking_kinetic += shape(at) * shape(at) * linear.mass(at, at);
+    const double kinetic = field.dot(field_momentum) + rocking_kinetic, omega = 2.0 * std::numbers::pi * mode.hz;
+    mode.a_frame_share = rocking_kinetic / kinetic;
     mode.strain_share = omega > 0.0 ? std::min(elastic.dot(beam_stiffness * elastic) / (omega * omega * kinetic), 1.0) : 0.0;
     mode.axial_share = axial_part.cwiseProduct(field).dot(field_momentum) / kinetic;
-    mode.kind = mode.strain_share < 0.5 ? SupportedBoomMode::Kind::swing
+    mode.kind = mode.a_frame_share > 0.5  ? SupportedBoomMode::Kind::a_frame
+                : mode.strain_share < 0.5 ? SupportedBoomMode::Kind::swing
                 : mode.axial_share > 0.5 ? SupportedBoomMode::Kind::axial : SupportedBoomMode::Kind::bending;
     if (mode.kind == SupportedBoomMode::Kind::bending) {
       mode.bending_order = ++order;

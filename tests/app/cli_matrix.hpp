@@ -1,5 +1,6 @@
 // The command-line matrix: every command that takes --out, run on each kind of shipped scene (a
-// floating crane, a hub, a hull with BEM coefficients, an irregular sea) with each boom kind where the
+// floating crane, a hub, a hull with BEM coefficients, an irregular sea, a pinned boom on luffing wires,
+// and on an A-frame held by backstays) with each boom kind where the
 // command takes one, must exit 0 and leave a complete output directory. "Complete" is checked against
 // what the command itself says it wrote, not against a list kept here:
 //   * every file is non-empty, and nothing of a staging directory is left beside the target;
@@ -25,7 +26,7 @@
 namespace ffrf::test {
 
 struct MatrixScene {
-  const char* kind;  // "crane", "hub", "bem", "irregular"
+  const char* kind;  // "crane", "hub", "bem", "irregular", "pinned", "a_frame"
   const char* file;  // under cases/
 };
 
@@ -34,7 +35,8 @@ inline const std::vector<MatrixScene>& matrix_scenes() {
                                                {"hub", "spin_up_beam.toml"},
                                                {"bem", "bem_barge_crane.toml"},
                                                {"irregular", "irregular_sea_crane.toml"},
-                                               {"pinned", "pinned_luffing_crane.toml"}};
+                                               {"pinned", "pinned_luffing_crane.toml"},
+                                               {"a_frame", "a_frame_crane.toml"}};
   return scenes;
 }
 

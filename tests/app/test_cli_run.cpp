@@ -16,7 +16,7 @@ const char* const kCharts[] = {"crane_heave",    "crane_pitch", "cargo_heave", "
                                "wire_tension",   "tip_transverse", "tip_axial", "boom_stress"};
 const char* const kHeader =
     "time_s,crane_surge_m,crane_heave_m,crane_pitch_deg,cargo_surge_m,cargo_heave_m,cargo_pitch_deg,tip_axial_m,"
-    "tip_transverse_m,wire_tension_N,luffing_tension_N,luffing_line_pull_N,joint_force_x_N,joint_force_y_N,joint_moment_Nm,boom_peak_stress_MPa,"
+    "tip_transverse_m,wire_tension_N,luffing_tension_N,luffing_line_pull_N,backstay_tension_N,a_frame_rotation_deg,joint_force_x_N,joint_force_y_N,joint_moment_Nm,boom_peak_stress_MPa,"
     "boom_peak_stress_x_m,boom_stress_utilisation,constraint_residual_m,"
     "kinetic_energy_J,gravity_energy_J,strain_energy_J,wire_energy_J,spring_energy_J";
 

@@ -56,7 +56,7 @@ TEST(OutputChannels, NamesAndColumnsAreUniqueAndColumnsCarryTheirUnit) {
     EXPECT_EQ(megapascal, spec.si_unit == "Pa") << spec.name;
     EXPECT_DOUBLE_EQ(spec.display_scale, angle ? 180.0 / std::numbers::pi : megapascal ? 1e-6 : 1.0) << spec.name;
   }
-  EXPECT_EQ(output_channels().size(), 23u);
+  EXPECT_EQ(output_channels().size(), 25u);
 }
 
 TEST(OutputChannels, EveryJudgedOutputIsARowReadingItsField) {

@@ -18,9 +18,7 @@ std::unique_ptr<multibody::CraneEquations> held_boom(Parameters model, const Eig
   model.hull.fixed = true;
   model.hull.hydrostatics = false;
   model.hull.support_pose = pose;
-  model.cargo.present = false;
-  model.wires.erase(model.wires.begin() + model.hoist_wire);
-  model.hoist_wire = -1;
+  multibody::remove_cargo(model);
   return multibody::make_crane_equations(std::move(model));
 }
 

@@ -141,7 +141,10 @@ class ThrowingEquations final : public multibody::CraneEquations {
   std::string wire_name(int wire) const override { return inner_.wire_name(wire); }
   void wire_stretches_minimal(double t, ConstRef z, Ref stretch) override { inner_.wire_stretches_minimal(t, z, stretch); }
   void wire_stretches_full(double t, ConstRef q, Ref stretch) override { inner_.wire_stretches_full(t, q, stretch); }
-  int cargo_offset() const override { return inner_.cargo_offset(); }
+  multibody::WireRole wire_role(int wire) const override { return inner_.wire_role(wire); }
+  const multibody::CraneLayout& layout() const override { return inner_.layout(); }
+  std::string body_name(int body) const override { return inner_.body_name(body); }
+  int cargo_body() const override { return inner_.cargo_body(); }
   int elastic_size() const override { return inner_.elastic_size(); }
 
  private:
