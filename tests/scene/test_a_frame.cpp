@@ -18,6 +18,7 @@
 
 #include "../multibody/a_frame_reference.hpp"
 #include "held_boom.hpp"
+#include "slack_detections.hpp"
 #include "multibody/crane_model.hpp"
 #include "multibody/crane_run.hpp"
 #include "multibody/crane_statics.hpp"
@@ -209,20 +210,26 @@ TEST(AFrame, TheSagUnderItsWeightMatchesTheIndependentFrameModel) {
               sag.a_frame_rotation, statics.outputs.luffing_tension, luffing);
 }
 
-// Runs the shipped A-frame crane in calm water from its static equilibrium with the cargo raised by
-// `lift` and released, undamped when `damped` is false, in minimal or full coordinates.
+// A run of `duration` s sampled every 0.01 s with `kind` at rtol = atol = `tolerance`.
+multibody::RunSettings run_settings(const scene::Scene& scene, solve::Integrator kind, double duration, double tolerance) {
+  multibody::RunSettings settings;
+  settings.kind = kind;
+  settings.relative_tolerance = tolerance;
+  settings.absolute_tolerance = tolerance;
+  settings.duration = duration;
+  settings.output_interval = 0.01;
+  settings.monitor.boom_length = scene.boom.mesh.length;
+  return settings;
+}
+
+// Runs the scene's crane (nodal N = 4) from its static equilibrium with the cargo raised by `lift` and
+// released, with `kind` (CVODE: minimal coordinates; IDA: full ones).
 multibody::RunResult released_cargo(const scene::Scene& scene, double lift, solve::Integrator kind, double duration) {
   auto equations = scene::build_crane_equations(scene, {scene::BoomKind::nodal, 4});
   const multibody::StaticEquilibrium statics = multibody::solve_static_equilibrium(*equations, equations->initial_guess());
   Eigen::VectorXd z0 = statics.z;
   z0(equations->cargo_offset() + 1) += lift;
-  multibody::RunSettings settings;
-  settings.kind = kind;
-  settings.relative_tolerance = 1e-9;
-  settings.absolute_tolerance = 1e-9;
-  settings.duration = duration;
-  settings.output_interval = 0.01;
-  settings.monitor.boom_length = scene.boom.mesh.length;
+  multibody::RunSettings settings = run_settings(scene, kind, duration, 1e-9);
   settings.monitor.wire_unstretched_length = scene.wire->unstretched_length;
   settings.monitor.static_tension = statics.outputs.wire_tension;
   return multibody::simulate(*equations, z0, settings);
@@ -276,14 +283,7 @@ TEST(AFrame, OnADrivenDeckMinimalAndFullCoordinatesGiveOneMotion) {
   for (const solve::Integrator kind : {solve::Integrator::cvode, solve::Integrator::ida}) {
     auto equations = model->equations();
     const multibody::StaticEquilibrium statics = multibody::solve_static_equilibrium(*equations, equations->initial_guess());
-    multibody::RunSettings settings;
-    settings.kind = kind;
-    settings.relative_tolerance = 1e-9;
-    settings.absolute_tolerance = 1e-9;
-    settings.duration = 5.0;
-    settings.output_interval = 0.01;
-    settings.monitor.boom_length = scene.boom.mesh.length;
-    runs.push_back(multibody::simulate(*equations, statics.z, settings));
+    runs.push_back(multibody::simulate(*equations, statics.z, run_settings(scene, kind, 5.0, 1e-9)));
   }
   const multibody::RunResult &minimal = runs[0], &full = runs[1];
   ASSERT_EQ(minimal.samples.size(), full.samples.size());
@@ -318,14 +318,7 @@ TEST(AFrame, TheEnergyIsConservedWithoutDamping) {
   Eigen::VectorXd z0 = statics.z;
   z0(equations->cargo_offset() + 1) += 0.2;  // (the wires stay taut)
   z0(equations->layout().bodies.at(1).minimal) += 1e-3;  // and the A-frame turned by a milliradian
-  multibody::RunSettings settings;
-  settings.kind = solve::Integrator::cvode;
-  settings.relative_tolerance = 1e-11;
-  settings.absolute_tolerance = 1e-11;
-  settings.duration = 5.0;
-  settings.output_interval = 0.01;
-  settings.monitor.boom_length = scene.boom.mesh.length;
-  const multibody::RunResult run = multibody::simulate(*equations, z0, settings);
+  const multibody::RunResult run = multibody::simulate(*equations, z0, run_settings(scene, solve::Integrator::cvode, 5.0, 1e-11));
   const auto total = [](const multibody::CraneOutputs& o) {
     return o.kinetic_energy + o.gravity_energy + o.strain_energy + o.wire_energy + o.spring_energy;
   };
@@ -347,14 +340,7 @@ TEST(AFrame, ADroppedLoadSlackensTheBackstaysAndTheRunNamesThem) {
   const multibody::RunResult run = released_cargo(calm(a_frame_scene()), 3.0, solve::Integrator::cvode, 8.0);
   ASSERT_EQ(run.wire_names.size(), 5u);  // the hoist wire, the two backstays, the two luffing wires
   EXPECT_FALSE(run.backstay_events.empty());
-  int named = 0;
-  for (const solve::Detection& detection : run.detections) {
-    if (detection.kind != solve::FailureKind::backstay_slack) continue;
-    ++named;
-    EXPECT_NE(detection.cause.find("backstay"), std::string::npos) << detection.cause;
-    EXPECT_NE(detection.cause.find("A-frame"), std::string::npos) << detection.cause;
-  }
-  EXPECT_EQ(named, 2) << "each backstay named";
+  EXPECT_EQ(test::named_detections(run, solve::FailureKind::backstay_slack, {"backstay", "A-frame"}), 2) << "each backstay named";
   double least = std::numeric_limits<double>::infinity();
   for (const multibody::CraneOutputs& sample : run.samples) least = std::min(least, sample.backstay_tension);
   EXPECT_EQ(least, 0.0);
