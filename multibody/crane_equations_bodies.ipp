@@ -90,9 +90,11 @@ void CraneEquationsOf<Coords, Articulated>::add_pinned_bodies(double t, const st
       }
       const Eigen::Vector3d inertia = body_inertia(body);
       load -= inertia.cwiseProduct(known);
-      pinned_mass_.noalias() += jacobian.transpose() * inertia.asDiagonal() * jacobian;
+      // (coefficient-wise products: these blocks are at most 6 × 3, and Eigen's blocked matrix product
+      // would be instantiated for them in this translation unit for nothing)
+      pinned_mass_.noalias() += (jacobian.transpose() * inertia.asDiagonal()).lazyProduct(jacobian);
     }
-    rigid.noalias() += jacobian.transpose() * load;
+    rigid.noalias() += jacobian.transpose().lazyProduct(load);
   }
 }
 

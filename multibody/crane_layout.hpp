@@ -22,7 +22,9 @@
 
 namespace ffrf::multibody {
 
-// Rigid block sizes the equations hold on the stack: the hull's 3, the heel's angle and two pinned bodies.
+// Rigid block sizes the equations hold on the stack: the hull's 3, the heel's angle and two pinned
+// bodies (in full coordinates the joints' rows, at most solve::max_constraints = 6, allow two pinned
+// bodies with a pinned heel, one with a clamped one: checked when the model is made).
 inline constexpr int max_rigid_block = 6;
 
 struct BodyBlock {

@@ -75,11 +75,16 @@ CraneModelOf<Coords>::CraneModelOf(CraneParameters<Coords> crane)
   }
   if (model.cargo >= 0 && model.bodies[model.cargo].pinned()) throw std::invalid_argument("the cargo hangs free: it is not pinned to the hull");
   for (const RigidBodyModel& body : model.bodies) {
-    const double inertia = body.pinned() ? body.inertia_about_pivot() : body.rotary_inertia;
-    if (!(body.mass > 0.0) || !(inertia > 0.0)) {
-      throw std::invalid_argument("the " + body.name + " needs a positive mass and rotary inertia (mass " + std::to_string(body.mass) +
-                                  " kg, rotary inertia " + std::to_string(inertia) + " kg m²)");
+    // (the full coordinates' mass is diag(m, m, I_G) per body: a pinned body needs I_G > 0 as well)
+    if (!(body.mass > 0.0) || !(body.rotary_inertia > 0.0)) {
+      throw std::invalid_argument("the " + body.name + " needs a positive mass and rotary inertia about its centre of mass (mass " +
+                                  std::to_string(body.mass) + " kg, rotary inertia " + std::to_string(body.rotary_inertia) + " kg m²)");
     }
+  }
+  if (layout.constraint_count() > solve::max_constraints) {
+    throw std::invalid_argument("the crane's joints make " + std::to_string(layout.constraint_count()) +
+                                " constraint rows in full coordinates; at most " + std::to_string(solve::max_constraints) +
+                                " are held (the heel's 3 for a clamp or 2 for a pin, and 2 per body pinned to the hull)");
   }
   for (const WireConnector& wire : model.wires) {
     for (const BodyAttachment* end : {&wire.from, &wire.to}) {

@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -152,6 +153,13 @@ void remove_cargo(Parameters& crane) {
   }
   if (crane.cargo < 0) return;
   const int removed = crane.cargo;
+  for (const WireConnector& wire : crane.wires) {
+    for (const BodyAttachment* end : {&wire.from, &wire.to}) {
+      if (end->body == Body::rigid && end->index == removed) {
+        throw std::invalid_argument("remove_cargo: the " + wire.name + " ends on the cargo besides its hoist wire");
+      }
+    }
+  }
   crane.bodies.erase(crane.bodies.begin() + removed);
   for (WireConnector& wire : crane.wires) {
     for (BodyAttachment* end : {&wire.from, &wire.to}) {

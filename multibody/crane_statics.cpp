@@ -26,12 +26,18 @@ StaticEquilibrium solve_static_equilibrium(CraneEquations& equations, const Eige
   if (result.z.size() > 0) equations.wire_stretches_minimal(0.0, result.z, stretch);
   for (int wire = 0; wire < stretch.size(); ++wire) {
     if (stretch(wire) > 0.0) continue;
-    const bool hoist = wire == equations.hoist_wire();
+    const WireRole role = equations.wire_role(wire);
+    const bool hoist = role == WireRole::hoist;
+    const std::string remedy =
+        hoist ? "hang the cargo below the boom tip: check the wire's unstretched length and the hook position"
+        : role == WireRole::backstay
+            ? "shorten the " + equations.wire_name(wire) + " (backstay.unstretched_length, or leave it out to derive it) so that it "
+                                                           "holds the A-frame against the luffing wires"
+            : "shorten the " + equations.wire_name(wire) + " (luffing.unstretched_length, or leave it out to derive it) so that it "
+                                                           "holds the boom";
     throw solve::SolverFailure(solve::FailureKind::wire_slack, "KINSOL (static equilibrium)",
                                fmt::format("the {} is slack at rest (stretch {:.3g} m)", hoist ? "wire" : equations.wire_name(wire), stretch(wire)),
-                               0.0,
-                               hoist ? "hang the cargo below the boom tip: check the wire's unstretched length and the hook position"
-                                     : "shorten the " + equations.wire_name(wire) + " (its unstretched length) so that it holds the boom");
+                               0.0, remedy);
   }
   result.outputs = equations.minimal_outputs(0.0, result.z, rest);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -35,6 +35,11 @@ LinearisedCrane linearise_crane(CraneEquations& calm, const Eigen::VectorXd& equ
   linear.cargo_at = calm.cargo_offset();
   linear.elastic_at = n - calm.elastic_size();
   linear.hull_at = calm.layout().hull;
+  for (std::size_t body = 0; body < calm.layout().bodies.size(); ++body) {
+    if (!calm.layout().bodies[body].pinned) continue;
+    linear.pinned_at.push_back(calm.layout().bodies[body].minimal);
+    linear.pinned_names.push_back(calm.body_name(static_cast<int>(body)));
+  }
   SecondOrderJacobian blocks(calm.minimal_structure());
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(n);
   calm.minimal_jacobian(0.0, equilibrium, rest, rest, blocks);

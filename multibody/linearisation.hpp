@@ -32,6 +32,9 @@ struct LinearisedCrane {
   int hull_at = -1;             // index of the hull's (x, y, θ) in z; −1 when the hull is held
   int cargo_at = -1;            // index of the cargo's (x, y, θ); −1 without a cargo
   int elastic_at = 0;           // index of the elastic coordinates
+  // The angles of the bodies pinned to the hull (the A-frame's γ) and their bodies' names.
+  std::vector<int> pinned_at;
+  std::vector<std::string> pinned_names;
   int size() const { return static_cast<int>(equilibrium.size()); }
 };
 

@@ -26,8 +26,8 @@ struct RigidBodyOf {
   double mass = 0.0;                         // [kg]
   typename S::RotaryInertia rotary_inertia{};  // about G [kg m²]
   RigidMount mount = RigidMount::free;
-  // free: the pose (G, θ) a static solve starts from, relative to the base's pose at t = 0 (the cargo's
-  // guess is made from its hoist wire instead: multibody/crane_equations_minimal.ipp).
+  // free: the pose (G, θ) a static solve starts from, in the global frame (the cargo's guess is made
+  // from its hoist wire instead: multibody/crane_equations_minimal.ipp).
   typename S::Pose initial_pose = S::Pose::Zero();
   // pinned to the hull: the pivot on the hull (hull frame, from G1), the pivot in the body frame (from
   // G) and the body frame's angle relative to the hull's at γ = 0 [rad].

@@ -31,7 +31,7 @@ std::string statics_text(const std::string& scene_file, const scene::Scene& scen
   text += fmt::format("  boom      root moment {:.6g} N m, tip deflection {:.3f} % of the boom length\n", o.joint_reaction.z(),
                       100.0 * o.tip_deflection.norm() / scene.boom.mesh.length);
   const multibody::StaticSolvePath& path = result.path;
-  text += fmt::format("  balance   largest out-of-balance force {:.3g} N, moment {:.3g} N m (hull and cargo); scaled residual {:.2g}\n",
+  text += fmt::format("  balance   largest out-of-balance force {:.3g} N, moment {:.3g} N m (rigid bodies and joints); scaled residual {:.2g}\n",
                       path.max_force_residual, path.max_moment_residual, s.scaled_residual);
   text += fmt::format("  solver    {}, {} residual evaluations\n",
                       path.by_continuation() ? fmt::format("Newton from the rest pose failed; reached by continuation in the load "

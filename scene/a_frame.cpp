@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "scene/luffing_wires.hpp"
+#include "solve/second_order_system.hpp"
 #include "scene/scene_key.hpp"
 
 namespace ffrf::scene {
@@ -84,6 +85,22 @@ std::vector<SceneFinding> a_frame_findings(const Scene& scene) {
     return found;
   }
   const Backstay& backstay = *scene.backstay;
+  // Every wire is an event function of the solvers (solve::max_events of them): the hoist wire, the
+  // luffing wires and the backstays together.
+  const int wires = (scene.cargo ? 1 : 0) + scene.luffing->wires + backstay.wires;
+  if (wires > solve::max_events) {
+    error({scene_key("backstay.wires"), scene_key("luffing.wires")},
+          fmt::format("the crane would have {} wires (the hoist wire, {} luffing wires and {} backstays); at most {} are tracked "
+                      "(valid: luffing.wires + backstay.wires ≤ {}): fewer, stiffer wires",
+                      wires, scene.luffing->wires, backstay.wires, solve::max_events, solve::max_events - (scene.cargo ? 1 : 0)));
+    return found;
+  }
+  if (backstay.unstretched_length && *backstay.unstretched_length >= g.backstay_length) {
+    found.push_back({false, {scene_key("backstay.unstretched_length")},
+                     fmt::format("the backstays are slack at the A-frame's built pose (unstretched {:.4g} m, {:.4g} m from its top to "
+                                 "the deck point): the A-frame leans forward on its pin until they hold it",
+                                 *backstay.unstretched_length, g.backstay_length)});
+  }
   if (!backstay.unstretched_length && !(g.backstay_unstretched_length > 0.5 * g.backstay_length)) {
     error({scene_key("backstay.stiffness"), scene_key("backstay.wires")},
           fmt::format("the backstays are too soft to hold the A-frame: {:.4g} N of tension would stretch them by {:.3g} m of "

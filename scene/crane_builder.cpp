@@ -250,6 +250,9 @@ void add_luffing_wires(const Scene& scene, multibody::CraneParameters<Coords>& m
   const double tackle = tackle_stiffness(luffing);
   const double rotational_stiffness = luffing.wires * tackle * lever_squared;
   const double damping = luffing.damping_ratio * 2.0 * std::sqrt(rotational_stiffness * heel_inertia) / (luffing.wires * lever_squared);
+  if (scene.a_frame && !scene.backstay) {
+    scene_problem(scene, "a_frame", "", "an A-frame pinned to the deck needs the [backstay] wires that hold it");
+  }
   const multibody::BodyAttachment a_frame_top = scene.a_frame ? add_a_frame(scene, model) : multibody::on_hull(geometry.a_frame);
   for (int i = 0; i < luffing.wires; ++i) {
     model.wires.push_back({luffing.wires == 1 ? "luffing wire" : "luffing wire " + std::to_string(i + 1),

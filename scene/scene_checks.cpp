@@ -118,20 +118,26 @@ void check_hydrostatics(const Scene& scene, Findings& found) {
   const Cargo& cargo = *scene.cargo;
   const double rho = scene.environment.water_density;
   const double boom_mass = scene.boom.mesh.total_mass();
-  const double total = hull.mass + boom_mass + cargo.mass + (scene.a_frame ? scene.a_frame->mass : 0.0);
+  const double a_frame_mass = scene.a_frame ? scene.a_frame->mass : 0.0;  // (an A-frame rigid with the hull is in hull.mass)
+  const double total = hull.mass + boom_mass + cargo.mass + a_frame_mass;
   const double capacity = rho * hull.length * hull.width * hull.depth;
   if (total >= capacity) {
-    found.error({scene_key("hull.mass"), scene_key("boom.mass_per_length"), scene_key("cargo.mass"), scene_key("hull.length"), scene_key("hull.width"), scene_key("hull.depth")},
-                fmt::format("the loaded crane would sink: hull {:.6g} t + boom {:.6g} t + cargo {:.6g} t = {:.6g} t "
+    std::vector<std::string> keys{scene_key("hull.mass"), scene_key("boom.mass_per_length"), scene_key("cargo.mass")};
+    if (scene.a_frame) keys.push_back(scene_key("a_frame.mass"));
+    for (const char* key : {scene_key("hull.length"), scene_key("hull.width"), scene_key("hull.depth")}) keys.push_back(key);
+    found.error(std::move(keys),
+                fmt::format("the loaded crane would sink: hull {:.6g} t + boom {:.6g} t + cargo {:.6g} t{} = {:.6g} t "
                             "is not less than the buoyancy of the fully submerged hull ρ·L·B·D = {:.6g} t",
-                            hull.mass / 1e3, boom_mass / 1e3, cargo.mass / 1e3, total / 1e3, capacity / 1e3));
+                            hull.mass / 1e3, boom_mass / 1e3, cargo.mass / 1e3,
+                            scene.a_frame ? fmt::format(" + A-frame {:.6g} t", a_frame_mass / 1e3) : std::string(), total / 1e3,
+                            capacity / 1e3));
     return;
   }
-  if (hull.mass < 0.01 * (boom_mass + cargo.mass)) {
+  if (hull.mass < 0.01 * (boom_mass + cargo.mass + a_frame_mass)) {
     found.warning({scene_key("hull.mass"), scene_key("boom.mass_per_length"), scene_key("cargo.mass")},
-                  fmt::format("the hull ({:.6g} t) is lighter than 1 % of the boom and cargo it carries ({:.6g} t): a "
+                  fmt::format("the hull ({:.6g} t) is lighter than 1 % of the boom and cargo{} it carries ({:.6g} t): a "
                               "mass in t written as kg?",
-                              hull.mass / 1e3, (boom_mass + cargo.mass) / 1e3));
+                              hull.mass / 1e3, scene.a_frame ? " and A-frame" : "", (boom_mass + cargo.mass + a_frame_mass) / 1e3));
   }
   const RestingHydrostatics rest = resting_hydrostatics(scene);
   if (scene.environment.water_depth <= rest.draft) {

@@ -24,12 +24,16 @@ namespace {
 
 using multibody::LinearisedCrane;
 
-// The name of minimal coordinate j (the elastic ones are "boom").
+// The name of minimal coordinate j (the elastic ones and the heel's angle are "boom"; a body pinned
+// to the hull is its name, "A-frame").
 std::string coordinate_name(const LinearisedCrane& linear, int j) {
   static const char* const axes[] = {"surge", "heave", "pitch"};
   if (linear.hull_at >= 0 && j >= linear.hull_at && j < linear.hull_at + 3) return std::string("hull ") + axes[j - linear.hull_at];
   if (linear.cargo_at >= 0 && j >= linear.cargo_at && j < linear.cargo_at + 3) {
     return std::string("cargo ") + axes[j - linear.cargo_at];
+  }
+  for (std::size_t i = 0; i < linear.pinned_at.size(); ++i) {
+    if (j == linear.pinned_at[i]) return linear.pinned_names[i];
   }
   return "boom";
 }

@@ -17,6 +17,7 @@
 #include <regex>
 #include <string>
 
+#include "linalg/dense_solvers.hpp"
 #include "cli_harness.hpp"
 #include "fem/beam_model.hpp"
 #include "scene/scene_loader.hpp"

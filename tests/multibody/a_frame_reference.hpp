@@ -2,8 +2,8 @@
 // n_L wires from its tip to the top T of an A-frame; the A-frame a rigid body pinned on the deck at
 // its pivot P and held by n_B backstays from T to a deck point D; an optional point mass at the
 // tip.
-// The second method the crane's code is checked against: only Eigen and the standard library are
-// used — nothing of fem/, modal/ or multibody/ — and every formula is derived here from its
+// The second method the crane's code is checked against: only Eigen (its solvers compiled once in
+// linalg/) and the standard library are used — nothing of fem/, modal/ or multibody/ — and every formula is derived here from its
 // definition (energy, virtual work). Planar, SI, global = deck frame, x forward, y up, angles
 // counter-clockwise, gravity −y. Ĩ is the 90° rotation, Ĩ(x, y) = (−y, x); the planar cross
 // product a × b = a_x b_y − a_y b_x.
@@ -25,6 +25,9 @@
 #include <string>
 
 #include <Eigen/Dense>
+
+// Eigen's own dense eigen solvers, compiled once for the project (the same Eigen code, declared extern).
+#include "linalg/dense_solvers.hpp"
 
 namespace ffrf::test {
 
@@ -256,7 +259,7 @@ inline Eigen::Vector2d rigid_frequencies(const AFrameCrane& crane) {
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) A(i, j) = H(i, j) / std::sqrt(m(i) * m(j));
   }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(A);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver{Eigen::MatrixXd(A)};
   if (solver.info() != Eigen::Success || !(solver.eigenvalues()(0) > 0.0)) {
     throw std::runtime_error("a-frame crane (rigid): equilibrium not stable");
   }

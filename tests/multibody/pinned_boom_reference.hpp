@@ -1,6 +1,6 @@
 // Independent reference of a planar boom pinned at its heel and held by an elastic (luffing) wire:
-// the second method the crane's code is checked against. Only Eigen and the standard library are
-// used — nothing of fem/, modal/ or multibody/ — and every formula is written here from its
+// the second method the crane's code is checked against. Only Eigen (its solvers compiled once in
+// linalg/) and the standard library are used — nothing of fem/, modal/ or multibody/ — and every formula is written here from its
 // textbook definition.
 //
 // Model: linear small motion about the straight boom, boom frame x from heel to tip, y transverse.
@@ -25,6 +25,9 @@
 #include <vector>
 
 #include <Eigen/Dense>
+
+// Eigen's own dense eigen solvers, compiled once for the project (the same Eigen code, declared extern).
+#include "linalg/dense_solvers.hpp"
 
 namespace ffrf::test {
 

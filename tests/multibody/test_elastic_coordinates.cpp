@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 
+#include "linalg/dense_solvers.hpp"
 #include "modal/modal_coordinates.hpp"
 #include "nodal/nodal_coordinates.hpp"
 #include "../modal/cantilever_test_beam.hpp"

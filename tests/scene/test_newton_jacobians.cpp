@@ -168,25 +168,30 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"paper_floating_crane.toml",
                            {.kind = scene::BoomKind::nodal, .elements = 16, .stiffening = scene::Stiffening::static_load}, 7.0},
                       Case{"paper_floating_crane.toml", {.kind = scene::BoomKind::modal, .elements = 16, .modes = 2, .static_modes = true}, 31.0},
-                      Case{"spin_up_beam.toml", {.kind = scene::BoomKind::nodal, .elements = 10, .stiffening = scene::Stiffening::centrifugal}, 9.0}));
+                      Case{"spin_up_beam.toml", {.kind = scene::BoomKind::nodal, .elements = 10, .stiffening = scene::Stiffening::centrifugal}, 9.0},
+                      Case{"pinned_luffing_crane.toml", {.kind = scene::BoomKind::nodal, .elements = 4}, 31.0},
+                      Case{"a_frame_crane.toml", {.kind = scene::BoomKind::rigid}, 31.0},
+                      Case{"a_frame_crane.toml", {.kind = scene::BoomKind::nodal, .elements = 4}, 31.0},
+                      Case{"a_frame_crane.toml", {.kind = scene::BoomKind::modal, .elements = 16, .modes = 2, .static_modes = true}, 31.0}));
 
-// IDA's residual of the stabilized index-2 DAE (as solve/integrate_lagrange.cpp writes it).
+// IDA's residual of the stabilized index-2 DAE (as solve/integrate_lagrange.cpp writes it), over
+// y = (q, v, λ, μ) with m = constraint_count() multipliers each (the heel's and the pins' rows).
 Eigen::VectorXd dae_residual(CraneEquations& eq, double t, const Eigen::VectorXd& y, const Eigen::VectorXd& y_dot) {
-  const int n = eq.full_size();
+  const int n = eq.full_size(), m = eq.constraint_count();
   const auto q = y.head(n), v = y.segment(n, n);
-  const Eigen::Vector3d lambda = y.segment<3>(2 * n), mu = y.segment<3>(2 * n + 3);
+  const Eigen::VectorXd lambda = y.segment(2 * n, m), mu = y.segment(2 * n + m, m);
   Eigen::MatrixXd cq;
   eq.constraint_jacobian(q, cq);
-  Eigen::VectorXd r(2 * n + 6), forces(n), inertia(n);
+  Eigen::VectorXd r(2 * n + 2 * m), forces(n), inertia(n);
   eq.full_forces(t, q, v, forces);
   eq.full_mass_times(q, y_dot.segment(n, n), inertia);
   r.head(n) = y_dot.head(n) - v + cq.transpose() * mu;
   r.segment(n, n) = inertia - forces + cq.transpose() * lambda;
-  Eigen::Vector3d c, c_t;
+  solve::ConstraintVector c(m), c_t(m);
   eq.constraint(t, q, c);
   eq.constraint_time_derivative(t, c_t);
-  r.segment<3>(2 * n) = c;
-  r.tail<3>() = cq * v + c_t;
+  r.segment(2 * n, m) = c;
+  r.tail(m) = cq * v + c_t;
   return r;
 }
 
@@ -194,14 +199,14 @@ Eigen::VectorXd dae_residual(CraneEquations& eq, double t, const Eigen::VectorXd
 // full_jacobian and the constraint's second derivatives by central differences here).
 Eigen::MatrixXd assembled_index_two_matrix(CraneEquations& eq, double t, const Eigen::VectorXd& y, const Eigen::VectorXd& y_dot,
                                            double cj) {
-  const int n = eq.full_size(), total = 2 * n + 6;
+  const int n = eq.full_size(), m = eq.constraint_count(), total = 2 * n + 2 * m;
   SecondOrderJacobian blocks(eq.full_structure());
   eq.full_jacobian(t, y.head(n), y.segment(n, n), y_dot.segment(n, n), blocks);
   Eigen::MatrixXd cq, plus, minus;
   eq.constraint_jacobian(y.head(n), cq);
   const Eigen::VectorXd v = y.segment(n, n);
-  const Eigen::Vector3d lambda = y.segment<3>(2 * n), mu = y.segment<3>(2 * n + 3);
-  Eigen::MatrixXd h_lambda(n, n), h_mu(n, n), g_v(3, n);
+  const Eigen::VectorXd lambda = y.segment(2 * n, m), mu = y.segment(2 * n + m, m);
+  Eigen::MatrixXd h_lambda(n, n), h_mu(n, n), g_v(m, n);
   for (int j = 0; j < n; ++j) {
     const double h = 1e-5 * std::max(std::abs(y(j)), 1e-2);
     Eigen::VectorXd q = y.head(n);
@@ -217,13 +222,13 @@ Eigen::MatrixXd assembled_index_two_matrix(CraneEquations& eq, double t, const E
   Eigen::MatrixXd j = Eigen::MatrixXd::Zero(total, total);
   j.topLeftCorner(n, n) = cj * Eigen::MatrixXd::Identity(n, n) + h_mu;
   j.block(0, n, n, n) = -Eigen::MatrixXd::Identity(n, n);
-  j.block(0, 2 * n + 3, n, 3) = cq.transpose();
+  j.block(0, 2 * n + m, n, m) = cq.transpose();
   j.block(n, 0, n, n) = blocks.stiffness.dense() + h_lambda;
   j.block(n, n, n, n) = cj * blocks.mass.dense() + blocks.damping.dense();
-  j.block(n, 2 * n, n, 3) = cq.transpose();
-  j.block(2 * n, 0, 3, n) = cq;
-  j.block(2 * n + 3, 0, 3, n) = g_v;
-  j.block(2 * n + 3, n, 3, n) = cq;
+  j.block(n, 2 * n, n, m) = cq.transpose();
+  j.block(2 * n, 0, m, n) = cq;
+  j.block(2 * n + m, 0, m, n) = g_v;
+  j.block(2 * n + m, n, m, n) = cq;
   return j;
 }
 
@@ -235,15 +240,18 @@ Eigen::MatrixXd assembled_index_two_matrix(CraneEquations& eq, double t, const E
 TEST_P(NewtonJacobians, IndexTwoNewtonStepMatchesTheDenseSystem) {
   const Case c = GetParam();
   auto eq = build(c);
-  const int n = eq->full_size(), total = 2 * n + 6;
+  const int n = eq->full_size(), m = eq->constraint_count(), total = 2 * n + 2 * m;
   Eigen::VectorXd z, z_dot;
   moving_state(*eq, z, z_dot);
   Eigen::VectorXd y(total), y_dot(total);
   eq->full_from_minimal(c.t, z, z_dot, y.head(n), y.segment(n, n));
   // Multipliers of the order of the system's own loads (its largest inertia × 1 /s²).
   const double load = eq->full_mass_matrix(y.head(n)).diagonal().maxCoeff();
-  y.segment<3>(2 * n) = load * Eigen::Vector3d(1e-4, -2e-3, 3e-2);
-  y.tail<3>() = Eigen::Vector3d(1e-4, -2e-4, 5e-5);
+  const double lambda_pattern[] = {1e-4, -2e-3, 3e-2, -1e-3, 2e-2, -3e-4}, mu_pattern[] = {1e-4, -2e-4, 5e-5, -1e-4, 2e-4, -5e-5};
+  for (int i = 0; i < m; ++i) {
+    y(2 * n + i) = load * lambda_pattern[i];
+    y(2 * n + m + i) = mu_pattern[i];
+  }
   for (int i = 0; i < total; ++i) y_dot(i) = 0.1 * std::sin(0.7 * i + 0.2);
   const double cj = 37.0;
   const Eigen::MatrixXd assembled = assembled_index_two_matrix(*eq, c.t, y, y_dot, cj);
@@ -292,7 +300,7 @@ TEST_P(NewtonJacobians, IndexTwoNewtonStepMatchesTheDenseSystem) {
     ASSERT_EQ(SUNLinSolSetup(newton.solver(), newton.matrix()), 0);
     ASSERT_EQ(SUNLinSolSolve(newton.solver(), newton.matrix(), x, b, 0.0), 0);
     const Eigen::VectorXd structured = Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(x), total);
-    for (const auto& [from, count] : {std::pair{0, n}, std::pair{n, n}, std::pair{2 * n, 3}, std::pair{2 * n + 3, 3}}) {
+    for (const auto& [from, count] : {std::pair{0, n}, std::pair{n, n}, std::pair{2 * n, m}, std::pair{2 * n + m, m}}) {
       const double size = reference.segment(from, count).cwiseAbs().maxCoeff();
       const double error = (structured.segment(from, count) - reference.segment(from, count)).cwiseAbs().maxCoeff();
       EXPECT_LT(error, 1e-7 * size) << c.choice.label() << " block at " << from;

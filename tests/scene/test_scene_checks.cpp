@@ -52,7 +52,7 @@ void expect_problem(const std::string& text, const std::string& key, const std::
 }
 
 TEST(SceneChecks, ShippedScenesHaveNoFindings) {
-  for (const char* name : {"cantilever", "paper_floating_crane", "dropped_load", "spin_up_beam"}) {
+  for (const char* name : {"cantilever", "paper_floating_crane", "dropped_load", "spin_up_beam", "pinned_luffing_crane", "a_frame_crane"}) {
     const Scene scene = load_scene(std::string(FFRF_SOURCE_DIR "/cases/") + name + ".toml");
     EXPECT_TRUE(physics_findings(scene).empty()) << name;
     EXPECT_TRUE(scene.warnings.empty()) << name;
@@ -210,6 +210,57 @@ TEST(SceneChecks, DirectoryOrHugeFileIsNotAScene) {
   } catch (const SceneError& error) {
     EXPECT_NE(std::string(error.what()).find("larger than"), std::string::npos) << error.what();
   }
+}
+
+
+// The A-frame on its deck pin (scene/a_frame.cpp): what keeps it from standing is named by its keys.
+std::string a_frame_text() {
+  std::ifstream in(FFRF_SOURCE_DIR "/cases/a_frame_crane.toml");
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(SceneChecks, BackstaysOnTheBoomsSideCannotHoldTheAFrame) {
+  // The deck point 35 m forward instead of aft: the backstays would have to push.
+  expect_problem(replaced(a_frame_text(), "deck_x = -35.0", "deck_x = 35.0"), "backstay.deck_x", "cannot hold the A-frame");
+}
+
+TEST(SceneChecks, TheWiresMustFitTheSolversEventCount) {
+  // 1 hoist + 4 luffing + 4 backstays = 9 wires, one event function each; the solvers track 8.
+  const std::string text = replaced(replaced(a_frame_text(), "wires = 2                         # -\ndamping_ratio = 0.02              # - (2 % of critical for the boom",
+                                             "wires = 4                         # -\ndamping_ratio = 0.02              # - (2 % of critical for the boom"),
+                                    "wires = 2                         # -\ndamping_ratio = 0.02              # - (2 % of critical for the A-frame",
+                                    "wires = 4                         # -\ndamping_ratio = 0.02              # - (2 % of critical for the A-frame");
+  expect_problem(text, "backstay.wires", "at most 8 are tracked");
+}
+
+TEST(SceneChecks, AnAFrameNeedsItsBackstaysAndTheBackstaysAnAFrame) {
+  const std::string text = a_frame_text();
+  const auto backstay = text.find("[backstay]"), end = text.find("[cargo]");
+  ASSERT_NE(backstay, std::string::npos);
+  std::string without_backstay = text;
+  without_backstay.erase(backstay, end - backstay);
+  expect_problem(without_backstay, "a_frame", "needs the [backstay] wires");
+  const auto a_frame = text.find("[a_frame]");
+  std::string without_a_frame = text;
+  without_a_frame.erase(a_frame, backstay - a_frame);
+  expect_problem(without_a_frame, "backstay", "give [a_frame]");
+}
+
+TEST(SceneChecks, TheSinkingLoadCountsTheAFrame) {
+  // 16 000 t of A-frame on top of hull, boom and cargo: more than the box's whole buoyancy.
+  const auto problems = problems_of(replaced(a_frame_text(), "mass = 150.0e3 ", "mass = 16.0e6 "));
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_NE(problems[0].message.find("+ A-frame 16000 t = 31100 t"), std::string::npos) << problems[0].message;
+}
+
+TEST(SceneChecks, BackstaysLongerThanTheirSpanAreAWarning) {
+  const Scene scene =
+      load_scene_text(replaced(a_frame_text(), "stiffness = 2.0e8                 # N/m (each backstay)",
+                               "stiffness = 2.0e8\nunstretched_length = 60.0"),
+                      "crane.toml");
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_NE(scene.warnings[0].find("backstay.unstretched_length = 60"), std::string::npos) << scene.warnings[0];
+  EXPECT_NE(scene.warnings[0].find("slack at the A-frame's built pose"), std::string::npos) << scene.warnings[0];
 }
 
 }  // namespace
