@@ -20,6 +20,7 @@ CASES = SOURCE / "cases"
 
 PAPER = str(CASES / "paper_floating_crane.toml")
 PINNED = str(CASES / "pinned_luffing_crane.toml")
+A_FRAME = str(CASES / "a_frame_crane.toml")
 DROPPED = str(CASES / "dropped_load.toml")
 SPIN_UP = str(CASES / "spin_up_beam.toml")
 CANTILEVER = str(CASES / "cantilever.toml")

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import ffrf
-from conftest import ALL_SCENES, PAPER, PINNED, assert_same, cli
+from conftest import A_FRAME, ALL_SCENES, PAPER, PINNED, assert_same, cli
 
 LIFT = {"boom.angle": "55 deg", "cargo.mass": "2400 t"}
 
@@ -168,3 +168,18 @@ def test_the_mode_set_is_a_keyword_of_run():
     assert np.max(np.abs(peak["free-free"] - peak["clamped-free"])) < 1e-3 * np.max(peak["clamped-free"])
     with pytest.raises(ffrf.SettingError, match="mode_set"):
         ffrf.run(PINNED, boom="modal", mode_set="hinged", duration=1.0)
+
+
+def test_the_a_frame_on_its_pin_reports_its_backstays(tmp_path):
+    # The A-frame's rotation is a motion about the static equilibrium (zero at the start from it); the
+    # backstays' tension at rest is the static equilibrium's, as the command line reports it, and
+    # holds the A-frame against the luffing wires' pull (both tens of MN).
+    run = ffrf.run(A_FRAME, duration=2.0)
+    assert run.outputs["a_frame_rotation"][0] == pytest.approx(0.0, abs=1e-12)
+    out = tmp_path / "run"
+    cli("run", A_FRAME, "--duration", 2, "--out", out)
+    with open(out / "summary.json") as f:
+        statics = json.load(f)["static_equilibrium"]
+    assert run.outputs["backstay_tension"][0] == pytest.approx(statics["backstay_tension_N"], rel=1e-9)
+    assert 1e7 < run.outputs["backstay_tension"][0] < 1e8
+    assert 1e7 < run.outputs["luffing_tension"][0] < 1e8
