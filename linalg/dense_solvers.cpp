@@ -16,4 +16,15 @@ template class FullPivLU<MatrixXcd>;
 
 template class PartialPivLU<MatrixXcd>;
 
+template class PartialPivLU<MatrixXd>;
+
+template class LLT<MatrixXd>;
+template LLT<MatrixXd>& LLT<MatrixXd>::compute<MatrixXd>(const EigenBase<MatrixXd>&);
+
+template class LDLT<MatrixXd>;
+template LDLT<MatrixXd>& LDLT<MatrixXd>::compute<MatrixXd>(const EigenBase<MatrixXd>&);
+
+template class ColPivHouseholderQR<MatrixXd>;
+template ColPivHouseholderQR<MatrixXd>& ColPivHouseholderQR<MatrixXd>::compute<MatrixXd>(const EigenBase<MatrixXd>&);
+
 }  // namespace Eigen

@@ -20,6 +20,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "linalg/dense_solvers.hpp"
 #include "multibody/crane_layout.hpp"
 #include "multibody/crane_model.hpp"
 

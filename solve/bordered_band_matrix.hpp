@@ -12,6 +12,8 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "linalg/dense_solvers.hpp"
+
 namespace ffrf::solve {
 
 struct BandStructure {

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <string>
 
+#include "linalg/dense_solvers.hpp"
 #include "solve/integration.hpp"
 #include "solve/solver_steps.hpp"
 #include "solve/sundials_support.hpp"

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "linalg/dense_solvers.hpp"
 #include "study/rao.hpp"
 #include "study/run_pipeline.hpp"
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "held_boom.hpp"
+#include "linalg/dense_solvers.hpp"
 #include "multibody/crane_model.hpp"
 #include "multibody/crane_run.hpp"
 #include "multibody/crane_statics.hpp"
@@ -66,7 +67,8 @@ double free_decay_ratio(multibody::CraneEquations& equations, const Eigen::Vecto
 std::pair<Eigen::VectorXd, double> first_bending_mode(multibody::CraneEquations& equations, const Eigen::VectorXd& rest) {
   const multibody::LinearisedCrane linear = multibody::linearise_crane(equations, rest);
   // The undamped modes of M⁻¹K as linearised (a taut wire's terms make K slightly unsymmetric).
-  const Eigen::EigenSolver<Eigen::MatrixXd> solver(linear.mass.lu().solve(linear.stiffness));
+  const Eigen::MatrixXd mass_inverse_stiffness = linear.mass.lu().solve(linear.stiffness);
+  const Eigen::EigenSolver<Eigen::MatrixXd> solver(mass_inverse_stiffness);
   int lowest = -1;
   for (int i = 0; i < solver.eigenvalues().size(); ++i) {
     const double value = solver.eigenvalues()(i).real();

@@ -25,6 +25,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "barge_hull_scene.hpp"
+#include "linalg/dense_solvers.hpp"
 #include "multibody/crane_run.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/run_pipeline.hpp"
@@ -158,12 +159,14 @@ truncation_time = 3.0)",
 
 // Exact heave of (M + A∞)ẍ + μ + Cx = 0, μ̇ = −aμ + abẋ from (x0, 0, 0): eigen-decomposition.
 double cummins_exact(const Lorentzian& p, double t) {
-  Eigen::Matrix3d system;
+  Eigen::MatrixXd system(3, 3);  // dynamic size: the project's compiled-once eigen solver
   const double inertia = kMass + p.infinite_added_mass;
   system << 0, 1, 0, -kHeaveStiffness / inertia, 0, -1.0 / inertia, 0, p.a * p.b, -p.a;
-  const Eigen::EigenSolver<Eigen::Matrix3d> eigen(system);
-  const Eigen::Matrix3cd v = eigen.eigenvectors();
-  const Eigen::Vector3cd c = v.fullPivLu().solve(Eigen::Vector3cd(kStart, 0, 0));
+  const Eigen::EigenSolver<Eigen::MatrixXd> eigen(system);
+  const Eigen::MatrixXcd v = eigen.eigenvectors();
+  Eigen::VectorXcd start = Eigen::VectorXcd::Zero(3);
+  start(0) = kStart;
+  const Eigen::VectorXcd c = v.fullPivLu().solve(start);
   std::complex<double> x = 0;
   for (int i = 0; i < 3; ++i) x += v(0, i) * c(i) * std::exp(eigen.eigenvalues()(i) * t);
   return x.real();
