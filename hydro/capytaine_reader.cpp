@@ -21,7 +21,6 @@ using capytaine_detail::scalar;
 using capytaine_detail::Variable;
 
 constexpr std::array<const char*, kPlanarDofs> kDofNames{"Surge", "Heave", "Pitch"};
-constexpr std::array<double, kPlanarDofs> kSign{1.0, 1.0, -1.0};  // T = diag(1, 1, −1): Capytaine's pitch is bow down
 constexpr std::array<const char*, 5> kFrequencyDimensions{"omega", "freq", "period", "wavelength", "wavenumber"};
 
 std::string lower(std::string text) {
@@ -86,7 +85,7 @@ PlanarMatrix planar_matrix(const std::string& path, const Variable& v, const std
     for (int j = 0; j < kPlanarDofs; ++j) {
       const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
       const double value = v.at({{frequency, k}, {"influenced_dof", influenced[ui]}, {"radiating_dof", radiating[uj]}});
-      m(i, j) = kSign[ui] * kSign[uj] *
+      m(i, j) = kBemToPlanarSign[ui] * kBemToPlanarSign[uj] *
                 present(path, v, value, fmt::format("{}, influenced_dof = {}, radiating_dof = {}", where, kDofNames[ui], kDofNames[uj]));
     }
   return m;
@@ -181,7 +180,7 @@ void read_excitation(const NetcdfFile& file, CapytaineDataset& data, const std::
           const double real = v.at({{"complex", re}, {frequency_dim, k}, {"wave_direction", h}, {"influenced_dof", influenced[ud]}});
           const double imaginary = v.at({{"complex", im}, {frequency_dim, k}, {"wave_direction", h}, {"influenced_dof", influenced[ud]}});
           // e^{−iωt} phasor → ffrf's e^{iωt}: the complex conjugate; then ffrf's pitch sign.
-          f(d) += kSign[ud] * std::complex<double>(present(path, v, real, where), -present(path, v, imaginary, where));
+          f(d) += kBemToPlanarSign[ud] * std::complex<double>(present(path, v, real, where), -present(path, v, imaginary, where));
         }
       x.force[h].push_back(f);
     }
@@ -199,7 +198,7 @@ void read_hydrostatics(const NetcdfFile& file, CapytaineDataset& data, const std
   for (int i = 0; i < kPlanarDofs; ++i)
     for (int j = 0; j < kPlanarDofs; ++j) {
       const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
-      m(i, j) = kSign[ui] * kSign[uj] *
+      m(i, j) = kBemToPlanarSign[ui] * kBemToPlanarSign[uj] *
                 present(file.path(), c, c.at({{"influenced_dof", influenced[ui]}, {"radiating_dof", radiating[uj]}}),
                         fmt::format("influenced_dof = {}, radiating_dof = {}", kDofNames[ui], kDofNames[uj]));
     }

@@ -2,6 +2,9 @@
 // error measured at every segment midpoint (see harmonic_record.hpp).
 #include "hydro/harmonic_record.hpp"
 
+#include "hydro/constants.hpp"
+#include "hydro/fftw_memory.hpp"
+
 #include <fftw3.h>
 #include <fmt/format.h>
 
@@ -22,7 +25,6 @@ std::mutex& fftw_planner_mutex() {
 namespace {
 
 using Complex = std::complex<double>;
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr int max_attempts = 4;
 
 // Adds the two-sided bins of real channels a (and b, if any) times factor(ω): ½(a + i b) f at bin n,
@@ -39,10 +41,6 @@ void add_real_pair(const std::vector<Complex>& a, const std::vector<Complex>* b,
     bins[negative] += std::conj(first) + Complex(0.0, 1.0) * std::conj(second);
   }
 }
-
-struct FftwFree {
-  void operator()(void* p) const { fftw_free(p); }
-};
 
 std::size_t component_count(const HarmonicSums& sums) {
   return sums.coefficients.empty() ? sums.real_parts.front().size() : sums.coefficients.front().size();

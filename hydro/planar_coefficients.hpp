@@ -11,6 +11,7 @@
 
 #include "linalg/space.hpp"
 
+#include <array>
 #include <complex>
 #include <string>
 #include <vector>
@@ -19,6 +20,9 @@ namespace ffrf::hydro {
 
 // A planar rigid body's degrees of freedom (linalg/space.hpp): 0 surge, 1 heave, 2 pitch.
 inline constexpr int kPlanarDofs = linalg::Planar::body_dofs;
+// From a BEM file's degrees of freedom to these: T = diag(1, 1, −1), a coefficient A_ij becoming
+// T_i T_j A_ij and an excitation X_i becoming T_i X_i (WAMIT's and Capytaine's pitch is bow down).
+inline constexpr std::array<double, kPlanarDofs> kBemToPlanarSign{1.0, 1.0, -1.0};
 using PlanarMatrix = Eigen::Matrix3d;
 using PlanarVector = Eigen::Vector3d;
 using PlanarComplexVector = Eigen::Vector3cd;

@@ -11,16 +11,14 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "hydro/constants.hpp"
+#include "hydro/fftw_memory.hpp"
 #include "hydro/harmonic_record.hpp"
 
 namespace ffrf::hydro {
 
 namespace {
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-struct FftwFree {
-  void operator()(void* p) const { fftw_free(p); }
-};
 }  // namespace
 
 PowerSpectrum welch_spectrum(const std::vector<double>& record, double dt, const WelchOptions& options) {

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <optional>
 
+#include "hydro/constants.hpp"
 #include "hydro/wamit_table.hpp"
 
 namespace ffrf::hydro {
@@ -20,9 +21,7 @@ using wamit_detail::PeriodBlocks;
 using wamit_detail::read_rows;
 using wamit_detail::Row;
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr std::array<int, kPlanarDofs> kWamitModes{1, 3, 5};
-constexpr std::array<double, kPlanarDofs> kSign{1.0, 1.0, -1.0};  // T = diag(1, 1, −1): WAMIT pitch is bow down
 constexpr std::array<const char*, kPlanarDofs> kModeNames{"1 (surge)", "3 (heave)", "5 (pitch)"};
 
 // Planar index of a WAMIT mode, or −1 when the mode is not kept.
@@ -78,7 +77,7 @@ PlanarMatrix dimensional(const PlanarMatrix& nondimensional, double factor, doub
   for (int i = 0; i < kPlanarDofs; ++i)
     for (int j = 0; j < kPlanarDofs; ++j) {
       const int k = rotational_count(kWamitModes[static_cast<std::size_t>(i)], kWamitModes[static_cast<std::size_t>(j)]);
-      m(i, j) = kSign[static_cast<std::size_t>(i)] * kSign[static_cast<std::size_t>(j)] * factor *
+      m(i, j) = kBemToPlanarSign[static_cast<std::size_t>(i)] * kBemToPlanarSign[static_cast<std::size_t>(j)] * factor *
                 std::pow(length, base + k) * nondimensional(i, j);
     }
   return m;
@@ -210,7 +209,7 @@ PlanarExcitation read_wamit_excitation(const std::string& path, const WamitScali
               "period {} s, heading {} deg: no row for mode {}; the planar model needs modes 1, 3 and 5", period,
               headings[h], kModeNames[static_cast<std::size_t>(d)]));
         const int k = rotational_count(kWamitModes[static_cast<std::size_t>(d)], 0);
-        x(d) = kSign[static_cast<std::size_t>(d)] * scaling.density * scaling.gravity * std::pow(scaling.length, 2 + k) * it->value(d);
+        x(d) = kBemToPlanarSign[static_cast<std::size_t>(d)] * scaling.density * scaling.gravity * std::pow(scaling.length, 2 + k) * it->value(d);
       }
       result.force[h].push_back(x);
     }

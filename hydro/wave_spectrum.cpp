@@ -8,16 +8,16 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "hydro/constants.hpp"
 #include "hydro/gauss_legendre.hpp"
 
 namespace ffrf::hydro {
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kPeakHalfWidthSigmas = 12.0;  // γ^exp(−x²/2) − 1 < 1e-31 (γ − 1) beyond 12 σ
 
-void require(bool ok, std::string_view what, double value, std::string_view range) {
+void require_spectrum(bool ok, std::string_view what, double value, std::string_view range) {
   if (!ok) throw std::invalid_argument(fmt::format("wave spectrum: {} = {} is invalid; valid range {}", what, value, range));
 }
 
@@ -85,9 +85,9 @@ double WaveSpectrum::peak_frequency() const {
 }
 
 WaveSpectrum pierson_moskowitz(double significant_height, double peak_period) {
-  require(std::isfinite(significant_height) && significant_height > 0.0, "significant wave height Hs [m]",
+  require_spectrum(std::isfinite(significant_height) && significant_height > 0.0, "significant wave height Hs [m]",
           significant_height, "> 0");
-  require(std::isfinite(peak_period) && peak_period > 0.0, "peak period Tp [s]", peak_period, "> 0");
+  require_spectrum(std::isfinite(peak_period) && peak_period > 0.0, "peak period Tp [s]", peak_period, "> 0");
   WaveSpectrum s;
   s.kind = SpectrumKind::pierson_moskowitz;
   s.significant_height = significant_height;
@@ -100,11 +100,11 @@ double dnv_jonswap_normalisation(double peak_enhancement) { return 1.0 - 0.287 *
 WaveSpectrum jonswap(double significant_height, double peak_period, double peak_enhancement,
                      JonswapNormalisation normalisation, double sigma_below, double sigma_above) {
   WaveSpectrum s = pierson_moskowitz(significant_height, peak_period);
-  require(std::isfinite(peak_enhancement) && peak_enhancement >= 1.0 && peak_enhancement <= 10.0,
+  require_spectrum(std::isfinite(peak_enhancement) && peak_enhancement >= 1.0 && peak_enhancement <= 10.0,
           "peak enhancement factor gamma", peak_enhancement, "[1, 10]");
-  require(std::isfinite(sigma_below) && sigma_below > 0.0 && sigma_below <= 0.5, "sigma below the peak",
+  require_spectrum(std::isfinite(sigma_below) && sigma_below > 0.0 && sigma_below <= 0.5, "sigma below the peak",
           sigma_below, "(0, 0.5]");
-  require(std::isfinite(sigma_above) && sigma_above > 0.0 && sigma_above <= 0.5, "sigma above the peak",
+  require_spectrum(std::isfinite(sigma_above) && sigma_above > 0.0 && sigma_above <= 0.5, "sigma above the peak",
           sigma_above, "(0, 0.5]");
   s.kind = SpectrumKind::jonswap;
   s.peak_enhancement = peak_enhancement;
@@ -126,11 +126,11 @@ WaveSpectrum tabulated_spectrum(std::vector<double> frequency, std::vector<doubl
         "wave spectrum: table has {} frequencies and {} densities; valid: equal sizes, at least 2", frequency.size(),
         density.size()));
   for (std::size_t i = 0; i < frequency.size(); ++i) {
-    require(std::isfinite(frequency[i]) && frequency[i] >= 0.0, fmt::format("table frequency [{}] [rad/s]", i),
+    require_spectrum(std::isfinite(frequency[i]) && frequency[i] >= 0.0, fmt::format("table frequency [{}] [rad/s]", i),
             frequency[i], ">= 0");
-    require(i == 0 || frequency[i] > frequency[i - 1], fmt::format("table frequency [{}] [rad/s]", i), frequency[i],
+    require_spectrum(i == 0 || frequency[i] > frequency[i - 1], fmt::format("table frequency [{}] [rad/s]", i), frequency[i],
             fmt::format("> the previous one ({})", i == 0 ? 0.0 : frequency[i - 1]));
-    require(std::isfinite(density[i]) && density[i] >= 0.0, fmt::format("table density [{}] [m^2 s/rad]", i),
+    require_spectrum(std::isfinite(density[i]) && density[i] >= 0.0, fmt::format("table density [{}] [m^2 s/rad]", i),
             density[i], ">= 0");
   }
   WaveSpectrum s;
@@ -191,7 +191,7 @@ double spectral_moment(const WaveSpectrum& s, int order, double omega_lo, double
 }
 
 FrequencyBand energy_band(const WaveSpectrum& s, double tail_fraction) {
-  require(tail_fraction > 0.0 && tail_fraction < 0.5, "energy band tail fraction", tail_fraction, "(0, 0.5)");
+  require_spectrum(tail_fraction > 0.0 && tail_fraction < 0.5, "energy band tail fraction", tail_fraction, "(0, 0.5)");
   const double wp = s.peak_frequency();
   const double top = s.kind == SpectrumKind::tabulated ? s.table_frequency.back() : 200.0 * wp;
   const double bottom = s.kind == SpectrumKind::tabulated ? s.table_frequency.front() : 0.0;
@@ -210,7 +210,7 @@ FrequencyBand energy_band(const WaveSpectrum& s, double tail_fraction) {
 }
 
 FrequencyBand variance_band(const WaveSpectrum& s, double variance_share) {
-  require(variance_share > 0.5 && variance_share < 1.0, "variance share of the band", variance_share, "(0.5, 1)");
+  require_spectrum(variance_share > 0.5 && variance_share < 1.0, "variance share of the band", variance_share, "(0.5, 1)");
   return energy_band(s, 1.0 - variance_share);
 }
 

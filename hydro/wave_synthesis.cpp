@@ -13,16 +13,17 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "hydro/constants.hpp"
+#include "hydro/fftw_memory.hpp"
 #include "hydro/harmonic_record.hpp"
 #include "hydro/random_stream.hpp"
 
 namespace ffrf::hydro {
 
 namespace {
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kMaxComponents = 2e6;
 
-void require(bool ok, std::string_view what, double value, std::string_view range) {
+void require_synthesis(bool ok, std::string_view what, double value, std::string_view range) {
   if (!ok) throw std::invalid_argument(fmt::format("wave synthesis: {} = {} is invalid; valid range {}", what, value, range));
 }
 }  // namespace
@@ -43,16 +44,16 @@ WaveComponents user_components(std::vector<double> frequency, std::vector<double
     throw std::invalid_argument(fmt::format(
         "wave components: {} frequencies, {} amplitudes, {} phases; valid: equal sizes, at least one", frequency.size(),
         amplitude.size(), phase.size()));
-  require(std::isfinite(frequency_step) && frequency_step >= 0.0, "frequency step [rad/s]", frequency_step, ">= 0");
+  require_synthesis(std::isfinite(frequency_step) && frequency_step >= 0.0, "frequency step [rad/s]", frequency_step, ">= 0");
   for (std::size_t i = 0; i < frequency.size(); ++i) {
-    require(std::isfinite(frequency[i]) && frequency[i] > 0.0, fmt::format("component {} frequency [rad/s]", i),
+    require_synthesis(std::isfinite(frequency[i]) && frequency[i] > 0.0, fmt::format("component {} frequency [rad/s]", i),
             frequency[i], "> 0");
-    require(std::isfinite(amplitude[i]) && amplitude[i] >= 0.0, fmt::format("component {} amplitude [m]", i),
+    require_synthesis(std::isfinite(amplitude[i]) && amplitude[i] >= 0.0, fmt::format("component {} amplitude [m]", i),
             amplitude[i], ">= 0");
-    require(std::isfinite(phase[i]), fmt::format("component {} phase [rad]", i), phase[i], "finite");
+    require_synthesis(std::isfinite(phase[i]), fmt::format("component {} phase [rad]", i), phase[i], "finite");
     if (frequency_step > 0.0) {
       const double n = frequency[i] / frequency_step;
-      require(std::abs(n - std::round(n)) <= 1e-9 * n, fmt::format("component {} frequency / step", i), n,
+      require_synthesis(std::abs(n - std::round(n)) <= 1e-9 * n, fmt::format("component {} frequency / step", i), n,
               "a whole number (the components must lie on the grid n * step)");
     }
   }
@@ -60,18 +61,18 @@ WaveComponents user_components(std::vector<double> frequency, std::vector<double
 }
 
 SeaRealisation synthesize(const WaveSpectrum& spectrum, const SynthesisOptions& options) {
-  require(std::isfinite(options.record_length) && options.record_length > 0.0, "record length [s]",
+  require_synthesis(std::isfinite(options.record_length) && options.record_length > 0.0, "record length [s]",
           options.record_length, "> 0");
   const double step = options.frequency_step > 0.0 ? options.frequency_step : kTwoPi / options.record_length;
-  require(std::isfinite(step) && step > 0.0, "frequency step [rad/s]", options.frequency_step, ">= 0");
+  require_synthesis(std::isfinite(step) && step > 0.0, "frequency step [rad/s]", options.frequency_step, ">= 0");
   const FrequencyBand band = synthesis_band(spectrum, options.omega_min, options.omega_max, 1.0 - options.tail_fraction);
   const double lo = band.lower, hi = band.upper;
-  require(std::isfinite(lo) && lo >= 0.0, "lowest frequency [rad/s]", lo, ">= 0");
-  require(std::isfinite(hi) && hi > lo, "highest frequency [rad/s]", hi, fmt::format("> the lowest ({})", lo));
+  require_synthesis(std::isfinite(lo) && lo >= 0.0, "lowest frequency [rad/s]", lo, ">= 0");
+  require_synthesis(std::isfinite(hi) && hi > lo, "highest frequency [rad/s]", hi, fmt::format("> the lowest ({})", lo));
   const double first = std::max(1.0, std::ceil(lo / step)), last = std::floor(hi / step);
-  require(last >= first, "number of components", last - first + 1.0,
+  require_synthesis(last >= first, "number of components", last - first + 1.0,
           fmt::format(">= 1 (band [{}, {}] rad/s, step {} rad/s)", lo, hi, step));
-  require(last - first + 1.0 <= kMaxComponents, "number of components", last - first + 1.0,
+  require_synthesis(last - first + 1.0 <= kMaxComponents, "number of components", last - first + 1.0,
           fmt::format("<= {} (make the band narrower or the record shorter)", kMaxComponents));
 
   SeaRealisation result;
@@ -121,10 +122,6 @@ std::size_t harmonic_fft_size(const WaveComponents& c, double dt) {
     if (std::abs(w / c.frequency_step - std::round(w / c.frequency_step)) > 1e-6) return 0;
   return static_cast<std::size_t>(whole);
 }
-
-struct FftwFree {
-  void operator()(void* p) const { fftw_free(p); }
-};
 
 std::vector<double> elevation_by_fft(const WaveComponents& c, double t0, std::size_t n, std::size_t count) {
   std::unique_ptr<fftw_complex, FftwFree> buffer(fftw_alloc_complex(n));

@@ -31,6 +31,10 @@ struct CrossingInterval {
   double lo, hi, g_lo, g_hi, slope_lo, slope_hi, curvature_lo, curvature_hi;
 };
 
+// An edge is cut into start intervals about 2/k_max long along x (k_max the sea's largest wave
+// number), at most this many (an edge up to 512/k_max long): the exact and the recorded sea alike.
+inline constexpr int kMaxStartIntervals = 256;
+
 // Bounds over the edge of |g'|, |g''| and |g'''| (the field's bounds times the edge's components).
 struct CrossingBounds {
   double slope = 0.0, curvature = 0.0, third = 0.0;

@@ -86,11 +86,10 @@ class RecordedEdges {
   // Every crossing of an edge with the recorded surface (crossing_isolation.hpp), then its wetted
   // intervals. Start intervals about 2/k_max long along x, as the exact path's.
   bool crossings_along(const HullEdge& edge, EdgeMoments& acc) const {
-    static constexpr int max_samples = 256;
     const LineGap gap{*this, edge};
     const double dx = std::abs(edge.d.x());
-    const int count = std::clamp(static_cast<int>(std::ceil(0.5 * dx * record_.max_wave_number())), 1, max_samples);
-    std::array<CrossingInterval, max_samples> first;
+    const int count = std::clamp(static_cast<int>(std::ceil(0.5 * dx * record_.max_wave_number())), 1, kMaxStartIntervals);
+    std::array<CrossingInterval, kMaxStartIntervals> first;
     double g_prev = 0.0, slope_prev = 0.0, curvature_prev = 0.0;
     for (int j = 0; j <= count; ++j) {
       const double s = j == count ? 1.0 : static_cast<double>(j) / count;

@@ -44,17 +44,15 @@ struct SurfaceGap {
   }
 };
 
-constexpr int max_samples = 256;  // start intervals per edge (an edge up to 512/k_max long)
-
 // The edge cut into `count` equal intervals with g, g', g'' at their ends. Component i's phase
 // advances by k_i d_x / count from one sample to the next, so e^{iθ} is carried along by one complex
 // multiplication per sample (two phasors per component instead of one per sample). The components go
 // through in blocks of `lanes`, each lane with its own sums per sample (added up at the end): the
 // lanes are independent, so the compiler runs them side by side in vector registers.
-void sample_edge(const SurfaceGap& gap, int count, std::array<CrossingInterval, max_samples>& out) {
+void sample_edge(const SurfaceGap& gap, int count, std::array<CrossingInterval, kMaxStartIntervals>& out) {
   constexpr std::size_t lanes = 4;
   using Lanes = std::array<double, lanes>;
-  std::array<Lanes, max_samples + 1> zeta{}, zeta_x{}, zeta_xx{};
+  std::array<Lanes, kMaxStartIntervals + 1> zeta{}, zeta_x{}, zeta_xx{};
   const double h = 1.0 / count;
   const std::vector<WaveComponent>& components = gap.wave.components();
   const std::vector<Complex>& amplitudes = gap.wave.complex_amplitudes();
@@ -115,8 +113,8 @@ WaterlineCrossings waterline_crossings(const WaveField& wave, double t, const Ei
   // Start intervals about 2/k_max long along x (a third of the shortest wavelength): most are settled
   // at once by the local bound, the rest are halved (measured on the reference hull in the crane's
   // 3-hour sea: 1/k_max costs 1.4×, 3/k_max 1.2× the time of 2/k_max; bench/bench_waterline_crossings).
-  const int count = std::clamp(static_cast<int>(std::ceil(0.5 * dx * wave.max_wave_number())), 1, max_samples);
-  std::array<CrossingInterval, max_samples> first;
+  const int count = std::clamp(static_cast<int>(std::ceil(0.5 * dx * wave.max_wave_number())), 1, kMaxStartIntervals);
+  std::array<CrossingInterval, kMaxStartIntervals> first;
   sample_edge(gap, count, first);
   out.wet_at_start = first[0].g_lo < 0.0;
 

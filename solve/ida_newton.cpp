@@ -3,15 +3,9 @@
 
 #include <nvector/nvector_serial.h>
 
+#include "solve/nvector_view.hpp"
+
 namespace ffrf::solve::sundials {
-
-namespace {
-
-Eigen::Map<Eigen::VectorXd> view(N_Vector v) {
-  return {N_VGetArrayPointer(v), static_cast<Eigen::Index>(N_VGetLength(v))};
-}
-
-}  // namespace
 
 IndexTwoNewton::IndexTwoNewton(SecondOrderSystem& equations, SUNContext context, Eigen::VectorXd coordinate_scale)
     : equations_(equations), nq_(equations.full_size()), border_(equations.full_structure().border),

@@ -4,15 +4,9 @@
 
 #include <nvector/nvector_serial.h>
 
+#include "solve/nvector_view.hpp"
+
 namespace ffrf::solve::sundials {
-
-namespace {
-
-Eigen::Map<Eigen::VectorXd> view(N_Vector v) {
-  return {N_VGetArrayPointer(v), static_cast<Eigen::Index>(N_VGetLength(v))};
-}
-
-}  // namespace
 
 SecondOrderNewton::SecondOrderNewton(const BandStructure& structure, SUNContext context, Evaluate evaluate)
     : size_(structure.size()), evaluate_(std::move(evaluate)), blocks_(structure), effective_(structure), lu_(structure),

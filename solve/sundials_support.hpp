@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "solve/integration.hpp"
+#include "solve/nvector_view.hpp"
 #include "solve/stop_request.hpp"
 
 namespace ffrf::solve::sundials {
@@ -81,9 +82,7 @@ struct Vector {
   Vector(const Vector&) = delete;
   Vector& operator=(const Vector&) = delete;
   Eigen::Map<Eigen::VectorXd> map() { return view(v); }
-  static Eigen::Map<Eigen::VectorXd> view(N_Vector x) {
-    return {N_VGetArrayPointer(x), static_cast<Eigen::Index>(N_VGetLength(x))};
-  }
+  static Eigen::Map<Eigen::VectorXd> view(N_Vector x) { return sundials::view(x); }
 };
 
 struct DenseSolver {

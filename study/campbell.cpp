@@ -9,13 +9,10 @@
 
 #include "fem/analytic_rotating_beam.hpp"
 #include "modal/rotating_beam_modes.hpp"
+#include "study/wall_clock.hpp"
 
 namespace ffrf::study {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // Power-series ω² of the lowest `count` bending modes, or nothing where no reference exists
 // (boundary other than clamped-free, or buckled).

@@ -12,15 +12,9 @@
 #include "fem/assembly.hpp"
 #include "modal/mode_cache.hpp"
 #include "study/run_pipeline.hpp"
+#include "study/wall_clock.hpp"
 
 namespace ffrf::study {
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 double modes_shift(const fem::BeamMesh& mesh, fem::Boundary boundary) { return modal::rigid_mode_shift(mesh, boundary); }
 

@@ -6,6 +6,7 @@
 
 #include "scene/irregular_sea.hpp"
 #include "study/run_pipeline.hpp"
+#include "study/wall_clock.hpp"
 
 namespace ffrf::study {
 namespace {
@@ -20,7 +21,7 @@ RecordCost probe(const scene::Scene& scene, const SeaCell& cell, const CellModel
   dynamics.relative_tolerance = dynamics.absolute_tolerance = model.relative_tolerance;
   dynamics.duration = probe_length(scene, cell, request);
   const ModelRun run = run_model(record, model.choice, integrator_settings(record, dynamics), modes);
-  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double total = seconds_since(start);
   RecordCost cost;
   cost.probe_length = *dynamics.duration;
   cost.seconds_per_simulated_second = run.result.stats.wall_seconds / cost.probe_length;

@@ -17,6 +17,7 @@
 #include "scene/irregular_sea.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/run_pipeline.hpp"
+#include "study/wall_clock.hpp"
 #include "linalg/dense_solvers.hpp"
 
 namespace ffrf::study {
@@ -350,7 +351,7 @@ RaoResult response_amplitude_operators(const scene::Scene& scene, const RaoReque
             significant_response(model.angular_frequencies, model.response[static_cast<std::size_t>(k)], *request.sea_spectrum);
       }
     }
-    model.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    model.wall_seconds = seconds_since(start);
     result.models.push_back(std::move(model));
   }
   if (request.sea_spectrum) {

@@ -9,6 +9,7 @@
 #include "multibody/crane_run.hpp"
 #include "study/run_pipeline.hpp"
 #include "study/stability_theory.hpp"
+#include "study/wall_clock.hpp"
 
 namespace ffrf::study {
 namespace {
@@ -38,7 +39,7 @@ ExplicitStabilityRow measure_model(const scene::Scene& scene, const scene::BoomC
   } catch (const solve::SolverFailure& failure) {
     row.failure = failure.what();
   }
-  row.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  row.wall_seconds = seconds_since(start);
   return row;
 }
 

@@ -2,6 +2,7 @@
 #include <chrono>
 
 #include "study/stability.hpp"
+#include "study/wall_clock.hpp"
 
 namespace ffrf::study {
 
@@ -16,7 +17,7 @@ StabilityMap stability_map(const scene::Scene& scene, const StabilityOptions& op
   if (scene.has_cargo()) map.wire = wire_study(scene, options);
   if (scene.hub && scene.boom.damping_ratio == 0.0) map.bdf_order = bdf_order_study(scene, options);
   if (scene.has_cargo() && scene.environment.gravity > 0.0) map.buckling = buckling_study(scene, options);
-  map.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  map.wall_seconds = seconds_since(start);
   return map;
 }
 
