@@ -20,7 +20,7 @@
 namespace {
 
 using namespace ffrf::hydro;
-const std::string kData = std::string(FFRF_SOURCE_DIR) + "/tests/hydro/data/";
+const std::string kData = std::string(FFRF_SOURCE_DIR "/tests/hydro/data/");
 
 struct Worst {
   double relative = 0.0, period = 0.0, a15 = 0.0, a51 = 0.0;

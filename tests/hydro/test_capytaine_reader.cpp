@@ -23,7 +23,7 @@ namespace {
 
 using namespace ffrf::hydro;
 using Complex = std::complex<double>;
-const std::string kFixture = std::string(FFRF_SOURCE_DIR) + "/tests/hydro/data/barge_100x30x4.nc";
+const std::string kFixture = std::string(FFRF_SOURCE_DIR "/tests/hydro/data/barge_100x30x4.nc");
 
 void expect_relative(double actual, double expected, double tolerance, const char* what) {
   EXPECT_NEAR(actual, expected, tolerance * std::abs(expected)) << what;

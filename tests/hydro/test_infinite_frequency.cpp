@@ -14,7 +14,7 @@
 namespace {
 
 using namespace ffrf::hydro;
-const std::string kData = std::string(FFRF_SOURCE_DIR) + "/tests/hydro/data/";
+const std::string kData = std::string(FFRF_SOURCE_DIR "/tests/hydro/data/");
 
 // The Lorentzian heave table with its exact A(ω), B(ω) sampled every dω to 40 rad/s. The estimates
 // differ from A∞ only by the linear interpolation of B, which is second order in dω: measured worst

@@ -80,7 +80,7 @@ TEST(Retardation, BackTransformsReproduceTheClosedFormAddedMassAndDamping) {
 class BargeKernel : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    radiation = new PlanarRadiation(read_wamit_radiation(std::string(FFRF_SOURCE_DIR) + "/tests/hydro/data/barge.1", {1.0, 1000.0, 9.81}));
+    radiation = new PlanarRadiation(read_wamit_radiation(std::string(FFRF_SOURCE_DIR "/tests/hydro/data/barge.1"), {1.0, 1000.0, 9.81}));
     kernel = new RetardationFunction(retardation_function(*radiation));
   }
   static void TearDownTestSuite() {

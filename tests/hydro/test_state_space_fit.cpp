@@ -43,7 +43,7 @@ TEST(StateSpaceFit, DampedCosineIsOrderTwoWithItsPoles) {
 }
 
 TEST(StateSpaceFit, FixtureKernelWithinTheStatedErrorStableAndMatchingTheFrequencyData) {
-  const auto radiation = read_wamit_radiation(std::string(FFRF_SOURCE_DIR) + "/tests/hydro/data/barge.1", {1.0, 1000.0, 9.81});
+  const auto radiation = read_wamit_radiation(std::string(FFRF_SOURCE_DIR "/tests/hydro/data/barge.1"), {1.0, 1000.0, 9.81});
   const auto k = retardation_function(radiation);
   double previous_error = 1.0;
   int previous_order = 0;
@@ -82,7 +82,7 @@ TEST(StateSpaceFit, FixtureKernelWithinTheStatedErrorStableAndMatchingTheFrequen
 }
 
 TEST(StateSpaceFit, NamesTheBestErrorWhenTheOrderCapIsTooLow) {
-  const auto radiation = read_wamit_radiation(std::string(FFRF_SOURCE_DIR) + "/tests/hydro/data/barge.1", {1.0, 1000.0, 9.81});
+  const auto radiation = read_wamit_radiation(std::string(FFRF_SOURCE_DIR "/tests/hydro/data/barge.1"), {1.0, 1000.0, 9.81});
   try {
     fit_state_space(retardation_function(radiation), {.tolerance = 1e-3, .max_order = 3});
     FAIL();

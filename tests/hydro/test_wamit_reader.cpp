@@ -18,7 +18,7 @@
 namespace {
 
 using namespace ffrf::hydro;
-const std::string kData = std::string(FFRF_SOURCE_DIR) + "/tests/hydro/data/";
+const std::string kData = std::string(FFRF_SOURCE_DIR "/tests/hydro/data/");
 
 std::size_t index_of(const std::vector<double>& omega, double value) {
   for (std::size_t i = 0; i < omega.size(); ++i)

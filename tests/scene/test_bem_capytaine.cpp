@@ -13,8 +13,8 @@
 namespace ffrf::scene {
 namespace {
 
-const std::string kCase = std::string(FFRF_SOURCE_DIR) + "/cases/capytaine_barge_crane.toml";
-const std::string kDataset = std::string(FFRF_SOURCE_DIR) + "/tests/hydro/data/barge_100x30x4.nc";
+const std::string kCase = std::string(FFRF_SOURCE_DIR "/cases/capytaine_barge_crane.toml");
+const std::string kDataset = std::string(FFRF_SOURCE_DIR "/tests/hydro/data/barge_100x30x4.nc");
 
 std::string case_text() {
   std::ifstream in(kCase);

@@ -35,7 +35,7 @@ constexpr double origin_x = 3.0;                // G1 at x = 0
 
 const hydro::PlanarExcitation& barge_table() {
   static const hydro::PlanarExcitation table =
-      hydro::read_wamit_excitation(std::string(FFRF_SOURCE_DIR) + "/tests/hydro/data/barge.3", {1.0, 1025.0, 9.81});
+      hydro::read_wamit_excitation(std::string(FFRF_SOURCE_DIR "/tests/hydro/data/barge.3"), {1.0, 1025.0, 9.81});
   return table;
 }
 

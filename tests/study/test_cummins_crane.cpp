@@ -83,7 +83,7 @@ Decay local_decay(const Record& rec, int dof, double period_guess, int first, in
 class BargeDecay : public ::testing::Test {
  protected:
   void SetUp() override {
-    const std::string data = std::string(FFRF_SOURCE_DIR) + "/tests/hydro/data/";
+    const std::string data = std::string(FFRF_SOURCE_DIR "/tests/hydro/data/");
     radiation = read_wamit_radiation(data + "barge.1", {1.0, 1000.0, 9.81});
     stiffness = read_wamit_hydrostatics(data + "barge.hst", {1.0, 1000.0, 9.81});
     mass.setZero();
@@ -145,7 +145,7 @@ class BargeDecay : public ::testing::Test {
   // from its static equilibrium moved by `offset` (surge, heave, pitch); CVODE, rtol 1e-8.
   static Record crane_decay(const std::string& model, const PlanarVector& offset, double duration,
                             const std::string& extra_bem_keys = "") {
-    const std::string data = std::string(FFRF_SOURCE_DIR) + "/tests/hydro/data/";
+    const std::string data = std::string(FFRF_SOURCE_DIR "/tests/hydro/data/");
     const std::string text = ffrf::test::barge_hull_scene(4.0e6, std::sqrt(2.166667e9 / 4.0e6), fmt::format(R"(radiation_file = "{}barge.1"
 hydrostatics_file = "{}barge.hst"
 origin_above_keel = 5.0

@@ -91,7 +91,7 @@ TEST(HullDamping, LinearHeaveDampingAddsToTheBemRadiationDamping) {
   const double rho = 1000.0, omega_c = 2.0 * kPi / 8.100003;
   const double a33 = rho * 3.518381E+03, b33 = rho * omega_c * 2.645009E+03;
   const double stiffness = rho * 9.81 * 80.0 * 10.0, inertia = kTotalMass - 1.0 + a33;
-  const std::string data = std::string(FFRF_SOURCE_DIR) + "/tests/hydro/data/";
+  const std::string data = std::string(FFRF_SOURCE_DIR "/tests/hydro/data/");
   const auto scene_with = [&](double b) {
     std::string text = test::barge_hull_scene(kTotalMass, 23.27, fmt::format(R"(radiation_file = "{}barge.1"
 origin_above_keel = 5.0
