@@ -45,6 +45,7 @@ function(ffrf_use_test_pch target)
     target_compile_definitions(ffrf_pch_tests PRIVATE FFRF_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
                                                       FFRF_BINARY_DIR="${PROJECT_BINARY_DIR}")
     target_precompile_headers(ffrf_pch_tests PRIVATE <gtest/gtest.h> ${ffrf_precompiled_headers})
+    ffrf_light_optimisation(ffrf_pch_tests)  # the test programs' level, which the header must match
   endif()
   target_precompile_headers(${target} REUSE_FROM ffrf_pch_tests)
 endfunction()
