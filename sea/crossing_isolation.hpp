@@ -35,6 +35,11 @@ struct CrossingInterval {
 // number), at most this many (an edge up to 512/k_max long): the exact and the recorded sea alike.
 inline constexpr int kMaxStartIntervals = 256;
 
+// The start intervals of an edge spanning `dx` along x under a sea whose largest wave number is k_max.
+inline int start_interval_count(double dx, double max_wave_number) {
+  return std::clamp(static_cast<int>(std::ceil(0.5 * dx * max_wave_number)), 1, kMaxStartIntervals);
+}
+
 // Bounds over the edge of |g'|, |g''| and |g'''| (the field's bounds times the edge's components).
 struct CrossingBounds {
   double slope = 0.0, curvature = 0.0, third = 0.0;

@@ -88,7 +88,7 @@ class RecordedEdges {
   bool crossings_along(const HullEdge& edge, EdgeMoments& acc) const {
     const LineGap gap{*this, edge};
     const double dx = std::abs(edge.d.x());
-    const int count = std::clamp(static_cast<int>(std::ceil(0.5 * dx * record_.max_wave_number())), 1, kMaxStartIntervals);
+    const int count = start_interval_count(dx, record_.max_wave_number());
     std::array<CrossingInterval, kMaxStartIntervals> first;
     double g_prev = 0.0, slope_prev = 0.0, curvature_prev = 0.0;
     for (int j = 0; j <= count; ++j) {

@@ -113,7 +113,7 @@ WaterlineCrossings waterline_crossings(const WaveField& wave, double t, const Ei
   // Start intervals about 2/k_max long along x (a third of the shortest wavelength): most are settled
   // at once by the local bound, the rest are halved (measured on the reference hull in the crane's
   // 3-hour sea: 1/k_max costs 1.4×, 3/k_max 1.2× the time of 2/k_max; bench/bench_waterline_crossings).
-  const int count = std::clamp(static_cast<int>(std::ceil(0.5 * dx * wave.max_wave_number())), 1, kMaxStartIntervals);
+  const int count = start_interval_count(dx, wave.max_wave_number());
   std::array<CrossingInterval, kMaxStartIntervals> first;
   sample_edge(gap, count, first);
   out.wet_at_start = first[0].g_lo < 0.0;
